@@ -1,0 +1,35 @@
+/*
+ * json.h - a small streaming JSON writer (no DOM).
+ *
+ * The caller opens objects and arrays and names keys; the writer keeps
+ * the commas and the nesting right and prints doubles with 17 significant
+ * digits (NaN and infinities become null).
+ */
+#ifndef SLIPWALL_JSON_H
+#define SLIPWALL_JSON_H
+
+#include <stdio.h>
+
+struct json {
+	FILE *f;
+	int depth;
+	int first[64];		/* per level: nothing written yet */
+	int after_key;
+	int indent;		/* pretty-print with 2 spaces */
+};
+
+void json_init(struct json *j, FILE *f, int indent);
+void json_object_begin(struct json *j);
+void json_object_end(struct json *j);
+void json_array_begin(struct json *j);
+void json_array_end(struct json *j);
+void json_key(struct json *j, const char *k);
+void json_string(struct json *j, const char *s);
+void json_double(struct json *j, double v);
+void json_int(struct json *j, long long v);
+void json_bool(struct json *j, int v);
+void json_null(struct json *j);
+/* Finish: newline after the top-level value. */
+void json_end(struct json *j);
+
+#endif

@@ -1,0 +1,93 @@
+/*
+ * lp.h - a thin layer over GLPK; the only module that includes glpk.h.
+ *
+ * Indices are 0-based here (GLPK's are 1-based).  Bounds use -HUGE_VAL /
+ * HUGE_VAL for "none".  A problem keeps its basis between solves, so
+ * changing bounds, objective or a column and solving again is a warm
+ * start (presolve is always off).
+ *
+ * Threads: Debian's GLPK keeps one environment per thread.  A problem is
+ * created, solved and freed on one thread; every thread that uses this
+ * module calls lp_thread_done() before it exits.  The first call on a
+ * thread installs hooks so that GLPK never prints (its text is kept, the
+ * last line readable with lp_last_message) and never aborts: a GLPK error
+ * jumps back into lp_solve(), which frees the thread's environment and
+ * returns LP_ERROR.  After LP_ERROR every problem of that thread is dead:
+ * lp_free() it (safe) and build new ones.
+ */
+#ifndef SLIPWALL_LP_H
+#define SLIPWALL_LP_H
+
+enum lp_status {
+	LP_OPTIMAL,
+	LP_INFEASIBLE,	/* no primal feasible point */
+	LP_UNBOUNDED,	/* feasible, objective unbounded */
+	LP_FAILED,	/* the simplex gave up (singular basis, limit) */
+	LP_ERROR,	/* GLPK reported an internal error; problems dead */
+};
+
+enum lp_method { LP_PRIMAL, LP_DUAL };
+
+struct lp;
+
+struct lp *lp_new(int nrows, int ncols);
+void lp_free(struct lp *p);
+
+void lp_set_maximize(struct lp *p, int maximize);
+void lp_set_obj(struct lp *p, int col, double c);
+void lp_set_col_bounds(struct lp *p, int col, double lo, double hi);
+void lp_set_row_bounds(struct lp *p, int row, double lo, double hi);
+/* Replace column col: n non-zeros at rows[] with vals[]. */
+void lp_set_col(struct lp *p, int col, int n, const int *rows,
+		const double *vals);
+/* Replace row row: n non-zeros at cols[] with vals[]. */
+void lp_set_row(struct lp *p, int row, int n, const int *cols,
+		const double *vals);
+
+/* Solve from the current basis.  If the simplex fails (singular basis,
+ * iteration limit) it is retried once from an advanced basis. */
+enum lp_status lp_solve(struct lp *p, enum lp_method m);
+/* Forget the basis (next solve starts from the standard basis). */
+void lp_reset_basis(struct lp *p);
+
+/* A saved basis (row and column statuses), to warm-start a problem that
+ * alternates between objectives from the basis each objective last
+ * ended at.  A fresh basis is empty: lp_basis_load does nothing. */
+struct lp_basis {
+	int n;			/* 0: nothing saved */
+	int *stat;		/* rows then columns */
+};
+void lp_basis_save(const struct lp *p, struct lp_basis *b);
+void lp_basis_load(struct lp *p, const struct lp_basis *b);
+void lp_basis_free(struct lp_basis *b);
+
+double lp_obj(const struct lp *p);
+double lp_col(const struct lp *p, int col);
+double lp_row(const struct lp *p, int row);
+double lp_col_dual(const struct lp *p, int col);	/* reduced cost */
+double lp_row_dual(const struct lp *p, int row);
+/* 1 if the column is basic in the current solution. */
+int lp_col_basic(const struct lp *p, int col);
+/* 1 if the optimum is unique as far as the reduced costs tell: no
+ * non-basic variable (except fixed ones) has a zero reduced cost. */
+int lp_unique(const struct lp *p, double tol);
+/* Simplex iterations of the last solve. */
+int lp_last_iterations(const struct lp *p);
+
+/* Counters of this thread: solves and simplex iterations since start. */
+void lp_thread_counters(long *solves, long *iterations);
+void lp_thread_done(void);
+const char *lp_last_message(void);
+
+/* Mixed-integer: mark a column binary; solve with branch and cut. */
+void lp_set_binary(struct lp *p, int col);
+enum lp_mip_status { LP_MIP_OPTIMAL, LP_MIP_FEASIBLE, LP_MIP_NOFEASIBLE,
+		     LP_MIP_FAILED };
+/* time_limit in seconds; *gap gets the relative MIP gap at the end.
+ * Values are read with lp_mip_col / lp_mip_obj. */
+enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap);
+double lp_mip_obj(const struct lp *p);
+double lp_mip_col(const struct lp *p, int col);
+double lp_mip_row(const struct lp *p, int row);
+
+#endif

@@ -1,0 +1,82 @@
+/*
+ * mc.h - the Monte Carlo sampler: a pool of worker threads, results in
+ * sample order.
+ *
+ * Sample i's contact positions depend only on (seed, i) (or come from a
+ * replay table), and each worker computes whole samples with its own
+ * GLPK workspace, so the results do not depend on the number of threads.
+ * Workers take indices from a shared counter and put finished samples
+ * into a reorder window; the consumer (one thread: the `run` command, or
+ * the workbench's UI thread) takes them out strictly in index order with
+ * mc_pop().  Workers wait when they are more than the window ahead of the
+ * consumer, so memory stays bounded.
+ *
+ * Signals: mc_start() blocks every asynchronous signal in the workers
+ * (they inherit a full mask), so SIGINT, SIGTERM, SIGHUP and SIGWINCH go
+ * to the thread that started the pool.  The wall and the config must
+ * outlive the pool.
+ */
+#ifndef SLIPWALL_MC_H
+#define SLIPWALL_MC_H
+
+#include "slipwall/sample.h"
+#include "slipwall/wall.h"
+
+struct mc_config {
+	const struct wall *w;	/* finished; read by every worker */
+	unsigned long seed;
+	long n;			/* samples to compute (indices 0..n-1) */
+	int threads;		/* >= 1 */
+	double depth;		/* < 0: the wall's contacts.depth */
+	struct sample_opts opts;
+	/* replay: n rows of 2 * nifaces positions (or NULL to draw) */
+	const double *positions;
+};
+void mc_config_default(struct mc_config *c, const struct wall *w);
+
+/* One finished sample, as the consumer sees it. */
+struct mc_item {
+	long index;
+	enum sample_status status;
+	double lambda_lpmax, lambda_max, lambda_min;
+	double vw_residual;
+	int iterations, lps;
+	double seconds;		/* compute time of this sample */
+	double *xi;		/* 2 * nifaces */
+	char *joint;		/* nifaces + 1 (mechanism, accepted only) */
+	double *vel;		/* 3 * nblocks (accepted only) */
+};
+void mc_item_init(struct mc_item *it, const struct wall *w);
+void mc_item_free(struct mc_item *it);
+
+struct mc;
+
+/* Start the workers.  Returns NULL and fills err on failure. */
+struct mc *mc_start(const struct mc_config *c, char *err);
+
+/* Take the next sample in index order into *it (copied).  Waits at most
+ * wait_ms milliseconds (< 0: forever).  Returns 1 with a sample, 0 on
+ * timeout, -1 when no more samples will come (all n done, or stopped and
+ * the finished ones in order all taken). */
+int mc_pop(struct mc *m, struct mc_item *it, int wait_ms);
+
+/* A file descriptor that becomes readable when a sample may be ready
+ * (one byte per notification; mc_pop drains it).  For poll() loops. */
+int mc_wake_fd(const struct mc *m);
+
+/* Ask the workers to stop after their current sample.  Samples already
+ * finished in order can still be popped.  Async-signal-safe. */
+void mc_stop(struct mc *m);
+
+/* Join the workers and free everything.  Stops first if needed. */
+void mc_free(struct mc *m);
+
+/* Worker-side counters, for the benchmark: LP solves and simplex
+ * iterations summed over the workers that have exited, and the seconds
+ * they spent inside GLPK's simplex (approximate). */
+struct mc_counters {
+	long solves, iterations;
+};
+void mc_counters(const struct mc *m, struct mc_counters *c);
+
+#endif

@@ -1,0 +1,113 @@
+/*
+ * sample.h - one Monte Carlo sample of SPEC section 2, and the pieces the
+ * single-solution methods reuse.
+ *
+ * A `struct sample_ws` holds the three LPs of one wall (the associative
+ * problem for LP-max and LP-min, the fixed-capacity SLP problem, the
+ * kinematic problem of the onset check) and keeps their bases from sample
+ * to sample: every solve is a warm start.  It belongs to one thread (GLPK
+ * rule): create, use and free it on the same thread.  The wall it reads
+ * must stay alive and unchanged.
+ *
+ * Units: sample_result carries real units (load factor as the user reads
+ * it: N for a point load of magnitude 1, a coefficient for a body load;
+ * forces in N; velocities normalised so the largest block speed is 1).
+ */
+#ifndef SLIPWALL_SAMPLE_H
+#define SLIPWALL_SAMPLE_H
+
+#include "slipwall/wall.h"
+
+/* X(enum, name in files, text for people) */
+#define SAMPLE_STATUS_TABLE(X)                                                  \
+	X(SAMPLE_ACCEPTED, "accepted", "accepted")                              \
+	X(SAMPLE_NO_EQUILIBRIUM, "no_equilibrium",                              \
+	  "no equilibrium on these contact points")                             \
+	X(SAMPLE_UNBOUNDED, "unbounded", "load unbounded")                      \
+	X(SAMPLE_NONPOSITIVE, "nonpositive", "maximum load factor <= 0")        \
+	X(SAMPLE_UNSTABLE, "unstable", "cannot stand under its own weight")     \
+	X(SAMPLE_NOT_CONVERGED, "not_converged", "SLP not converged")           \
+	X(SAMPLE_NO_MECHANISM, "no_mechanism", "no mechanism at the SLP load")  \
+	X(SAMPLE_NUMERICAL, "numerical", "numerical failure")
+
+enum sample_status {
+#define SAMPLE_X(e, name, text) e,
+	SAMPLE_STATUS_TABLE(SAMPLE_X)
+#undef SAMPLE_X
+	SAMPLE_STATUS_COUNT
+};
+const char *sample_status_name(enum sample_status s);	/* "no_mechanism" */
+const char *sample_status_text(enum sample_status s);	/* for people */
+/* The status of a name, or -1. */
+int sample_status_parse(const char *name);
+
+struct sample_opts {
+	double omega;		/* SLP relaxation, default 0.5 */
+	int max_iter;		/* SLP iteration limit, default 200 */
+	double tol;		/* convergence, relative to the mean block
+				 * weight, default 1e-7 */
+	int stabilise;		/* the L1-closest optimal stress field (1) */
+};
+void sample_opts_default(struct sample_opts *o);
+
+/* Joint states in sample_result.joint (one char per interface). */
+#define JOINT_CLOSED '.'	/* no relative motion */
+#define JOINT_SLIDES 's'	/* slides, both points in contact */
+#define JOINT_HINGES 'h'	/* one point opens: rotation about the other */
+#define JOINT_HINGE_SLIDES 'H'	/* hinges and slides */
+#define JOINT_OPENS 'o'		/* both points open: separates */
+
+struct sample_result {
+	enum sample_status status;
+	double lambda_lpmax;	/* LP-max (associative, these points) */
+	double lambda_max;	/* the converged SLP load factor */
+	double lambda_min;	/* the onset-of-collapse load: the result */
+	int iterations;		/* SLP iterations */
+	int converged;
+	int lps;		/* LPs solved for this sample */
+	double vw_residual;	/* relative virtual-work residual */
+	/* mechanism (accepted samples) */
+	int nblocks, nifaces;
+	double *vel;		/* 3 * nblocks: u, v, omega (supports 0) */
+	char *joint;		/* nifaces + 1: JOINT_* chars, NUL-terminated */
+	double *dn;		/* 2 * nifaces: opening rates at q_a, q_b */
+	double *dt;		/* nifaces: slip rates */
+	/* stress field at lambda_min, N */
+	double *N;		/* 2 * nifaces */
+	double *T;		/* nifaces */
+};
+void sample_result_init(struct sample_result *r, const struct wall *w);
+void sample_result_free(struct sample_result *r);
+
+struct sample_ws;
+struct sample_ws *sample_ws_new(const struct wall *w);
+void sample_ws_free(struct sample_ws *ws);
+
+/* The contact positions of sample `index` of a run with `seed`: depend on
+ * (seed, index) only.  xi gets 2 * nifaces numbers (xi_a, xi_b per
+ * interface, in interface order).  depth < 0 means the wall's. */
+void sample_positions(const struct wall *w, unsigned long seed,
+		      unsigned long index, double depth, double *xi);
+
+/* Steps 2-5 of SPEC section 2 for the contact positions xi.  Fills r
+ * (which must have been sample_result_init'ed for the same wall). */
+void sample_run(struct sample_ws *ws, const double *xi,
+		const struct sample_opts *o, struct sample_result *r);
+
+/* The associative (standard) limit analysis at positions xi: maximum
+ * load factor and its mechanism (the LP dual).  Returns the status
+ * (ACCEPTED when an optimum was found). */
+enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
+				   struct sample_result *r);
+
+/* The statics of the workspace (scales, operator), for the global
+ * method which builds its own problem on the same operator. */
+struct statics;
+const struct statics *sample_statics(const struct sample_ws *ws);
+/* Fill the mechanism and forces of r from scaled block velocities v
+ * (3 per free block) and a scaled stress field x (3 per interface): the
+ * joint rates come from A^T v. */
+void sample_export(struct sample_ws *ws, const double *v, const double *x,
+		   struct sample_result *r);
+
+#endif

@@ -1,0 +1,59 @@
+/*
+ * solve.h - the single-solution methods of SPEC section 2, all on the
+ * classical contact (points at the interface ends, d = 0):
+ *
+ *   standard  associative limit analysis: max lambda with each contact
+ *             point n >= 0, |t| <= mu n.  An upper value (may be unsafe).
+ *   gilbert   the stabilised sequential LP of Gilbert, Casapulla & Ahmed
+ *             (2006) started from the standard solution, then the onset
+ *             check of the sampler: the same code as one sample.
+ *   global    the global minimum of the non-associative problem, a
+ *             mixed-integer program (complementarity by binaries, big-M
+ *             bounds derived by LP), within a time limit.
+ *
+ * The result's load factor is in the user's units (N for a point load of
+ * 1 N).  Runs on the calling thread, in that thread's GLPK environment;
+ * the thread calls lp_thread_done() when it has finished with GLPK.
+ */
+#ifndef SLIPWALL_SOLVE_H
+#define SLIPWALL_SOLVE_H
+
+#include "slipwall/sample.h"
+#include "slipwall/wall.h"
+
+enum solve_method { SOLVE_STANDARD, SOLVE_GILBERT, SOLVE_GLOBAL };
+
+struct solve_opts {
+	enum solve_method method;
+	double time_limit;	/* global: seconds (default 60) */
+	struct sample_opts sample;
+};
+void solve_opts_default(struct solve_opts *o, enum solve_method m);
+/* "standard" -> SOLVE_STANDARD; -1 for an unknown name. */
+int solve_method_parse(const char *name);
+const char *solve_method_name(enum solve_method m);
+
+struct solve_result {
+	enum solve_method method;
+	enum sample_status status;	/* ACCEPTED when lambda was found */
+	double lambda;			/* the method's load factor */
+	/* gilbert */
+	int iterations, converged;
+	double lambda_onset;		/* LP-min after the onset check */
+	/* global */
+	int proven;			/* optimality proven (and bounds) */
+	int bounds_derived;		/* big-M from LPs, not a fallback */
+	double gap;			/* relative MIP gap (0 when proven) */
+	double seconds;
+	/* the mechanism (when found) */
+	int has_mechanism;
+	struct sample_result mech;
+};
+
+/* Solve; SW_OK when the method ran (r->status says what it found),
+ * SW_EANALYSIS with a message when it could not give a load. */
+enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
+			 struct solve_result *r, char *err);
+void solve_result_free(struct solve_result *r);
+
+#endif

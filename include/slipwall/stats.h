@@ -1,0 +1,108 @@
+/*
+ * stats.h - statistics of the accepted collapse loads.
+ *
+ * Knows nothing of walls or solvers: arrays of doubles in, numbers out.
+ * GSL provides sorting, moments and quantiles; what no well-kept library
+ * provides (the exact two-sample Kolmogorov-Smirnov p-value with ties,
+ * the reflected Gaussian KDE, the order-statistic interval) is written here
+ * by hand, each with a comment that says so and cites the method.
+ *
+ * Percentile definition everywhere: Hyndman & Fan type 7 (linear
+ * interpolation between order statistics, R's default and
+ * gsl_stats_quantile_from_sorted_data).
+ */
+#ifndef SLIPWALL_STATS_H
+#define SLIPWALL_STATS_H
+
+#include <stddef.h>
+
+/* Quantile p in [0,1] of sorted data x[0..n-1] (type 7).  p outside
+ * [0,1] is clamped; n == 0 or p NaN gives NaN. */
+double stats_quantile_sorted(const double *x, size_t n, double p);
+
+/* Distribution-free confidence interval for the p-quantile from order
+ * statistics (binomial): the 1-based ranks lo < hi with
+ * P(X(lo) <= xi_p <= X(hi)) >= conf and hi - lo least; among equally
+ * short ones the B-range [lo, hi-1] centred nearest n*p, then the larger
+ * coverage.  Returns 0 and fills lo, hi; returns -1 when n is too small
+ * for that confidence (even (1, n) falls short: for p = 0.05 and
+ * conf = 0.99 that is n < 90) or p, conf are not in (0,1). */
+int stats_quantile_ci_ranks(size_t n, double p, double conf, size_t *lo,
+			    size_t *hi);
+/* Exact coverage P(X(lo) <= xi_p <= X(hi)) = P(lo <= B < hi),
+ * B ~ Binomial(n, p) (continuous data).  NaN unless 1 <= lo < hi <= n
+ * and 0 < p < 1. */
+double stats_quantile_ci_coverage(size_t n, double p, size_t lo, size_t hi);
+
+struct stats_summary {
+	size_t n;
+	double min, p05, p50, p95, max;
+	double mean, std;	/* std: sample standard deviation (n - 1) */
+	int has_ci;		/* the 99 % interval of p05 exists */
+	double p05_lo, p05_hi;	/* its ends (order statistics) */
+};
+/* Summary of x[0..n-1] (any order; not modified).  n == 0 gives n = 0 and
+ * NaN everywhere; n == 1 gives std = NaN.  has_ci needs n >= 90; without
+ * it p05_lo and p05_hi are NaN. */
+void stats_summarise(const double *x, size_t n, struct stats_summary *s);
+
+/* Freedman-Diaconis bin width 2 IQR n^(-1/3) of sorted x; falls back to
+ * Scott's rule, then to 1, when the IQR or the spread is zero. */
+double stats_fd_width(const double *sorted, size_t n);
+
+struct stats_hist {
+	double lo, width;	/* bin k covers [lo + k w, lo + (k+1) w) */
+	int nbins;
+	size_t *count;		/* owned, nbins */
+};
+/* Histogram of sorted x with the given width (<= 0: Freedman-Diaconis),
+ * at most max_bins bins (the width grows to fit; max_bins <= 0 means
+ * 1000).  lo is the minimum (constant data: one bin centred on it); the
+ * last bin is closed, so every value is counted.  n == 0 gives nbins = 0
+ * and count NULL.  Free with stats_hist_free. */
+void stats_histogram(const double *sorted, size_t n, double width,
+		     int max_bins, struct stats_hist *h);
+void stats_hist_free(struct stats_hist *h);
+
+/* Gaussian kernel density estimate of x at the points g[0..ng-1].
+ * bw <= 0: Silverman's rule 0.9 min(sd, IQR/1.34) n^(-1/5).  When
+ * reflect_at_zero, the kernel is reflected at 0 (density 0 below 0 and
+ * integrating to 1 over [0, inf)); loads are >= 0. */
+void stats_kde(const double *x, size_t n, double bw, int reflect_at_zero,
+	       const double *g, size_t ng, double *out);
+double stats_kde_bandwidth(const double *x, size_t n);
+
+/* Best-fit normal: mean and sample standard deviation (NaN for n < 2). */
+void stats_normal_fit(const double *x, size_t n, double *mu, double *sigma);
+
+/* Two-sample Kolmogorov-Smirnov test of x (n) against y (m), exact
+ * p-values conditional on the pooled sample, ties handled (Nikiforov
+ * 1994, AS 288; the lattice-path count checks the boundary only at the
+ * ends of tied groups).  Alternatives as in R's ks.test(x, y):
+ *   "less":    the CDF of x lies below that of y (x tends to be larger),
+ *              statistic d_minus = max (F_y - F_x);
+ *   "greater": the CDF of x lies above that of y, d_plus = max (F_x - F_y).
+ * All three p-values are reported; which one answers the paper's
+ * "numerical model < experimental test" hypothesis (x = model) is
+ * documented in docs/statistics.md (in short: "model < tests" is the
+ * alternative of p_greater and the null hypothesis of p_less). */
+struct stats_ks {
+	double d, d_plus, d_minus;
+	double p_two_sided, p_less, p_greater;
+	int exact;		/* 0 when n*m too large: asymptotic */
+};
+/* Returns 0, or -1 (out untouched) when a sample is empty or holds NaN.
+ * Exact when n*m <= 1e7 (O(n m) time, O(m) memory). */
+int stats_ks2(const double *x, size_t n, const double *y, size_t m,
+	      struct stats_ks *out);
+
+/* A growing sorted array for running percentiles (insertion, O(n)).
+ * Start from {0}; equal values go after those already present. */
+struct stats_sorted {
+	double *x;
+	size_t n, cap;
+};
+void stats_sorted_insert(struct stats_sorted *s, double v);
+void stats_sorted_free(struct stats_sorted *s);
+
+#endif

@@ -1,0 +1,51 @@
+/*
+ * tally.h - what a run has found so far: counts by status, the accepted
+ * loads (sorted, for running percentiles), and the distinct mechanisms
+ * with their frequencies.
+ *
+ * A mechanism is identified by its joint-state string (sample_result.
+ * joint: one char per interface); the tally keeps, for each distinct
+ * one, its count, the smallest and largest load, and the velocities of
+ * its first sample (to draw it).  Used by `run` (summary), the workbench
+ * (live statistics, the mechanism browser) and `report` (Fig. 6).  One
+ * thread at a time.
+ */
+#ifndef SLIPWALL_TALLY_H
+#define SLIPWALL_TALLY_H
+
+#include "slipwall/mc.h"
+#include "slipwall/sample.h"
+#include "slipwall/stats.h"
+
+struct tally_mech {
+	char *joint;		/* owned, nifaces + 1 */
+	double *vel;		/* owned, 3 * nblocks: of its first sample */
+	long count;
+	double lam_lo, lam_hi;
+};
+
+struct tally {
+	int nifaces, nblocks;
+	long samples;		/* popped so far */
+	long accepted;
+	long rejected[SAMPLE_STATUS_COUNT];	/* by status (ACCEPTED unused) */
+	struct stats_sorted lam;		/* accepted lambda_min, sorted */
+	double lam_sum;
+	long iterations, lps;	/* sums over all samples */
+	double compute_seconds;	/* sum of per-sample compute times */
+	struct tally_mech *mech;/* distinct mechanisms, by first appearance */
+	int nmech, capmech;
+	int *hash;		/* private: open-addressing index into mech */
+	int hashcap;
+};
+
+void tally_init(struct tally *t, const struct wall *w);
+void tally_free(struct tally *t);
+void tally_add(struct tally *t, const struct mc_item *it);
+/* The mechanisms sorted by count, most frequent first: fills idx with up
+ * to max indices into t->mech; returns how many. */
+int tally_top(const struct tally *t, int *idx, int max);
+/* Summary statistics of the accepted loads (stats_summarise). */
+void tally_summary(const struct tally *t, struct stats_summary *s);
+
+#endif

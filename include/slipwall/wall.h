@@ -1,0 +1,134 @@
+/*
+ * wall.h - the wall model: blocks, supports, interfaces, loads.
+ *
+ * A `struct wall` is what every other module reads.  It is built in two
+ * steps: blocks, loads and settings are added (by the YAML reader in
+ * wallfile.c, by the layout generator, or by hand in tests), then
+ * wall_finish() computes the derived geometry (area, centroid, weight of
+ * each block), makes the ground support, finds the interfaces and the
+ * block of every point load, and validates the whole.  After
+ * wall_finish() the model is read-only; nothing in it changes while a
+ * solver runs, so any number of threads may read one wall at once.
+ *
+ * Supports are blocks with fixed = 1: they have no equations and no
+ * velocity.  A `ground` support becomes a fixed rectangle under the wall.
+ * Interfaces are ordered by (min(a,b), max(a,b), position along the
+ * joint); this order is the one of `check --json` and of every output.
+ */
+#ifndef SLIPWALL_WALL_H
+#define SLIPWALL_WALL_H
+
+#include "slipwall/status.h"
+
+enum joint_kind { JOINT_BED, JOINT_HEAD, JOINT_OTHER };
+enum load_kind { LOAD_POINT, LOAD_BODY };
+enum bond_kind { BOND_RUNNING, BOND_STACK };
+
+/* Where a value came from in the wall file (line, col 1-based; 0 = none). */
+struct wall_mark {
+	int line, col;
+};
+
+struct wall_block {
+	char *id;		/* owned; "b12" style when the file gives none */
+	int nv;			/* number of vertices (>= 3) */
+	double *xy;		/* owned, 2*nv, counter-clockwise */
+	int fixed;		/* 1 for a support */
+	struct wall_mark mark;	/* where the block was declared */
+	/* derived by wall_finish(): */
+	double area;		/* m^2 */
+	double cx, cy;		/* centroid, m */
+	double weight;		/* N (0 for a support) */
+	int eq;			/* index among free blocks, -1 for a support */
+};
+
+struct wall_interface {
+	int a, b;		/* bodies; n points from a into b */
+	double p1[2], p2[2];	/* shared segment, p1 -> p2 along t */
+	double len;		/* |p2 - p1| */
+	double t[2], n[2];	/* unit tangent and normal (n = a -> b) */
+	double mu;		/* friction coefficient */
+	enum joint_kind kind;	/* bed (horizontal), head (vertical), other */
+};
+
+struct wall_load {
+	enum load_kind kind;
+	double at[2];		/* point loads: where */
+	double dir[2];		/* unit direction (normalised by wall_finish) */
+	double magnitude;	/* point: reference force in N; body: factor */
+	int block;		/* point loads: derived by wall_finish() */
+	struct wall_mark mark;
+};
+
+struct wall_layout {
+	int present;		/* 0: no generated part */
+	double block_w, block_h;/* full block, m */
+	int courses;
+	double length;		/* wall length, m */
+	enum bond_kind bond;
+	int first_half;		/* course 1 starts with a half block */
+	double x0, y0;		/* lower-left corner (default 0, ground y) */
+};
+
+struct wall {
+	char *name;		/* owned, may be NULL */
+	char *path;		/* owned, file it came from (for messages) */
+	double mu_bed, mu_head;	/* friction of bed and head joints */
+	double unit_weight;	/* gamma, N/m^3 */
+	double thickness;	/* out-of-plane t, m */
+	struct wall_layout layout;
+	int has_ground;
+	double ground_y;
+	struct wall_mark ground_mark;
+	int ground_block;	/* derived: index of the ground block, or -1 */
+
+	struct wall_block *blocks;	/* supports included */
+	int nblocks, capblocks;
+	struct wall_load *loads;
+	int nloads, caploads;
+
+	double depth;		/* contacts.depth, 0..0.5 */
+	int anywhere;		/* contacts.positions: anywhere */
+	int samples;		/* analysis.samples */
+	unsigned long seed;	/* analysis.seed */
+	double *tests;		/* experimental collapse loads, N; owned */
+	int ntests;
+
+	/* derived by wall_finish(): */
+	struct wall_interface *ifaces;
+	int nifaces;
+	int nfree;		/* number of free blocks */
+	double total_weight;	/* N, free blocks */
+	double mean_weight;	/* N, free blocks (force scale) */
+	double mean_size;	/* m, sqrt(mean free block area) (length scale) */
+	int finished;
+};
+
+/* A new empty wall with the defaults of docs/wall-format.md. */
+struct wall *wall_new(void);
+void wall_free(struct wall *w);
+
+/* Add a block (xy: 2*nv numbers, copied).  id may be NULL.  Returns the
+ * block index. */
+int wall_add_block(struct wall *w, const char *id, const double *xy, int nv,
+		   int fixed, struct wall_mark mark);
+/* Add a load (copied). */
+void wall_add_load(struct wall *w, const struct wall_load *ld);
+
+/* Compute what is derived and validate.  On failure fills err with
+ * "FILE:LINE:COLUMN: message" (the mark of the offending item) and
+ * returns SW_EINPUT.  Must be called once, after all adds. */
+enum sw_status wall_finish(struct wall *w, char *err);
+
+/* A deep copy of a finished or unfinished wall (for editing). */
+struct wall *wall_copy(const struct wall *w);
+
+/* Sum of the forces of the reference live load (the load at lambda = 1),
+ * N: sum of point magnitudes, plus the body factor times total weight. */
+double wall_live_reference(const struct wall *w);
+
+/* "FILE:LINE:COLUMN: " prefix for mark m (or "FILE: " without mark). */
+void wall_where(const struct wall *w, struct wall_mark m, char *buf,
+		size_t len);
+
+#endif

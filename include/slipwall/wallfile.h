@@ -1,0 +1,28 @@
+/*
+ * wallfile.h - wall files in YAML (SPEC section 3, docs/wall-format.md).
+ *
+ * Reading uses libyaml's document API, with checks libyaml does not make:
+ * duplicate keys, unknown keys, types, finite numbers, alias expansion
+ * limits, a size limit.  Every error is "FILE:LINE:COLUMN: message" and
+ * SW_EINPUT.  The returned wall is finished (wall_finish has run).
+ */
+#ifndef SLIPWALL_WALLFILE_H
+#define SLIPWALL_WALLFILE_H
+
+#include <stddef.h>
+#include "slipwall/wall.h"
+
+#define WALLFILE_MAX_BYTES (16u << 20)	/* refuse larger files */
+#define WALLFILE_MAX_NODES 2000000	/* refuse documents with more nodes */
+
+enum sw_status wallfile_load(const char *path, struct wall **out, char *err);
+/* The same from memory; name is used in messages. */
+enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
+			      struct wall **out, char *err);
+/* Write w as YAML that loads again to the same model: material, every
+ * free block as explicit vertices, supports, loads, contacts, analysis,
+ * tests.  Written to PATH.tmp, flushed, then renamed over PATH. */
+enum sw_status wallfile_save(const struct wall *w, const char *path,
+			     char *err);
+
+#endif

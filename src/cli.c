@@ -1,0 +1,84 @@
+/* cli.c - helpers shared by the batch commands; see cli.h. */
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "slipwall/wallfile.h"
+
+int cli_load_wall(const char *path, struct wall **w)
+{
+	char err[SW_ERRLEN];
+	enum sw_status st = wallfile_load(path, w, err);
+	if (st != SW_OK) {
+		fprintf(stderr, "%s\n", err);
+		return sw_status_exit(st);
+	}
+	return 0;
+}
+
+const char *cli_demo_wall(void)
+{
+	static char path[PATH_MAX];
+	char exe[PATH_MAX];
+	ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (n > 0) {
+		exe[n] = 0;
+		char *slash = strrchr(exe, '/');
+		if (slash)
+			*slash = 0;
+		/* running from the build tree: use the source tree's walls */
+		if (!strcmp(exe, SLIPWALL_BUILDDIR)) {
+			snprintf(path, sizeof path, "%s/walls/demo.yaml",
+				 SLIPWALL_SRCDIR);
+			if (access(path, R_OK) == 0)
+				return path;
+		}
+	}
+	snprintf(path, sizeof path, "%s/walls/demo.yaml", SLIPWALL_DATADIR);
+	return path;
+}
+
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+{
+	va_list ap;
+	fprintf(stderr, "slipwall %s: ", cmd);
+	va_start(ap, fmt);
+	vfprintf(stderr, fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "\nTry 'slipwall %s --help'.\n", cmd);
+	return 2;
+}
+
+int cli_parse_long(const char *s, long lo, long hi, long *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(s, &end, 10);
+	if (errno || end == s || *end || v < lo || v > hi)
+		return -1;
+	*out = v;
+	return 0;
+}
+
+int cli_parse_double(const char *s, double *out)
+{
+	char *end;
+	errno = 0;
+	double v = strtod(s, &end);
+	if (errno || end == s || *end || !isfinite(v))
+		return -1;
+	*out = v;
+	return 0;
+}
+
+int cli_ncpu(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n > 0 ? (int)n : 1;
+}

@@ -1,0 +1,40 @@
+/*
+ * cli.h - the batch commands and what they share.
+ *
+ * Each command lives in its own file (cmd_check.c -> cmd_check, ...),
+ * takes the arguments after its name (argv[0] is the command name) and
+ * returns the process exit status: 0 success, 1 analysis failure, 2 bad
+ * input or usage (sw_status_exit).  Messages go to stderr; results to
+ * stdout.  No command touches curses.
+ */
+#ifndef SLIPWALL_CLI_H
+#define SLIPWALL_CLI_H
+
+#include <stdio.h>
+#include "slipwall/wall.h"
+
+int cmd_check(int argc, char **argv);
+int cmd_solve(int argc, char **argv);
+int cmd_run(int argc, char **argv);
+int cmd_compare(int argc, char **argv);
+int cmd_report(int argc, char **argv);
+
+/* The workbench (src/tui/); path NULL = the bundled demo wall. */
+int tui_main(const char *path);
+
+/* Load and finish a wall file; on failure print the message to stderr
+ * and return the exit status (2), else 0. */
+int cli_load_wall(const char *path, struct wall **w);
+/* The bundled demo wall: from the build tree when the program runs from
+ * it, else the installed copy.  Never NULL (may not exist). */
+const char *cli_demo_wall(void);
+/* Print "slipwall CMD: message" and a hint to stderr; returns 2. */
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+/* Parse a whole number / a finite double; 0 on success. */
+int cli_parse_long(const char *s, long lo, long hi, long *out);
+int cli_parse_double(const char *s, double *out);
+/* Number of online processors (>= 1). */
+int cli_ncpu(void);
+
+#endif

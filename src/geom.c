@@ -1,0 +1,454 @@
+/*
+ * geom.c - convex polygons, overlap and contact detection.
+ *
+ * Contact detection is the only part with a cost worth a design: a wall of
+ * 10,000 blocks has 40,000 edges, and comparing every pair would take
+ * seconds.  Instead every edge (and, for overlaps, every block) is put into
+ * the cells of a uniform grid that its bounding box covers; only items
+ * that share a cell are compared, and a pair is examined only in the one
+ * cell that holds the lower-left corner of the intersection of their boxes,
+ * so no pair is found twice.  The cell size is the mean item size, grown
+ * until the grid has no more cells than about four per item, so the cost
+ * is linear for walls of similar-sized blocks (a long ground edge just
+ * covers many cells).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/geom.h"
+
+double geom_area(const double *xy, int nv)
+{
+	double a = 0;
+	for (int i = 0; i < nv; i++) {
+		int j = (i + 1) % nv;
+		a += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+	}
+	return a / 2;
+}
+
+void geom_centroid(const double *xy, int nv, double *cx, double *cy)
+{
+	/* relative to the first vertex, for accuracy far from the origin */
+	double x0 = xy[0], y0 = xy[1], a = 0, sx = 0, sy = 0;
+	for (int i = 0; i < nv; i++) {
+		int j = (i + 1) % nv;
+		double xi = xy[2 * i] - x0, yi = xy[2 * i + 1] - y0;
+		double xj = xy[2 * j] - x0, yj = xy[2 * j + 1] - y0;
+		double c = xi * yj - xj * yi;
+		a += c;
+		sx += (xi + xj) * c;
+		sy += (yi + yj) * c;
+	}
+	*cx = x0 + sx / (3 * a);
+	*cy = y0 + sy / (3 * a);
+}
+
+enum geom_shape geom_check_polygon(const double *xy, int nv, double tol)
+{
+	if (nv < 3)
+		return GEOM_DEGENERATE;
+	double perim = 0;
+	for (int i = 0; i < nv; i++) {
+		int j = (i + 1) % nv;
+		double len = hypot(xy[2 * j] - xy[2 * i],
+				   xy[2 * j + 1] - xy[2 * i + 1]);
+		if (len <= tol)
+			return GEOM_DEGENERATE;
+		perim += len;
+	}
+	double area = geom_area(xy, nv);
+	if (fabs(area) <= tol * perim)
+		return GEOM_DEGENERATE;
+	if (area < 0)
+		return GEOM_CLOCKWISE;
+	/* Convex and simple: every turn is a left turn (or straight) and the
+	 * turns add up to one full revolution (a star has all left turns but
+	 * winds twice). */
+	double turn = 0;
+	for (int i = 0; i < nv; i++) {
+		const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % nv),
+			     *r = xy + 2 * ((i + 2) % nv);
+		double ex = q[0] - p[0], ey = q[1] - p[1];
+		double fx = r[0] - q[0], fy = r[1] - q[1];
+		double cr = ex * fy - ey * fx, dt = ex * fx + ey * fy;
+		if (cr < -tol * hypot(fx, fy))
+			return GEOM_NONCONVEX;
+		turn += atan2(cr, dt);
+	}
+	if (fabs(turn - 2 * M_PI) > 1e-6)
+		return GEOM_NONCONVEX;
+	return GEOM_OK;
+}
+
+const char *geom_shape_text(enum geom_shape s)
+{
+	switch (s) {
+	case GEOM_OK: return "a convex polygon";
+	case GEOM_DEGENERATE: return "degenerate (fewer than 3 distinct vertices or zero area)";
+	case GEOM_CLOCKWISE: return "clockwise (vertices must run counter-clockwise)";
+	case GEOM_NONCONVEX: return "not convex (or self-intersecting)";
+	}
+	return "?";
+}
+
+int geom_contains(const double *xy, int nv, double px, double py, double tol)
+{
+	for (int i = 0; i < nv; i++) {
+		int j = (i + 1) % nv;
+		double ex = xy[2 * j] - xy[2 * i], ey = xy[2 * j + 1] - xy[2 * i + 1];
+		double cr = ex * (py - xy[2 * i + 1]) - ey * (px - xy[2 * i]);
+		if (cr < -tol * hypot(ex, ey))
+			return 0;
+	}
+	return 1;
+}
+
+/* Projection of polygon p on the axis (ax, ay). */
+static void project(const double *p, int n, double ax, double ay,
+		    double *lo, double *hi)
+{
+	*lo = INFINITY;
+	*hi = -INFINITY;
+	for (int i = 0; i < n; i++) {
+		double s = p[2 * i] * ax + p[2 * i + 1] * ay;
+		if (s < *lo)
+			*lo = s;
+		if (s > *hi)
+			*hi = s;
+	}
+}
+
+/* 1 if some edge normal of a separates a from b (up to tol). */
+static int separated_by(const double *a, int na, const double *b, int nb,
+			double tol)
+{
+	for (int i = 0; i < na; i++) {
+		int j = (i + 1) % na;
+		double ex = a[2 * j] - a[2 * i], ey = a[2 * j + 1] - a[2 * i + 1];
+		double len = hypot(ex, ey);
+		if (len == 0)
+			continue;
+		double ax = ey / len, ay = -ex / len;
+		double alo, ahi, blo, bhi;
+		project(a, na, ax, ay, &alo, &ahi);
+		project(b, nb, ax, ay, &blo, &bhi);
+		if (fmin(ahi, bhi) - fmax(alo, blo) <= tol)
+			return 1;
+	}
+	return 0;
+}
+
+int geom_overlap(const double *a, int na, const double *b, int nb, double tol)
+{
+	return !separated_by(a, na, b, nb, tol) && !separated_by(b, nb, a, na, tol);
+}
+
+/* ---- the grid -------------------------------------------------------- */
+
+struct box {
+	double x0, y0, x1, y1;
+};
+
+/* Items in cells, compressed rows: the items of cell c are
+ * item[start[c] .. start[c+1]-1]. */
+struct grid {
+	double ox, oy, h;
+	int nx, ny;
+	int *start, *item;
+};
+
+static void cell_range(const struct grid *g, const struct box *b, int *i0,
+		       int *j0, int *i1, int *j1)
+{
+	*i0 = (int)floor((b->x0 - g->ox) / g->h);
+	*j0 = (int)floor((b->y0 - g->oy) / g->h);
+	*i1 = (int)floor((b->x1 - g->ox) / g->h);
+	*j1 = (int)floor((b->y1 - g->oy) / g->h);
+	if (*i0 < 0) *i0 = 0;
+	if (*j0 < 0) *j0 = 0;
+	if (*i1 >= g->nx) *i1 = g->nx - 1;
+	if (*j1 >= g->ny) *j1 = g->ny - 1;
+}
+
+static void grid_build(struct grid *g, const struct box *bx, int n)
+{
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	double size = 0;
+	for (int k = 0; k < n; k++) {
+		x0 = fmin(x0, bx[k].x0);
+		y0 = fmin(y0, bx[k].y0);
+		x1 = fmax(x1, bx[k].x1);
+		y1 = fmax(y1, bx[k].y1);
+		size += fmax(bx[k].x1 - bx[k].x0, bx[k].y1 - bx[k].y0);
+	}
+	double w = fmax(x1 - x0, 1e-300), hgt = fmax(y1 - y0, 1e-300);
+	double h = n ? size / n : 1;
+	if (!(h > 0))
+		h = fmax(w, hgt);
+	/* no more than about 4 cells per item */
+	while ((w / h + 1) * (hgt / h + 1) > 4.0 * n + 16)
+		h *= 1.5;
+	g->ox = x0;
+	g->oy = y0;
+	g->h = h;
+	g->nx = (int)(w / h) + 1;
+	g->ny = (int)(hgt / h) + 1;
+	int ncell = g->nx * g->ny;
+	g->start = sw_xcalloc((size_t)ncell + 1, sizeof(int));
+	/* count, prefix-sum, fill */
+	for (int k = 0; k < n; k++) {
+		int i0, j0, i1, j1;
+		cell_range(g, &bx[k], &i0, &j0, &i1, &j1);
+		for (int j = j0; j <= j1; j++)
+			for (int i = i0; i <= i1; i++)
+				g->start[j * g->nx + i + 1]++;
+	}
+	for (int c = 0; c < ncell; c++)
+		g->start[c + 1] += g->start[c];
+	g->item = sw_xmalloc(sizeof(int) * (size_t)(g->start[ncell] + 1));
+	int *fill = sw_xmalloc(sizeof(int) * (size_t)ncell);
+	memcpy(fill, g->start, sizeof(int) * (size_t)ncell);
+	for (int k = 0; k < n; k++) {
+		int i0, j0, i1, j1;
+		cell_range(g, &bx[k], &i0, &j0, &i1, &j1);
+		for (int j = j0; j <= j1; j++)
+			for (int i = i0; i <= i1; i++)
+				g->item[fill[j * g->nx + i]++] = k;
+	}
+	free(fill);
+}
+
+static void grid_free(struct grid *g)
+{
+	free(g->start);
+	free(g->item);
+}
+
+/* Is cell (ci, cj) the one where the pair (a, b) is examined? */
+static int home_cell(const struct grid *g, const struct box *a,
+		     const struct box *b, int ci, int cj)
+{
+	struct box x = {fmax(a->x0, b->x0), fmax(a->y0, b->y0), 0, 0};
+	x.x1 = x.x0;
+	x.y1 = x.y0;
+	int i0, j0, i1, j1;
+	cell_range(g, &x, &i0, &j0, &i1, &j1);
+	return i0 == ci && j0 == cj;
+}
+
+/* Call fn(a, b, ctx) once for every pair of items whose boxes intersect;
+ * stops and returns fn's value when it is non-zero. */
+static int grid_pairs(const struct box *bx, int n,
+		      int (*fn)(int, int, void *), void *ctx)
+{
+	struct grid g;
+	int ret = 0;
+	if (n < 2)
+		return 0;
+	grid_build(&g, bx, n);
+	for (int cj = 0; cj < g.ny && !ret; cj++) {
+		for (int ci = 0; ci < g.nx && !ret; ci++) {
+			int c = cj * g.nx + ci;
+			for (int p = g.start[c]; p < g.start[c + 1] && !ret; p++) {
+				for (int q = p + 1; q < g.start[c + 1] && !ret; q++) {
+					const struct box *a = &bx[g.item[p]],
+							 *b = &bx[g.item[q]];
+					if (a->x0 > b->x1 || b->x0 > a->x1 ||
+					    a->y0 > b->y1 || b->y0 > a->y1)
+						continue;
+					if (!home_cell(&g, a, b, ci, cj))
+						continue;
+					ret = fn(g.item[p], g.item[q], ctx);
+				}
+			}
+		}
+	}
+	grid_free(&g);
+	return ret;
+}
+
+/* ---- overlaps -------------------------------------------------------- */
+
+struct overlap_ctx {
+	const struct wall *w;
+	double tol;
+	int i, j;
+};
+
+static int overlap_pair(int a, int b, void *vctx)
+{
+	struct overlap_ctx *c = vctx;
+	const struct wall_block *A = &c->w->blocks[a], *B = &c->w->blocks[b];
+	if (A->fixed && B->fixed)
+		return 0;
+	if (!geom_overlap(A->xy, A->nv, B->xy, B->nv, c->tol))
+		return 0;
+	c->i = a < b ? a : b;
+	c->j = a < b ? b : a;
+	return 1;
+}
+
+static struct box poly_box(const double *xy, int nv, double pad)
+{
+	struct box b = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+	for (int i = 0; i < nv; i++) {
+		b.x0 = fmin(b.x0, xy[2 * i]);
+		b.y0 = fmin(b.y0, xy[2 * i + 1]);
+		b.x1 = fmax(b.x1, xy[2 * i]);
+		b.y1 = fmax(b.y1, xy[2 * i + 1]);
+	}
+	b.x0 -= pad;
+	b.y0 -= pad;
+	b.x1 += pad;
+	b.y1 += pad;
+	return b;
+}
+
+int geom_find_overlap(const struct wall *w, double tol, int *i, int *j)
+{
+	struct box *bx = sw_xmalloc(sizeof *bx * (size_t)(w->nblocks + 1));
+	for (int k = 0; k < w->nblocks; k++)
+		bx[k] = poly_box(w->blocks[k].xy, w->blocks[k].nv, 0);
+	struct overlap_ctx c = {w, tol, -1, -1};
+	int found = grid_pairs(bx, w->nblocks, overlap_pair, &c);
+	free(bx);
+	if (found) {
+		*i = c.i;
+		*j = c.j;
+	}
+	return found;
+}
+
+/* ---- contacts -------------------------------------------------------- */
+
+struct edge {
+	int body;
+	double p[2], q[2];	/* p -> q counter-clockwise along the body */
+	double t[2];		/* unit direction */
+	double len;
+};
+
+struct contact_ctx {
+	const struct wall *w;
+	const struct edge *e;
+	double tol;
+	struct wall_interface *out;
+	int n, cap;
+};
+
+static int contact_pair(int ea, int eb, void *vctx)
+{
+	struct contact_ctx *c = vctx;
+	const struct edge *A = &c->e[ea], *B = &c->e[eb];
+	if (A->body == B->body)
+		return 0;
+	if (c->w->blocks[A->body].fixed && c->w->blocks[B->body].fixed)
+		return 0;
+	/* opposite directions: outward normals opposite */
+	if (A->t[0] * B->t[0] + A->t[1] * B->t[1] > -1 + 1e-9)
+		return 0;
+	/* collinear: B's ends on A's line */
+	double nx = A->t[1], ny = -A->t[0];	/* outward normal of A */
+	double d1 = (B->p[0] - A->p[0]) * nx + (B->p[1] - A->p[1]) * ny;
+	double d2 = (B->q[0] - A->p[0]) * nx + (B->q[1] - A->p[1]) * ny;
+	if (fabs(d1) > c->tol || fabs(d2) > c->tol)
+		return 0;
+	/* overlap along A's direction */
+	double s1 = (B->q[0] - A->p[0]) * A->t[0] + (B->q[1] - A->p[1]) * A->t[1];
+	double s2 = (B->p[0] - A->p[0]) * A->t[0] + (B->p[1] - A->p[1]) * A->t[1];
+	double lo = fmax(0, fmin(s1, s2)), hi = fmin(A->len, fmax(s1, s2));
+	if (hi - lo <= c->tol)
+		return 0;
+	/* a = the lower-numbered body, n its outward normal */
+	const struct edge *E = A->body < B->body ? A : B;
+	const struct edge *F = E == A ? B : A;
+	struct wall_interface it;
+	memset(&it, 0, sizeof it);
+	it.a = E->body;
+	it.b = F->body;
+	it.t[0] = E->t[0];
+	it.t[1] = E->t[1];
+	it.n[0] = E->t[1];
+	it.n[1] = -E->t[0];
+	/* the segment on E's line, in E's direction */
+	double u1, u2;
+	if (E == A) {
+		u1 = lo;
+		u2 = hi;
+	} else {
+		/* parameters along B (= E) of A's overlap interval */
+		double a1 = (A->p[0] - B->p[0]) * B->t[0] + (A->p[1] - B->p[1]) * B->t[1];
+		double a2 = (A->q[0] - B->p[0]) * B->t[0] + (A->q[1] - B->p[1]) * B->t[1];
+		u1 = fmax(0, fmin(a1, a2));
+		u2 = fmin(B->len, fmax(a1, a2));
+	}
+	for (int k = 0; k < 2; k++) {
+		it.p1[k] = E->p[k] + u1 * E->t[k];
+		it.p2[k] = E->p[k] + u2 * E->t[k];
+	}
+	it.len = u2 - u1;
+	if (fabs(it.n[0]) < 1e-9)
+		it.kind = JOINT_BED;
+	else if (fabs(it.n[1]) < 1e-9)
+		it.kind = JOINT_HEAD;
+	else
+		it.kind = JOINT_OTHER;
+	it.mu = it.kind == JOINT_HEAD ? c->w->mu_head : c->w->mu_bed;
+	if (c->n == c->cap) {
+		c->cap = c->cap ? 2 * c->cap : 64;
+		c->out = sw_xrealloc(c->out, sizeof *c->out * (size_t)c->cap);
+	}
+	c->out[c->n++] = it;
+	return 0;
+}
+
+static int iface_cmp(const void *pa, const void *pb)
+{
+	const struct wall_interface *a = pa, *b = pb;
+	if (a->a != b->a)
+		return a->a < b->a ? -1 : 1;
+	if (a->b != b->b)
+		return a->b < b->b ? -1 : 1;
+	double sa = a->p1[0] + a->p1[1], sb = b->p1[0] + b->p1[1];
+	return (sa > sb) - (sa < sb);
+}
+
+int geom_contacts(const struct wall *w, double tol, struct wall_interface **out)
+{
+	int ne = 0;
+	for (int k = 0; k < w->nblocks; k++)
+		ne += w->blocks[k].nv;
+	struct edge *e = sw_xmalloc(sizeof *e * (size_t)(ne + 1));
+	struct box *bx = sw_xmalloc(sizeof *bx * (size_t)(ne + 1));
+	int m = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *B = &w->blocks[k];
+		for (int i = 0; i < B->nv; i++) {
+			int j = (i + 1) % B->nv;
+			struct edge *E = &e[m];
+			E->body = k;
+			E->p[0] = B->xy[2 * i];
+			E->p[1] = B->xy[2 * i + 1];
+			E->q[0] = B->xy[2 * j];
+			E->q[1] = B->xy[2 * j + 1];
+			E->len = hypot(E->q[0] - E->p[0], E->q[1] - E->p[1]);
+			if (E->len <= 0)
+				continue;
+			E->t[0] = (E->q[0] - E->p[0]) / E->len;
+			E->t[1] = (E->q[1] - E->p[1]) / E->len;
+			double seg[4] = {E->p[0], E->p[1], E->q[0], E->q[1]};
+			bx[m] = poly_box(seg, 2, tol);
+			m++;
+		}
+	}
+	struct contact_ctx c = {w, e, tol, NULL, 0, 0};
+	grid_pairs(bx, m, contact_pair, &c);
+	free(e);
+	free(bx);
+	if (c.n > 1)
+		qsort(c.out, (size_t)c.n, sizeof *c.out, iface_cmp);
+	*out = c.out;
+	return c.n;
+}

@@ -1,0 +1,390 @@
+/*
+ * lp.c - the GLPK layer: hooks, warm starts, statuses.  See lp.h.
+ *
+ * GLPK reports internal errors by calling the error hook and then
+ * abort()ing unless the hook does not return.  We longjmp out of the hook
+ * back into the lp_solve() that was running, free the thread's GLPK
+ * environment (the only documented recovery) and bump a per-thread
+ * generation number; a problem built in an older generation is dead and
+ * is never touched again by GLPK calls.
+ */
+#include <glpk.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/lp.h"
+#include "slipwall/status.h"
+
+struct lp {
+	glp_prob *P;
+	int nrows, ncols;
+	unsigned generation;
+	int last_iters;
+	int *ind;		/* scratch, 1-based */
+	double *val;
+};
+
+static _Thread_local int tl_hooked;
+static _Thread_local unsigned tl_generation;
+static _Thread_local jmp_buf tl_jump;
+static _Thread_local int tl_in_call;
+static _Thread_local char tl_message[256];
+static _Thread_local long tl_solves, tl_iterations;
+static _Thread_local double tl_gap;
+
+/* Branch-and-cut callback: remember the gap between the incumbent and
+ * the best bound whenever either changes. */
+static void mip_callback(glp_tree *T, void *info)
+{
+	(void)info;
+	int r = glp_ios_reason(T);
+	if (r == GLP_IBINGO || r == GLP_ISELECT || r == GLP_IBRANCH)
+		tl_gap = glp_ios_mip_gap(T);
+}
+
+/* GLPK's text goes here instead of the terminal; the last line is kept. */
+static int term_hook(void *info, const char *s)
+{
+	(void)info;
+	size_t n = strlen(s);
+	if (n >= sizeof tl_message)
+		n = sizeof tl_message - 1;
+	if (n > 0) {
+		memcpy(tl_message, s, n);
+		tl_message[n] = 0;
+		if (tl_message[n - 1] == '\n')
+			tl_message[n - 1] = 0;
+	}
+	return 1;	/* suppress GLPK's own output */
+}
+
+static void error_hook(void *info)
+{
+	(void)info;
+	if (tl_in_call)
+		longjmp(tl_jump, 1);
+	/* An error outside lp_solve (a bad argument to a setter) is a bug in
+	 * this program: say so and stop, as GLPK would have. */
+	fprintf(stderr, "slipwall: GLPK error outside a solve: %s\n",
+		tl_message);
+	abort();
+}
+
+static void hook(void)
+{
+	if (tl_hooked)
+		return;
+	glp_term_out(GLP_ON);
+	glp_term_hook(term_hook, NULL);
+	glp_error_hook(error_hook, NULL);
+	tl_hooked = 1;
+}
+
+static int alive(const struct lp *p)
+{
+	return p->P && p->generation == tl_generation;
+}
+
+struct lp *lp_new(int nrows, int ncols)
+{
+	hook();
+	struct lp *p = sw_xcalloc(1, sizeof *p);
+	p->P = glp_create_prob();
+	p->generation = tl_generation;
+	p->nrows = nrows;
+	p->ncols = ncols;
+	if (nrows > 0)
+		glp_add_rows(p->P, nrows);
+	if (ncols > 0)
+		glp_add_cols(p->P, ncols);
+	for (int i = 1; i <= nrows; i++)
+		glp_set_row_bnds(p->P, i, GLP_FX, 0, 0);
+	for (int j = 1; j <= ncols; j++)
+		glp_set_col_bnds(p->P, j, GLP_FR, 0, 0);
+	int n = (nrows > ncols ? nrows : ncols) + 1;
+	p->ind = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+	p->val = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	return p;
+}
+
+void lp_free(struct lp *p)
+{
+	if (!p)
+		return;
+	if (alive(p))
+		glp_delete_prob(p->P);
+	free(p->ind);
+	free(p->val);
+	free(p);
+}
+
+void lp_set_maximize(struct lp *p, int maximize)
+{
+	glp_set_obj_dir(p->P, maximize ? GLP_MAX : GLP_MIN);
+}
+
+void lp_set_obj(struct lp *p, int col, double c)
+{
+	glp_set_obj_coef(p->P, col + 1, c);
+}
+
+static int bound_type(double lo, double hi)
+{
+	int l = isfinite(lo), h = isfinite(hi);
+	if (l && h)
+		return lo == hi ? GLP_FX : GLP_DB;
+	if (l)
+		return GLP_LO;
+	if (h)
+		return GLP_UP;
+	return GLP_FR;
+}
+
+void lp_set_col_bounds(struct lp *p, int col, double lo, double hi)
+{
+	glp_set_col_bnds(p->P, col + 1, bound_type(lo, hi),
+			 isfinite(lo) ? lo : 0, isfinite(hi) ? hi : 0);
+}
+
+void lp_set_row_bounds(struct lp *p, int row, double lo, double hi)
+{
+	glp_set_row_bnds(p->P, row + 1, bound_type(lo, hi),
+			 isfinite(lo) ? lo : 0, isfinite(hi) ? hi : 0);
+}
+
+void lp_set_col(struct lp *p, int col, int n, const int *rows,
+		const double *vals)
+{
+	for (int i = 0; i < n; i++) {
+		p->ind[i + 1] = rows[i] + 1;
+		p->val[i + 1] = vals[i];
+	}
+	glp_set_mat_col(p->P, col + 1, n, p->ind, p->val);
+}
+
+void lp_set_row(struct lp *p, int row, int n, const int *cols,
+		const double *vals)
+{
+	for (int i = 0; i < n; i++) {
+		p->ind[i + 1] = cols[i] + 1;
+		p->val[i + 1] = vals[i];
+	}
+	glp_set_mat_row(p->P, row + 1, n, p->ind, p->val);
+}
+
+void lp_reset_basis(struct lp *p)
+{
+	glp_std_basis(p->P);
+}
+
+static enum lp_status map_status(glp_prob *P)
+{
+	switch (glp_get_status(P)) {
+	case GLP_OPT:
+		return LP_OPTIMAL;
+	case GLP_NOFEAS:
+		return LP_INFEASIBLE;
+	case GLP_UNBND:
+		return LP_UNBOUNDED;
+	default:
+		/* GLP_INFEAS / GLP_FEAS / GLP_UNDEF after a clean return:
+		 * look at the primal and dual statuses */
+		if (glp_get_prim_stat(P) == GLP_NOFEAS)
+			return LP_INFEASIBLE;
+		if (glp_get_dual_stat(P) == GLP_NOFEAS &&
+		    glp_get_prim_stat(P) == GLP_FEAS)
+			return LP_UNBOUNDED;
+		return LP_FAILED;
+	}
+}
+
+enum lp_status lp_solve(struct lp *p, enum lp_method m)
+{
+	if (!alive(p))
+		return LP_ERROR;
+	glp_smcp parm;
+	glp_init_smcp(&parm);
+	parm.msg_lev = GLP_MSG_OFF;
+	parm.presolve = GLP_OFF;
+	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
+	parm.it_lim = 50000 + 50 * (p->nrows + p->ncols);
+	parm.tm_lim = 60000;
+	enum lp_status st;
+	if (setjmp(tl_jump)) {
+		/* GLPK's error hook jumped here: the environment is broken */
+		tl_in_call = 0;
+		glp_free_env();
+		tl_hooked = 0;
+		tl_generation++;
+		hook();
+		return LP_ERROR;
+	}
+	tl_in_call = 1;
+	int it0 = glp_get_it_cnt(p->P);
+	int rc = glp_simplex(p->P, &parm);
+	if (rc == GLP_EBADB || rc == GLP_ESING || rc == GLP_ECOND ||
+	    rc == GLP_EFAIL || rc == GLP_EITLIM) {
+		glp_adv_basis(p->P, 0);
+		parm.meth = GLP_DUALP;
+		rc = glp_simplex(p->P, &parm);
+	}
+	tl_in_call = 0;
+	p->last_iters = glp_get_it_cnt(p->P) - it0;
+	tl_solves++;
+	tl_iterations += p->last_iters;
+	if (rc == GLP_ENOPFS)
+		return LP_INFEASIBLE;
+	if (rc == GLP_ENODFS)
+		return LP_UNBOUNDED;
+	if (rc != 0)
+		return LP_FAILED;
+	st = map_status(p->P);
+	return st;
+}
+
+void lp_basis_save(const struct lp *p, struct lp_basis *b)
+{
+	int n = p->nrows + p->ncols;
+	if (b->n != n) {
+		free(b->stat);
+		b->stat = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+		b->n = n;
+	}
+	for (int i = 0; i < p->nrows; i++)
+		b->stat[i] = glp_get_row_stat(p->P, i + 1);
+	for (int j = 0; j < p->ncols; j++)
+		b->stat[p->nrows + j] = glp_get_col_stat(p->P, j + 1);
+}
+
+void lp_basis_load(struct lp *p, const struct lp_basis *b)
+{
+	if (b->n != p->nrows + p->ncols)
+		return;
+	for (int i = 0; i < p->nrows; i++)
+		glp_set_row_stat(p->P, i + 1, b->stat[i]);
+	for (int j = 0; j < p->ncols; j++)
+		glp_set_col_stat(p->P, j + 1, b->stat[p->nrows + j]);
+}
+
+void lp_basis_free(struct lp_basis *b)
+{
+	free(b->stat);
+	b->stat = NULL;
+	b->n = 0;
+}
+
+double lp_obj(const struct lp *p) { return glp_get_obj_val(p->P); }
+double lp_col(const struct lp *p, int col) { return glp_get_col_prim(p->P, col + 1); }
+double lp_row(const struct lp *p, int row) { return glp_get_row_prim(p->P, row + 1); }
+double lp_col_dual(const struct lp *p, int col) { return glp_get_col_dual(p->P, col + 1); }
+double lp_row_dual(const struct lp *p, int row) { return glp_get_row_dual(p->P, row + 1); }
+int lp_last_iterations(const struct lp *p) { return p->last_iters; }
+
+int lp_col_basic(const struct lp *p, int col)
+{
+	return glp_get_col_stat(p->P, col + 1) == GLP_BS;
+}
+
+int lp_unique(const struct lp *p, double tol)
+{
+	for (int j = 1; j <= p->ncols; j++) {
+		int st = glp_get_col_stat(p->P, j);
+		if (st == GLP_BS || st == GLP_NS)
+			continue;
+		if (fabs(glp_get_col_dual(p->P, j)) <= tol)
+			return 0;
+	}
+	for (int i = 1; i <= p->nrows; i++) {
+		int st = glp_get_row_stat(p->P, i);
+		if (st == GLP_BS || st == GLP_NS)
+			continue;
+		if (fabs(glp_get_row_dual(p->P, i)) <= tol)
+			return 0;
+	}
+	return 1;
+}
+
+void lp_thread_counters(long *solves, long *iterations)
+{
+	*solves = tl_solves;
+	*iterations = tl_iterations;
+}
+
+void lp_thread_done(void)
+{
+	glp_free_env();
+	tl_hooked = 0;
+	tl_generation++;
+}
+
+const char *lp_last_message(void)
+{
+	return tl_message;
+}
+
+void lp_set_binary(struct lp *p, int col)
+{
+	glp_set_col_kind(p->P, col + 1, GLP_BV);
+}
+
+enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
+{
+	if (!alive(p))
+		return LP_MIP_FAILED;
+	if (setjmp(tl_jump)) {
+		tl_in_call = 0;
+		glp_free_env();
+		tl_hooked = 0;
+		tl_generation++;
+		hook();
+		return LP_MIP_FAILED;
+	}
+	tl_in_call = 1;
+	glp_smcp sp;
+	glp_init_smcp(&sp);
+	sp.msg_lev = GLP_MSG_OFF;
+	sp.presolve = GLP_OFF;
+	int rc = glp_simplex(p->P, &sp);
+	if (rc != 0 || glp_get_status(p->P) != GLP_OPT) {
+		tl_in_call = 0;
+		if (glp_get_status(p->P) == GLP_NOFEAS)
+			return LP_MIP_NOFEASIBLE;
+		return LP_MIP_FAILED;
+	}
+	glp_iocp ip;
+	glp_init_iocp(&ip);
+	ip.msg_lev = GLP_MSG_OFF;
+	ip.tm_lim = (int)(time_limit * 1000);
+	ip.br_tech = GLP_BR_PCH;
+	ip.bt_tech = GLP_BT_BLB;
+	ip.gmi_cuts = GLP_ON;
+	ip.mir_cuts = GLP_ON;
+	ip.cov_cuts = GLP_ON;
+	ip.clq_cuts = GLP_ON;
+	ip.cb_func = mip_callback;
+	tl_gap = NAN;
+	rc = glp_intopt(p->P, &ip);
+	tl_in_call = 0;
+	int st = glp_mip_status(p->P);
+	/* the relative gap between the incumbent and the best bound */
+	*gap = NAN;
+	if (st == GLP_OPT) {
+		*gap = 0;
+		return LP_MIP_OPTIMAL;
+	}
+	if (st == GLP_FEAS) {
+		*gap = tl_gap;	/* last gap the callback saw */
+		return LP_MIP_FEASIBLE;
+	}
+	if (st == GLP_NOFEAS)
+		return LP_MIP_NOFEASIBLE;
+	(void)rc;
+	return LP_MIP_FAILED;
+}
+
+double lp_mip_obj(const struct lp *p) { return glp_mip_obj_val(p->P); }
+double lp_mip_col(const struct lp *p, int col) { return glp_mip_col_val(p->P, col + 1); }
+double lp_mip_row(const struct lp *p, int row) { return glp_mip_row_val(p->P, row + 1); }

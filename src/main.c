@@ -1,0 +1,70 @@
+/*
+ * main.c - the program's entry: the workbench, or a batch command.
+ *
+ *   slipwall [WALL.yaml]        the workbench (default: the demo wall)
+ *   slipwall COMMAND ...        run, solve, check, compare, report
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+static const struct {
+	const char *name;
+	int (*fn)(int, char **);
+	const char *summary;
+} commands[] = {
+	{"run", cmd_run, "sample the collapse load (Monte Carlo)"},
+	{"solve", cmd_solve, "one solution: standard, gilbert or global"},
+	{"check", cmd_check, "validate a wall; print blocks, interfaces, loads"},
+	{"compare", cmd_compare, "samples against experimental loads (KS test)"},
+	{"report", cmd_report, "figures and a summary of a run"},
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall [WALL.yaml]          the workbench (default: the demo wall)\n"
+		"       slipwall COMMAND [ARGS]       a batch command\n"
+		"\n"
+		"Probabilistic limit analysis of dry-masonry walls that collapse by\n"
+		"sliding: rigid blocks, unilateral contact, non-associative Coulomb\n"
+		"friction, contact points drawn at random (Monte Carlo).\n"
+		"\n"
+		"commands:\n");
+	for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+		fprintf(f, "  %-9s %s\n", commands[i].name, commands[i].summary);
+	fprintf(f,
+		"\n'slipwall COMMAND --help' describes a command; 'man slipwall' all.\n"
+		"Exit status: 0 success, 1 analysis failure, 2 bad input or usage.\n");
+}
+
+int main(int argc, char **argv)
+{
+	if (argc >= 2) {
+		const char *a = argv[1];
+		if (!strcmp(a, "--help") || !strcmp(a, "-h") || !strcmp(a, "help")) {
+			usage(stdout);
+			return 0;
+		}
+		if (!strcmp(a, "--version")) {
+			printf("slipwall %s\n", SLIPWALL_VERSION);
+			return 0;
+		}
+		for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+			if (!strcmp(a, commands[i].name))
+				return commands[i].fn(argc - 1, argv + 1);
+		if (a[0] == '-') {
+			fprintf(stderr, "slipwall: unknown option '%s'\n", a);
+			usage(stderr);
+			return 2;
+		}
+		if (argc > 2) {
+			fprintf(stderr, "slipwall: the workbench takes one wall file\n");
+			usage(stderr);
+			return 2;
+		}
+		return tui_main(a);
+	}
+	return tui_main(NULL);
+}

@@ -1,0 +1,332 @@
+/*
+ * mc.c - the worker pool and the in-order reorder window; see mc.h.
+ *
+ * Shared state is guarded by one mutex: the next index to hand out, the
+ * next index the consumer expects, and a ring of `window` slots in which
+ * sample i lives at i % window until it is popped.  A worker never runs
+ * more than `window` samples ahead of the consumer, so a slot is free
+ * when its sample arrives.  The stop flag is a C11 atomic so that a
+ * signal handler may set it; waits are timed (100 ms) so that a stop is
+ * noticed without a signal-unsafe broadcast.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "slipwall/lp.h"
+#include "slipwall/mc.h"
+
+struct slot {
+	int full;
+	struct mc_item item;
+};
+
+struct mc {
+	struct mc_config cfg;
+	pthread_t *th;
+	int nth, started;
+	pthread_mutex_t mu;
+	pthread_cond_t cv_space, cv_ready;
+	long next_index, next_out, window;
+	int running;
+	struct slot *ring;
+	atomic_int stop;
+	int pipe[2];
+	struct mc_counters counters;
+};
+
+void mc_config_default(struct mc_config *c, const struct wall *w)
+{
+	memset(c, 0, sizeof *c);
+	c->w = w;
+	c->seed = w->seed;
+	c->n = w->samples;
+	c->threads = 1;
+	c->depth = -1;
+	sample_opts_default(&c->opts);
+}
+
+void mc_item_init(struct mc_item *it, const struct wall *w)
+{
+	memset(it, 0, sizeof *it);
+	it->xi = sw_xcalloc(2 * (size_t)w->nifaces + 1, sizeof(double));
+	it->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
+	it->vel = sw_xcalloc(3 * (size_t)w->nblocks + 1, sizeof(double));
+}
+
+void mc_item_free(struct mc_item *it)
+{
+	free(it->xi);
+	free(it->joint);
+	free(it->vel);
+	memset(it, 0, sizeof *it);
+}
+
+static void item_copy(struct mc_item *dst, const struct mc_item *src,
+		      const struct wall *w)
+{
+	double *xi = dst->xi, *vel = dst->vel;
+	char *joint = dst->joint;
+	*dst = *src;
+	dst->xi = xi;
+	dst->vel = vel;
+	dst->joint = joint;
+	memcpy(xi, src->xi, sizeof(double) * 2 * (size_t)w->nifaces);
+	memcpy(vel, src->vel, sizeof(double) * 3 * (size_t)w->nblocks);
+	memcpy(joint, src->joint, (size_t)w->nifaces + 1);
+}
+
+static void notify(struct mc *m)
+{
+	char b = 1;
+	/* non-blocking: a full pipe already says "look" */
+	ssize_t r = write(m->pipe[1], &b, 1);
+	(void)r;
+}
+
+static void deadline(struct timespec *ts, int ms)
+{
+	clock_gettime(CLOCK_REALTIME, ts);
+	ts->tv_sec += ms / 1000;
+	ts->tv_nsec += (long)(ms % 1000) * 1000000L;
+	if (ts->tv_nsec >= 1000000000L) {
+		ts->tv_sec++;
+		ts->tv_nsec -= 1000000000L;
+	}
+}
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void *worker(void *arg)
+{
+	struct mc *m = arg;
+	const struct wall *w = m->cfg.w;
+	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_result r;
+	struct mc_item it;
+	sample_result_init(&r, w);
+	mc_item_init(&it, w);
+	size_t nxi = 2 * (size_t)w->nifaces;
+
+	for (;;) {
+		pthread_mutex_lock(&m->mu);
+		while (!atomic_load(&m->stop) && m->next_index < m->cfg.n &&
+		       m->next_index >= m->next_out + m->window) {
+			struct timespec ts;
+			deadline(&ts, 100);
+			pthread_cond_timedwait(&m->cv_space, &m->mu, &ts);
+		}
+		if (atomic_load(&m->stop) || m->next_index >= m->cfg.n) {
+			pthread_mutex_unlock(&m->mu);
+			break;
+		}
+		long i = m->next_index++;
+		pthread_mutex_unlock(&m->mu);
+
+		if (m->cfg.positions)
+			memcpy(it.xi, m->cfg.positions + (size_t)i * nxi,
+			       sizeof(double) * nxi);
+		else
+			sample_positions(w, m->cfg.seed, (unsigned long)i,
+					 m->cfg.depth, it.xi);
+		double t0 = now();
+		sample_run(ws, it.xi, &m->cfg.opts, &r);
+		it.seconds = now() - t0;
+		it.index = i;
+		it.status = r.status;
+		it.lambda_lpmax = r.lambda_lpmax;
+		it.lambda_max = r.lambda_max;
+		it.lambda_min = r.lambda_min;
+		it.vw_residual = r.vw_residual;
+		it.iterations = r.iterations;
+		it.lps = r.lps;
+		if (r.status == SAMPLE_ACCEPTED) {
+			memcpy(it.joint, r.joint, (size_t)w->nifaces + 1);
+			memcpy(it.vel, r.vel, sizeof(double) * 3 * (size_t)w->nblocks);
+		} else {
+			memset(it.joint, 0, (size_t)w->nifaces + 1);
+			memset(it.vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
+		}
+
+		pthread_mutex_lock(&m->mu);
+		struct slot *s = &m->ring[i % m->window];
+		item_copy(&s->item, &it, w);
+		s->full = 1;
+		if (i == m->next_out) {
+			pthread_cond_broadcast(&m->cv_ready);
+			notify(m);
+		}
+		pthread_mutex_unlock(&m->mu);
+	}
+
+	long solves, iters;
+	lp_thread_counters(&solves, &iters);
+	sample_result_free(&r);
+	mc_item_free(&it);
+	sample_ws_free(ws);
+	lp_thread_done();
+	pthread_mutex_lock(&m->mu);
+	m->counters.solves += solves;
+	m->counters.iterations += iters;
+	m->running--;
+	pthread_cond_broadcast(&m->cv_ready);
+	notify(m);
+	pthread_mutex_unlock(&m->mu);
+	return NULL;
+}
+
+struct mc *mc_start(const struct mc_config *c, char *err)
+{
+	if (c->threads < 1 || c->threads > 1024) {
+		sw_fail(err, SW_EUSAGE, "threads must be between 1 and 1024");
+		return NULL;
+	}
+	struct mc *m = sw_xcalloc(1, sizeof *m);
+	m->cfg = *c;
+	m->nth = c->threads;
+	m->window = 64 + 16L * c->threads;
+	m->ring = sw_xcalloc((size_t)m->window, sizeof *m->ring);
+	for (long k = 0; k < m->window; k++)
+		mc_item_init(&m->ring[k].item, c->w);
+	pthread_mutex_init(&m->mu, NULL);
+	pthread_cond_init(&m->cv_space, NULL);
+	pthread_cond_init(&m->cv_ready, NULL);
+	atomic_init(&m->stop, 0);
+	if (pipe(m->pipe) != 0) {
+		sw_fail(err, SW_EIO, "cannot create a pipe: %s", strerror(errno));
+		m->pipe[0] = m->pipe[1] = -1;
+		mc_free(m);
+		return NULL;
+	}
+	for (int k = 0; k < 2; k++) {
+		fcntl(m->pipe[k], F_SETFL, fcntl(m->pipe[k], F_GETFL) | O_NONBLOCK);
+		fcntl(m->pipe[k], F_SETFD, FD_CLOEXEC);
+	}
+	m->th = sw_xcalloc((size_t)m->nth, sizeof *m->th);
+
+	/* workers inherit a full signal mask: signals go to the caller */
+	sigset_t all, old;
+	sigfillset(&all);
+	pthread_sigmask(SIG_SETMASK, &all, &old);
+	m->running = 0;
+	for (int k = 0; k < m->nth; k++) {
+		pthread_mutex_lock(&m->mu);
+		m->running++;
+		pthread_mutex_unlock(&m->mu);
+		if (pthread_create(&m->th[k], NULL, worker, m) != 0) {
+			pthread_mutex_lock(&m->mu);
+			m->running--;
+			pthread_mutex_unlock(&m->mu);
+			break;
+		}
+		m->started++;
+	}
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	if (m->started == 0) {
+		sw_fail(err, SW_EIO, "cannot start a worker thread");
+		mc_free(m);
+		return NULL;
+	}
+	return m;
+}
+
+int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
+{
+	char buf[64];
+	while (read(m->pipe[0], buf, sizeof buf) > 0)
+		;
+	pthread_mutex_lock(&m->mu);
+	struct timespec ts;
+	if (wait_ms > 0)
+		deadline(&ts, wait_ms);
+	for (;;) {
+		if (m->next_out >= m->cfg.n) {
+			pthread_mutex_unlock(&m->mu);
+			return -1;
+		}
+		struct slot *s = &m->ring[m->next_out % m->window];
+		if (s->full) {
+			item_copy(it, &s->item, m->cfg.w);
+			s->full = 0;
+			m->next_out++;
+			pthread_cond_broadcast(&m->cv_space);
+			pthread_mutex_unlock(&m->mu);
+			return 1;
+		}
+		/* nothing will come: the sample was never handed out (stop)
+		 * or no worker is left */
+		if (m->running == 0 ||
+		    (atomic_load(&m->stop) && m->next_out >= m->next_index)) {
+			pthread_mutex_unlock(&m->mu);
+			return -1;
+		}
+		if (wait_ms == 0) {
+			pthread_mutex_unlock(&m->mu);
+			return 0;
+		}
+		if (wait_ms < 0) {
+			struct timespec t2;
+			deadline(&t2, 100);
+			pthread_cond_timedwait(&m->cv_ready, &m->mu, &t2);
+		} else if (pthread_cond_timedwait(&m->cv_ready, &m->mu, &ts) ==
+			   ETIMEDOUT) {
+			int full = m->ring[m->next_out % m->window].full;
+			if (!full) {
+				pthread_mutex_unlock(&m->mu);
+				return 0;
+			}
+		}
+	}
+}
+
+int mc_wake_fd(const struct mc *m)
+{
+	return m->pipe[0];
+}
+
+void mc_stop(struct mc *m)
+{
+	atomic_store(&m->stop, 1);
+}
+
+void mc_counters(const struct mc *m, struct mc_counters *c)
+{
+	pthread_mutex_lock((pthread_mutex_t *)&m->mu);
+	*c = m->counters;
+	pthread_mutex_unlock((pthread_mutex_t *)&m->mu);
+}
+
+void mc_free(struct mc *m)
+{
+	if (!m)
+		return;
+	mc_stop(m);
+	pthread_mutex_lock(&m->mu);
+	pthread_cond_broadcast(&m->cv_space);
+	pthread_mutex_unlock(&m->mu);
+	for (int k = 0; k < m->started; k++)
+		pthread_join(m->th[k], NULL);
+	for (long k = 0; k < m->window; k++)
+		mc_item_free(&m->ring[k].item);
+	free(m->ring);
+	free(m->th);
+	if (m->pipe[0] >= 0)
+		close(m->pipe[0]);
+	if (m->pipe[1] >= 0)
+		close(m->pipe[1]);
+	pthread_mutex_destroy(&m->mu);
+	pthread_cond_destroy(&m->cv_space);
+	pthread_cond_destroy(&m->cv_ready);
+	free(m);
+}

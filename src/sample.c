@@ -1,0 +1,721 @@
+/*
+ * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
+ *
+ * Three GLPK problems per wall and thread, built once and warm-started
+ * (presolve off) for every LP of every sample; only what depends on the
+ * contact points (the moment coefficients of the normal-force columns and
+ * of the opening-rate rows) is rewritten per sample.  All quantities are
+ * in the scaled units of statics.h; results are converted at the end.
+ *
+ *   assoc  rows: equilibrium (3 per free block) | 2 friction rows per
+ *                interface: T - mu (Na + Nb) <= 0, -T - mu (Na + Nb) <= 0
+ *          cols: Na, Nb, T per interface | lambda
+ *          LP-max (max lambda) and LP-min (min lambda >= 0 with the
+ *          mechanism's yield conditions held at their limits).
+ *   slp    rows: equilibrium | 1 closeness row per interface:
+ *                Na + Nb - p + q = c
+ *          cols: Na, Nb, T | lambda | p, q per interface
+ *          LP1: max lambda with |T| <= mu c (column bounds: a fixed
+ *          capacity, no dilatancy).  LP2: min sum (p + q) with lambda held
+ *          at LP1's optimum - the optimal stress field closest in L1 to c.
+ *   kin    rows: one per column of A (opening rates at q_a, q_b, slip
+ *                rate) | f_L . v = 1
+ *          cols: block velocities | s+, s- per interface (slip = s+ - s-)
+ *          min sum of opening rates + sum |slip|: the least joint motion.
+ *
+ * Tolerances (scaled units, mean block weight = 1): a normal force counts
+ * as positive above TOL_FORCE; a joint rate counts as motion above
+ * TOL_MOTION times the largest rate of the mechanism.  docs/method.md
+ * says why.
+ */
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/lp.h"
+#include "slipwall/sample.h"
+#include "slipwall/statics.h"
+
+#define TOL_FORCE 1e-7
+#define TOL_MOTION 1e-9
+#define VW_TOL 1e-8
+#define TOL_LIMIT 1e-5
+
+static const struct {
+	const char *name, *text;
+} status_info[] = {
+#define SAMPLE_X(e, name, text) {name, text},
+	SAMPLE_STATUS_TABLE(SAMPLE_X)
+#undef SAMPLE_X
+};
+
+const char *sample_status_name(enum sample_status s)
+{
+	return (unsigned)s < SAMPLE_STATUS_COUNT ? status_info[s].name : "?";
+}
+
+const char *sample_status_text(enum sample_status s)
+{
+	return (unsigned)s < SAMPLE_STATUS_COUNT ? status_info[s].text : "?";
+}
+
+int sample_status_parse(const char *name)
+{
+	for (int s = 0; s < SAMPLE_STATUS_COUNT; s++)
+		if (!strcmp(name, status_info[s].name))
+			return s;
+	return -1;
+}
+
+void sample_opts_default(struct sample_opts *o)
+{
+	o->omega = 0.5;
+	o->max_iter = 200;
+	o->tol = 1e-7;
+	o->stabilise = 1;
+}
+
+void sample_result_init(struct sample_result *r, const struct wall *w)
+{
+	memset(r, 0, sizeof *r);
+	r->nblocks = w->nblocks;
+	r->nifaces = w->nifaces;
+	size_t m = (size_t)w->nifaces;
+	r->vel = sw_xcalloc(3 * (size_t)w->nblocks + 1, sizeof(double));
+	r->joint = sw_xcalloc(m + 1, 1);
+	r->dn = sw_xcalloc(2 * m + 1, sizeof(double));
+	r->dt = sw_xcalloc(m + 1, sizeof(double));
+	r->N = sw_xcalloc(2 * m + 1, sizeof(double));
+	r->T = sw_xcalloc(m + 1, sizeof(double));
+}
+
+void sample_result_free(struct sample_result *r)
+{
+	free(r->vel);
+	free(r->joint);
+	free(r->dn);
+	free(r->dt);
+	free(r->N);
+	free(r->T);
+	memset(r, 0, sizeof *r);
+}
+
+struct sample_ws {
+	const struct wall *w;
+	struct statics st;
+	int m, R;		/* interfaces, equilibrium rows */
+	struct lp *assoc, *slp, *kin;
+	double *c;		/* m: SLP capacities (sum of normal forces) */
+	double *x;		/* 3m: stress field of the last SLP LP */
+	double *v;		/* R: velocities */
+	double *dn, *dt;	/* 2m, m: joint rates */
+	int *ind;		/* scratch */
+	double *val;
+	gsl_rng *rng;
+	/* the basis each LP role last ended at: LP-max, LP1, kin */
+	struct lp_basis b_max, b_lp1, b_lp2;
+};
+
+/* Column indices. */
+#define COL_LAMBDA(ws) (3 * (ws)->m)
+#define COL_P(ws, k) (3 * (ws)->m + 1 + (k))
+#define COL_Q(ws, k) (3 * (ws)->m + 1 + (ws)->m + (k))
+#define KCOL_SP(ws, k) ((ws)->R + (k))
+#define KCOL_SM(ws, k) ((ws)->R + (ws)->m + (k))
+
+/* Write column j of A into the assoc and slp problems (with the extra
+ * rows each has) and row j into the kinematic problem. */
+static void put_column(struct sample_ws *ws, int j)
+{
+	int rows[8], n;
+	double vals[8];
+	int k = j / 3, kind = j % 3;
+	double mu = ws->w->ifaces[k].mu;
+
+	n = statics_column(&ws->st, j, rows, vals);
+	/* kin: row j over the velocity columns, plus the slip split */
+	int kn = n;
+	int kcols[8];
+	double kvals[8];
+	memcpy(kcols, rows, sizeof(int) * (size_t)n);
+	memcpy(kvals, vals, sizeof(double) * (size_t)n);
+	if (kind == 2) {
+		kcols[kn] = KCOL_SP(ws, k);
+		kvals[kn++] = -1;
+		kcols[kn] = KCOL_SM(ws, k);
+		kvals[kn++] = 1;
+	}
+	lp_set_row(ws->kin, j, kn, kcols, kvals);
+
+	/* assoc: friction rows */
+	int an = n;
+	if (kind == 2) {
+		rows[an] = ws->R + 2 * k;
+		vals[an++] = 1;
+		rows[an] = ws->R + 2 * k + 1;
+		vals[an++] = -1;
+	} else {
+		rows[an] = ws->R + 2 * k;
+		vals[an++] = -mu;
+		rows[an] = ws->R + 2 * k + 1;
+		vals[an++] = -mu;
+	}
+	lp_set_col(ws->assoc, j, an, rows, vals);
+
+	/* slp: closeness row for normal forces */
+	int sn = n;
+	if (kind != 2) {
+		rows[sn] = ws->R + k;
+		vals[sn++] = 1;
+	}
+	lp_set_col(ws->slp, j, sn, rows, vals);
+}
+
+/* The objective of the kinematic LP on the velocities: the sum of the
+ * opening rates, i.e. the sum of the normal-force columns of A. */
+static void put_kin_objective(struct sample_ws *ws)
+{
+	double *g = ws->val;
+	memset(g, 0, sizeof(double) * (size_t)ws->R);
+	for (int j = 0; j < 3 * ws->m; j++) {
+		if (j % 3 == 2)
+			continue;
+		int rows[6];
+		double vals[6];
+		int n = statics_column(&ws->st, j, rows, vals);
+		for (int i = 0; i < n; i++)
+			g[rows[i]] += vals[i];
+	}
+	for (int i = 0; i < ws->R; i++)
+		lp_set_obj(ws->kin, i, g[i]);
+}
+
+static void build(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	ws->assoc = lp_new(R + 2 * m, 3 * m + 1);
+	ws->slp = lp_new(R + m, 3 * m + 1 + 2 * m);
+	ws->kin = lp_new(3 * m + 1, R + 2 * m);
+
+	for (int i = 0; i < R; i++) {
+		lp_set_row_bounds(ws->assoc, i, -ws->st.fD[i], -ws->st.fD[i]);
+		lp_set_row_bounds(ws->slp, i, -ws->st.fD[i], -ws->st.fD[i]);
+	}
+	for (int r = 0; r < 2 * m; r++)
+		lp_set_row_bounds(ws->assoc, R + r, -HUGE_VAL, 0);
+	for (int j = 0; j < 3 * m; j++) {
+		double lo = j % 3 == 2 ? -HUGE_VAL : 0;
+		lp_set_col_bounds(ws->assoc, j, lo, HUGE_VAL);
+		lp_set_col_bounds(ws->slp, j, lo, HUGE_VAL);
+		put_column(ws, j);
+	}
+	/* lambda */
+	int nl = 0;
+	for (int i = 0; i < R; i++)
+		if (ws->st.fL[i] != 0) {
+			ws->ind[nl] = i;
+			ws->val[nl++] = ws->st.fL[i];
+		}
+	lp_set_col(ws->assoc, COL_LAMBDA(ws), nl, ws->ind, ws->val);
+	lp_set_col(ws->slp, COL_LAMBDA(ws), nl, ws->ind, ws->val);
+	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_col_bounds(ws->slp, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	/* kin normalisation row: f_L . v = 1 */
+	lp_set_row(ws->kin, 3 * m, nl, ws->ind, ws->val);
+	lp_set_row_bounds(ws->kin, 3 * m, 1, 1);
+	/* slp: p, q */
+	for (int k = 0; k < m; k++) {
+		int row = R + k;
+		double one = 1, mone = -1;
+		lp_set_col(ws->slp, COL_P(ws, k), 1, &row, &mone);
+		lp_set_col(ws->slp, COL_Q(ws, k), 1, &row, &one);
+		lp_set_col_bounds(ws->slp, COL_P(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(ws->slp, COL_Q(ws, k), 0, HUGE_VAL);
+	}
+	/* kin: velocities free, slips >= 0, slip rows = 0 */
+	for (int i = 0; i < R; i++)
+		lp_set_col_bounds(ws->kin, i, -HUGE_VAL, HUGE_VAL);
+	for (int k = 0; k < m; k++) {
+		lp_set_col_bounds(ws->kin, KCOL_SP(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(ws->kin, KCOL_SM(ws, k), 0, HUGE_VAL);
+		lp_set_obj(ws->kin, KCOL_SP(ws, k), 1);
+		lp_set_obj(ws->kin, KCOL_SM(ws, k), 1);
+		lp_set_row_bounds(ws->kin, 3 * k + 2, 0, 0);
+	}
+	lp_set_maximize(ws->kin, 0);
+	put_kin_objective(ws);
+}
+
+struct sample_ws *sample_ws_new(const struct wall *w)
+{
+	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
+	ws->w = w;
+	statics_init(&ws->st, w);
+	ws->m = w->nifaces;
+	ws->R = ws->st.nrows;
+	size_t m = (size_t)ws->m, big = 3 * m + (size_t)ws->R + 16;
+	ws->c = sw_xcalloc(m + 1, sizeof(double));
+	ws->x = sw_xcalloc(3 * m + 1, sizeof(double));
+	ws->v = sw_xcalloc((size_t)ws->R + 1, sizeof(double));
+	ws->dn = sw_xcalloc(2 * m + 1, sizeof(double));
+	ws->dt = sw_xcalloc(m + 1, sizeof(double));
+	ws->ind = sw_xmalloc(sizeof(int) * big);
+	ws->val = sw_xmalloc(sizeof(double) * big);
+	ws->rng = gsl_rng_alloc(gsl_rng_mt19937);
+	build(ws);
+	return ws;
+}
+
+void sample_ws_free(struct sample_ws *ws)
+{
+	if (!ws)
+		return;
+	lp_free(ws->assoc);
+	lp_free(ws->slp);
+	lp_free(ws->kin);
+	statics_free(&ws->st);
+	free(ws->c);
+	free(ws->x);
+	free(ws->v);
+	free(ws->dn);
+	free(ws->dt);
+	free(ws->ind);
+	free(ws->val);
+	gsl_rng_free(ws->rng);
+	lp_basis_free(&ws->b_max);
+	lp_basis_free(&ws->b_lp1);
+	lp_basis_free(&ws->b_lp2);
+	free(ws);
+}
+
+/* After a GLPK error the problems are dead: build them again. */
+static void rebuild(struct sample_ws *ws)
+{
+	lp_free(ws->assoc);
+	lp_free(ws->slp);
+	lp_free(ws->kin);
+	build(ws);
+}
+
+/* splitmix64: a seed for sample `index` that no other (seed, index) pair
+ * of a run shares in practice. */
+static unsigned long mix(unsigned long long z)
+{
+	z += 0x9e3779b97f4a7c15ULL;
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	return (unsigned long)(z ^ (z >> 31));
+}
+
+void sample_positions(const struct wall *w, unsigned long seed,
+		      unsigned long index, double depth, double *xi)
+{
+	gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+	gsl_rng_set(r, mix(mix(seed) ^ index));
+	if (depth < 0)
+		depth = w->depth;
+	for (int k = 0; k < w->nifaces; k++) {
+		/* two uniforms per interface, always drawn, so that the
+		 * positions are continuous in the depth (common random
+		 * numbers for --fit-depth) */
+		double u1 = gsl_rng_uniform(r), u2 = gsl_rng_uniform(r);
+		if (w->anywhere) {
+			xi[2 * k] = fmin(u1, u2);
+			xi[2 * k + 1] = fmax(u1, u2);
+		} else {
+			xi[2 * k] = depth * u1;
+			xi[2 * k + 1] = 1 - depth * u2;
+		}
+	}
+	gsl_rng_free(r);
+}
+
+static void set_points(struct sample_ws *ws, const double *xi)
+{
+	statics_set_points(&ws->st, xi);
+	for (int k = 0; k < ws->m; k++) {
+		put_column(ws, 3 * k);
+		put_column(ws, 3 * k + 1);
+	}
+	put_kin_objective(ws);
+}
+
+/* Restore the assoc problem to plain LP-max form. */
+static void assoc_reset(struct sample_ws *ws)
+{
+	for (int k = 0; k < ws->m; k++) {
+		lp_set_col_bounds(ws->assoc, 3 * k, 0, HUGE_VAL);
+		lp_set_col_bounds(ws->assoc, 3 * k + 1, 0, HUGE_VAL);
+		lp_set_row_bounds(ws->assoc, ws->R + 2 * k, -HUGE_VAL, 0);
+		lp_set_row_bounds(ws->assoc, ws->R + 2 * k + 1, -HUGE_VAL, 0);
+	}
+	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	for (int j = 0; j < 3 * ws->m; j++)
+		lp_set_obj(ws->assoc, j, 0);
+	lp_set_obj(ws->assoc, COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->assoc, 1);
+}
+
+static enum sample_status lp_to_sample(enum lp_status s)
+{
+	switch (s) {
+	case LP_OPTIMAL: return SAMPLE_ACCEPTED;
+	case LP_INFEASIBLE: return SAMPLE_NO_EQUILIBRIUM;
+	case LP_UNBOUNDED: return SAMPLE_UNBOUNDED;
+	default: return SAMPLE_NUMERICAL;
+	}
+}
+
+/* Count the LP and handle a dead environment. */
+static enum lp_status solve(struct sample_ws *ws, struct lp *p,
+			    enum lp_method m, struct sample_result *r)
+{
+	r->lps++;
+	enum lp_status s = lp_solve(p, m);
+	if (s == LP_ERROR)
+		rebuild(ws);
+	return s;
+}
+
+/* Step 2a: LP-max, and can the wall stand at lambda = 0? */
+static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
+{
+	assoc_reset(ws);
+	lp_basis_load(ws->assoc, &ws->b_max);
+	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
+	if (s != LP_OPTIMAL)
+		return lp_to_sample(s);
+	lp_basis_save(ws->assoc, &ws->b_max);
+	double lam = lp_obj(ws->assoc);
+	r->lambda_lpmax = lam;
+	if (!(lam > TOL_FORCE))
+		return SAMPLE_NONPOSITIVE;
+	for (int k = 0; k < ws->m; k++)
+		ws->c[k] = lp_col(ws->assoc, 3 * k) + lp_col(ws->assoc, 3 * k + 1);
+	/* The feasible load factors form an interval [lo, lam]; the wall
+	 * stands under its own weight iff lo <= 0. */
+	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), 0, HUGE_VAL);
+	lp_set_maximize(ws->assoc, 0);
+	s = solve(ws, ws->assoc, LP_PRIMAL, r);
+	if (s == LP_ERROR || s == LP_FAILED)
+		return SAMPLE_NUMERICAL;
+	if (s != LP_OPTIMAL || lp_obj(ws->assoc) > 1e-7 * lam)
+		return SAMPLE_UNSTABLE;
+	return SAMPLE_ACCEPTED;
+}
+
+/* Step 2b: the stabilised SLP from the capacities in ws->c.  Leaves the
+ * converged stress field in ws->x and the load factor in r->lambda_max. */
+static enum sample_status slp(struct sample_ws *ws,
+			      const struct sample_opts *o,
+			      struct sample_result *r)
+{
+	int m = ws->m;
+	double lam_prev = NAN;
+	struct lp *P = ws->slp;
+	for (int it = 1; it <= o->max_iter; it++) {
+		r->iterations = it;
+		for (int k = 0; k < m; k++) {
+			double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+			lp_set_col_bounds(P, 3 * k + 2, -cap, cap);
+			lp_set_row_bounds(P, ws->R + k, ws->c[k], ws->c[k]);
+		}
+		/* LP1: the maximum load with fixed capacities */
+		for (int k = 0; k < m; k++) {
+			lp_set_obj(P, COL_P(ws, k), 0);
+			lp_set_obj(P, COL_Q(ws, k), 0);
+		}
+		lp_set_obj(P, COL_LAMBDA(ws), 1);
+		lp_set_maximize(P, 1);
+		lp_set_col_bounds(P, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+		/* from LP1's last basis: only bounds changed, so it is still
+		 * dual feasible and the dual simplex needs a few pivots */
+		if (it > 1)
+			lp_basis_load(P, &ws->b_lp1);
+		enum lp_status s = solve(ws, P, LP_DUAL, r);
+		if (s == LP_UNBOUNDED)
+			return SAMPLE_UNBOUNDED;
+		if (s == LP_INFEASIBLE)
+			return SAMPLE_NOT_CONVERGED;
+		if (s != LP_OPTIMAL)
+			return SAMPLE_NUMERICAL;
+		double lam = lp_obj(P);
+		lp_basis_save(P, &ws->b_lp1);
+		/* LP2: of the optimal stress fields, the one whose normal
+		 * forces are closest (L1) to c; skipped when LP1's optimum
+		 * is already unique */
+		if (o->stabilise && !lp_unique(P, 1e-12)) {
+			for (int k = 0; k < m; k++) {
+				lp_set_obj(P, COL_P(ws, k), 1);
+				lp_set_obj(P, COL_Q(ws, k), 1);
+			}
+			lp_set_obj(P, COL_LAMBDA(ws), 0);
+			lp_set_maximize(P, 0);
+			/* exactly lam: the result must be optimal for LP1,
+			 * or its small forces are not complementary to
+			 * LP1's mechanisms */
+			lp_set_col_bounds(P, COL_LAMBDA(ws), lam, HUGE_VAL);
+			/* LP1's basis is primal feasible here, but the primal
+			 * simplex walks the degenerate optimal face for
+			 * hundreds of pivots; LP2's own last basis differs
+			 * only in bounds, so it is dual feasible */
+			int have = ws->b_lp2.n > 0 && it > 1;
+			if (have)
+				lp_basis_load(P, &ws->b_lp2);
+			s = solve(ws, P, have ? LP_DUAL : LP_PRIMAL, r);
+			if (s != LP_OPTIMAL)
+				return SAMPLE_NUMERICAL;
+			lp_basis_save(P, &ws->b_lp2);
+			lam = lp_col(P, COL_LAMBDA(ws));
+		}
+		double diff = 0;
+		for (int j = 0; j < 3 * m; j++)
+			ws->x[j] = lp_col(P, j);
+		for (int k = 0; k < m; k++) {
+			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
+			diff = fmax(diff, fabs(nk - ws->c[k]));
+		}
+		r->lambda_max = lam;
+		if (diff < o->tol && fabs(lam - lam_prev) < o->tol * fmax(1, fabs(lam))) {
+			r->converged = 1;
+			return SAMPLE_ACCEPTED;
+		}
+		lam_prev = lam;
+		for (int k = 0; k < m; k++) {
+			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
+			ws->c[k] += o->omega * (nk - ws->c[k]);
+		}
+	}
+	return SAMPLE_NOT_CONVERGED;
+}
+
+/* Step 3: a mechanism complementary to the stress field ws->x with
+ * capacities mu c.  Fills ws->v, ws->dn, ws->dt. */
+static enum sample_status onset(struct sample_ws *ws,
+			       const struct sample_opts *o,
+			       struct sample_result *r)
+{
+	/* a force below this is zero: an interface whose capacity is dying
+	 * away decays geometrically (by omega per iteration) and still
+	 * carries ~ tol when the SLP stops */
+	double fzero = fmax(TOL_FORCE, 100 * o->tol);
+	int m = ws->m;
+	struct lp *K = ws->kin;
+	for (int k = 0; k < m; k++) {
+		for (int e = 0; e < 2; e++) {
+			double nj = ws->x[3 * k + e];
+			if (nj > fzero)
+				lp_set_row_bounds(K, 3 * k + e, 0, 0);
+			else
+				lp_set_row_bounds(K, 3 * k + e, 0, HUGE_VAL);
+		}
+		double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+		/* at the limit: GLPK leaves a basic shear up to ~1e-6
+		 * (relative) inside its bound */
+		double t = ws->x[3 * k + 2], tol = fzero + TOL_LIMIT * cap;
+		double sp = 0, sm = 0;	/* upper bounds of s+, s- */
+		if (cap <= fzero) {
+			sp = sm = HUGE_VAL;	/* no contact: free to slide */
+		} else if (t >= cap - tol) {
+			sm = HUGE_VAL;	/* T > 0 opposes slip < 0 */
+		} else if (t <= -cap + tol) {
+			sp = HUGE_VAL;
+		}
+		lp_set_col_bounds(K, KCOL_SP(ws, k), 0, sp);
+		lp_set_col_bounds(K, KCOL_SM(ws, k), 0, sm);
+	}
+	enum lp_status s = solve(ws, K, LP_DUAL, r);
+	if (s == LP_INFEASIBLE)
+		return SAMPLE_NO_MECHANISM;
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	for (int i = 0; i < ws->R; i++)
+		ws->v[i] = lp_col(K, i);
+	for (int k = 0; k < m; k++) {
+		ws->dn[2 * k] = lp_row(K, 3 * k);
+		ws->dn[2 * k + 1] = lp_row(K, 3 * k + 1);
+		ws->dt[k] = lp_col(K, KCOL_SP(ws, k)) - lp_col(K, KCOL_SM(ws, k));
+	}
+	return SAMPLE_ACCEPTED;
+}
+
+static double motion_scale(const struct sample_ws *ws)
+{
+	double s = 0;
+	for (int k = 0; k < ws->m; k++)
+		s = fmax(s, fmax(fabs(ws->dt[k]),
+				 fmax(fabs(ws->dn[2 * k]), fabs(ws->dn[2 * k + 1]))));
+	return s;
+}
+
+/* Step 5: LP-min with the yield conditions that the mechanism uses held
+ * at their limits.  Leaves the stress field in ws->x. */
+static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
+{
+	int m = ws->m;
+	double thr = TOL_MOTION * motion_scale(ws);
+	assoc_reset(ws);
+	for (int k = 0; k < m; k++) {
+		for (int e = 0; e < 2; e++)
+			if (ws->dn[2 * k + e] > thr)
+				lp_set_col_bounds(ws->assoc, 3 * k + e, 0, 0);
+		if (ws->dt[k] > thr)	/* T = -mu (Na + Nb) */
+			lp_set_row_bounds(ws->assoc, ws->R + 2 * k + 1, 0, 0);
+		else if (ws->dt[k] < -thr)	/* T = +mu (Na + Nb) */
+			lp_set_row_bounds(ws->assoc, ws->R + 2 * k, 0, 0);
+	}
+	lp_set_maximize(ws->assoc, 0);
+	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), 0, HUGE_VAL);
+	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	r->lambda_min = lp_obj(ws->assoc);
+	for (int j = 0; j < 3 * m; j++)
+		ws->x[j] = lp_col(ws->assoc, j);
+	return SAMPLE_ACCEPTED;
+}
+
+/* lambda (f_L . v) = sum mu (Na + Nb) |dt| - f_D . v, relative residual. */
+static double virtual_work(const struct sample_ws *ws, double lam)
+{
+	double fl = 0, fd = 0, diss = 0;
+	for (int i = 0; i < ws->R; i++) {
+		fl += ws->st.fL[i] * ws->v[i];
+		fd += ws->st.fD[i] * ws->v[i];
+	}
+	for (int k = 0; k < ws->m; k++)
+		diss += ws->w->ifaces[k].mu * (ws->x[3 * k] + ws->x[3 * k + 1]) *
+			fabs(ws->dt[k]);
+	double lhs = lam * fl, rhs = diss - fd;
+	double scale = fmax(fabs(lhs), fmax(fabs(rhs), fabs(fd)));
+	return fabs(lhs - rhs) / fmax(scale, 1e-300);
+}
+
+/* Scaled results of the workspace into real units in r. */
+static void export(struct sample_ws *ws, struct sample_result *r)
+{
+	const struct wall *w = ws->w;
+	double F = ws->st.F, L = ws->st.L, vmax = 0;
+	memset(r->vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
+	for (int b = 0; b < w->nblocks; b++) {
+		int e = w->blocks[b].eq;
+		if (e < 0)
+			continue;
+		r->vel[3 * b] = ws->v[3 * e];
+		r->vel[3 * b + 1] = ws->v[3 * e + 1];
+		r->vel[3 * b + 2] = ws->v[3 * e + 2] / L;
+		vmax = fmax(vmax, hypot(ws->v[3 * e], ws->v[3 * e + 1]));
+		vmax = fmax(vmax, fabs(ws->v[3 * e + 2]));
+	}
+	double thr = TOL_MOTION * motion_scale(ws);
+	for (int i = 0; i < 3 * w->nblocks && vmax > 0; i++)
+		r->vel[i] /= vmax;
+	for (int k = 0; k < ws->m; k++) {
+		int oa = ws->dn[2 * k] > thr, ob = ws->dn[2 * k + 1] > thr;
+		int sl = fabs(ws->dt[k]) > thr;
+		char c = JOINT_CLOSED;
+		if (oa && ob)
+			c = JOINT_OPENS;
+		else if (oa || ob)
+			c = sl ? JOINT_HINGE_SLIDES : JOINT_HINGES;
+		else if (sl)
+			c = JOINT_SLIDES;
+		r->joint[k] = c;
+		r->dn[2 * k] = vmax > 0 ? ws->dn[2 * k] / vmax : 0;
+		r->dn[2 * k + 1] = vmax > 0 ? ws->dn[2 * k + 1] / vmax : 0;
+		r->dt[k] = vmax > 0 ? ws->dt[k] / vmax : 0;
+		r->N[2 * k] = ws->x[3 * k] * F;
+		r->N[2 * k + 1] = ws->x[3 * k + 1] * F;
+		r->T[k] = ws->x[3 * k + 2] * F;
+	}
+	r->joint[ws->m] = 0;
+}
+
+void sample_run(struct sample_ws *ws, const double *xi,
+		const struct sample_opts *o, struct sample_result *r)
+{
+	double S = ws->st.S;
+	r->status = SAMPLE_NUMERICAL;
+	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
+	r->iterations = 0;
+	r->converged = 0;
+	r->lps = 0;
+	r->vw_residual = NAN;
+	set_points(ws, xi);
+
+	enum sample_status st = lp_max(ws, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = slp(ws, o, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = onset(ws, o, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = lp_min(ws, r);
+	if (st == SAMPLE_ACCEPTED) {
+		r->vw_residual = virtual_work(ws, r->lambda_min);
+		if (!(r->vw_residual <= VW_TOL))
+			st = SAMPLE_NUMERICAL;
+	}
+	if (st == SAMPLE_ACCEPTED)
+		export(ws, r);
+	r->lambda_lpmax *= S;
+	r->lambda_max *= S;
+	r->lambda_min *= S;
+	r->status = st;
+}
+
+const struct statics *sample_statics(const struct sample_ws *ws)
+{
+	return &ws->st;
+}
+
+void sample_export(struct sample_ws *ws, const double *v, const double *x,
+		   struct sample_result *r)
+{
+	memcpy(ws->v, v, sizeof(double) * (size_t)ws->R);
+	memcpy(ws->x, x, sizeof(double) * 3 * (size_t)ws->m);
+	for (int k = 0; k < ws->m; k++) {
+		ws->dn[2 * k] = statics_rate(&ws->st, 3 * k, ws->v);
+		ws->dn[2 * k + 1] = statics_rate(&ws->st, 3 * k + 1, ws->v);
+		ws->dt[k] = statics_rate(&ws->st, 3 * k + 2, ws->v);
+	}
+	export(ws, r);
+}
+
+enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
+				   struct sample_result *r)
+{
+	r->lps = 0;
+	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
+	set_points(ws, xi);
+	enum sample_status st = lp_max(ws, r);
+	r->status = st;
+	if (st != SAMPLE_ACCEPTED) {
+		r->lambda_lpmax *= ws->st.S;
+		return st;
+	}
+	/* back to the LP-max optimum (its saved basis: no pivots) for the
+	 * mechanism: the duals of the equilibrium rows, scaled so that
+	 * f_L . v = 1 */
+	assoc_reset(ws);
+	lp_basis_load(ws->assoc, &ws->b_max);
+	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
+	if (s != LP_OPTIMAL)
+		return r->status = SAMPLE_NUMERICAL;
+	double lam = lp_obj(ws->assoc), fl = 0;
+	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
+	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
+	for (int i = 0; i < ws->R; i++) {
+		v[i] = lp_row_dual(ws->assoc, i);
+		fl += ws->st.fL[i] * v[i];
+	}
+	for (int i = 0; i < ws->R && fl != 0; i++)
+		v[i] /= fl;
+	for (int j = 0; j < 3 * ws->m; j++)
+		x[j] = lp_col(ws->assoc, j);
+	sample_export(ws, v, x, r);
+	free(v);
+	free(x);
+	r->lambda_lpmax = r->lambda_max = r->lambda_min = lam * ws->st.S;
+	return r->status = SAMPLE_ACCEPTED;
+}

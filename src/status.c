@@ -1,0 +1,76 @@
+/* status.c - the status table, error formatting, checked allocation. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/status.h"
+
+static const struct {
+	int exit_code;
+	const char *text;
+} status_info[] = {
+#define SW_X(name, code, text) {code, text},
+	SW_STATUS_TABLE(SW_X)
+#undef SW_X
+};
+
+int sw_status_exit(enum sw_status st)
+{
+	if ((unsigned)st >= SW_STATUS_COUNT)
+		return 1;
+	return status_info[st].exit_code;
+}
+
+const char *sw_status_text(enum sw_status st)
+{
+	if ((unsigned)st >= SW_STATUS_COUNT)
+		return "unknown status";
+	return status_info[st].text;
+}
+
+enum sw_status sw_fail(char *err, enum sw_status st, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(err, SW_ERRLEN, fmt, ap);
+	va_end(ap);
+	return st;
+}
+
+static void oom(size_t n)
+{
+	fprintf(stderr, "slipwall: out of memory (%zu bytes)\n", n);
+	abort();
+}
+
+void *sw_xmalloc(size_t n)
+{
+	void *p = malloc(n ? n : 1);
+	if (!p)
+		oom(n);
+	return p;
+}
+
+void *sw_xcalloc(size_t n, size_t size)
+{
+	void *p = calloc(n ? n : 1, size ? size : 1);
+	if (!p)
+		oom(n * size);
+	return p;
+}
+
+void *sw_xrealloc(void *p, size_t n)
+{
+	void *q = realloc(p, n ? n : 1);
+	if (!q)
+		oom(n);
+	return q;
+}
+
+char *sw_xstrdup(const char *s)
+{
+	size_t n = strlen(s) + 1;
+	char *d = sw_xmalloc(n);
+	memcpy(d, s, n);
+	return d;
+}

@@ -1,0 +1,393 @@
+/*
+ * wall.c - the wall model: building, deriving, validating, copying.
+ *
+ * The readers (wallfile.c, layout.c) and the tests add blocks and loads;
+ * wall_finish() then derives everything the solvers read and refuses
+ * models that are geometrically impossible, pointing at the offending
+ * item of the file.  Tolerances are relative to the wall's size.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/geom.h"
+#include "slipwall/wall.h"
+
+struct wall *wall_new(void)
+{
+	struct wall *w = sw_xcalloc(1, sizeof *w);
+	w->mu_bed = w->mu_head = 0.6;
+	w->unit_weight = 19620;
+	w->thickness = 0.10;
+	w->depth = 0.25;
+	w->samples = 1000;
+	w->seed = 1;
+	w->ground_block = -1;
+	return w;
+}
+
+void wall_free(struct wall *w)
+{
+	if (!w)
+		return;
+	for (int i = 0; i < w->nblocks; i++) {
+		free(w->blocks[i].id);
+		free(w->blocks[i].xy);
+	}
+	free(w->blocks);
+	free(w->loads);
+	free(w->ifaces);
+	free(w->tests);
+	free(w->name);
+	free(w->path);
+	free(w);
+}
+
+int wall_add_block(struct wall *w, const char *id, const double *xy, int nv,
+		   int fixed, struct wall_mark mark)
+{
+	if (w->nblocks == w->capblocks) {
+		w->capblocks = w->capblocks ? 2 * w->capblocks : 16;
+		w->blocks = sw_xrealloc(w->blocks,
+					sizeof *w->blocks * (size_t)w->capblocks);
+	}
+	struct wall_block *b = &w->blocks[w->nblocks];
+	memset(b, 0, sizeof *b);
+	if (id) {
+		b->id = sw_xstrdup(id);
+	} else {
+		char buf[32];
+		snprintf(buf, sizeof buf, "%s%d", fixed ? "s" : "b", w->nblocks + 1);
+		b->id = sw_xstrdup(buf);
+	}
+	b->nv = nv;
+	b->xy = sw_xmalloc(sizeof(double) * 2 * (size_t)nv);
+	memcpy(b->xy, xy, sizeof(double) * 2 * (size_t)nv);
+	b->fixed = fixed;
+	b->mark = mark;
+	b->eq = -1;
+	return w->nblocks++;
+}
+
+void wall_add_load(struct wall *w, const struct wall_load *ld)
+{
+	if (w->nloads == w->caploads) {
+		w->caploads = w->caploads ? 2 * w->caploads : 4;
+		w->loads = sw_xrealloc(w->loads,
+				       sizeof *w->loads * (size_t)w->caploads);
+	}
+	w->loads[w->nloads++] = *ld;
+}
+
+void wall_where(const struct wall *w, struct wall_mark m, char *buf,
+		size_t len)
+{
+	const char *p = w && w->path ? w->path : "<wall>";
+	if (m.line > 0)
+		snprintf(buf, len, "%s:%d:%d: ", p, m.line, m.col);
+	else
+		snprintf(buf, len, "%s: ", p);
+}
+
+#define WHERE(m) (wall_where(w, (m), where, sizeof where), where)
+
+/* The block that a point load at p in direction d acts on: the one that
+ * contains p; on a shared boundary, the one the force pushes into, else
+ * the one it pulls out of. */
+static int load_block(const struct wall *w, const double *p, const double *d,
+		      double tol)
+{
+	int first = -1;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (!geom_contains(b->xy, b->nv, p[0], p[1], tol))
+			continue;
+		if (first < 0)
+			first = k;
+		double eps = 1e3 * tol;
+		if (geom_contains(b->xy, b->nv, p[0] + eps * d[0],
+				  p[1] + eps * d[1], -tol))
+			return k;
+	}
+	if (first < 0)
+		return -1;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		double eps = 1e3 * tol;
+		if (geom_contains(b->xy, b->nv, p[0], p[1], tol) &&
+		    geom_contains(b->xy, b->nv, p[0] - eps * d[0],
+				  p[1] - eps * d[1], -tol))
+			return k;
+	}
+	return first;
+}
+
+/* Every free block must reach a support through interfaces. */
+static int first_unsupported(const struct wall *w)
+{
+	int n = w->nblocks, *adj_start = sw_xcalloc((size_t)n + 1, sizeof(int));
+	int *adj = sw_xmalloc(sizeof(int) * (size_t)(2 * w->nifaces + 1));
+	for (int k = 0; k < w->nifaces; k++) {
+		adj_start[w->ifaces[k].a + 1]++;
+		adj_start[w->ifaces[k].b + 1]++;
+	}
+	for (int i = 0; i < n; i++)
+		adj_start[i + 1] += adj_start[i];
+	int *fill = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+	memcpy(fill, adj_start, sizeof(int) * (size_t)n);
+	for (int k = 0; k < w->nifaces; k++) {
+		adj[fill[w->ifaces[k].a]++] = w->ifaces[k].b;
+		adj[fill[w->ifaces[k].b]++] = w->ifaces[k].a;
+	}
+	char *seen = sw_xcalloc((size_t)n + 1, 1);
+	int *queue = fill, head = 0, tail = 0;
+	for (int i = 0; i < n; i++)
+		if (w->blocks[i].fixed) {
+			seen[i] = 1;
+			queue[tail++] = i;
+		}
+	while (head < tail) {
+		int i = queue[head++];
+		for (int p = adj_start[i]; p < adj_start[i + 1]; p++)
+			if (!seen[adj[p]]) {
+				seen[adj[p]] = 1;
+				queue[tail++] = adj[p];
+			}
+	}
+	int bad = -1;
+	for (int i = 0; i < n && bad < 0; i++)
+		if (!seen[i])
+			bad = i;
+	free(adj_start);
+	free(adj);
+	free(fill);
+	free(seen);
+	return bad;
+}
+
+static const struct wall *id_wall;	/* qsort has no context argument */
+
+static int id_cmp(const void *pa, const void *pb)
+{
+	int a = *(const int *)pa, b = *(const int *)pb;
+	int c = strcmp(id_wall->blocks[a].id, id_wall->blocks[b].id);
+	return c ? c : (a > b) - (a < b);
+}
+
+/* The later of two blocks that share an id, or -1.  Sorting, so that a
+ * 10,000-block wall is not a hundred million comparisons.  (Not
+ * thread-safe: walls are finished on one thread.) */
+static int duplicate_id(const struct wall *w)
+{
+	int *ix = sw_xmalloc(sizeof(int) * (size_t)(w->nblocks + 1)), dup = -1;
+	for (int k = 0; k < w->nblocks; k++)
+		ix[k] = k;
+	id_wall = w;
+	qsort(ix, (size_t)w->nblocks, sizeof *ix, id_cmp);
+	for (int k = 1; k < w->nblocks && dup < 0; k++)
+		if (!strcmp(w->blocks[ix[k - 1]].id, w->blocks[ix[k]].id))
+			dup = ix[k];
+	free(ix);
+	return dup;
+}
+
+enum sw_status wall_finish(struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
+	struct wall_mark none = {0, 0};
+	if (w->finished)
+		return SW_OK;
+
+	/* size of the wall, for tolerances */
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	int nfree = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		for (int i = 0; i < b->nv; i++) {
+			if (!isfinite(b->xy[2 * i]) || !isfinite(b->xy[2 * i + 1]))
+				return sw_fail(err, SW_EINPUT,
+					       "%sblock '%s' has a vertex that is not a finite number",
+					       WHERE(b->mark), b->id);
+			x0 = fmin(x0, b->xy[2 * i]);
+			y0 = fmin(y0, b->xy[2 * i + 1]);
+			x1 = fmax(x1, b->xy[2 * i]);
+			y1 = fmax(y1, b->xy[2 * i + 1]);
+		}
+		nfree += !b->fixed;
+	}
+	if (nfree == 0)
+		return sw_fail(err, SW_EINPUT, "%sthe wall has no blocks",
+			       WHERE(none));
+	double span = fmax(x1 - x0, y1 - y0);
+	double tol = 1e-9 * span;
+
+	/* each polygon: convex, counter-clockwise; ids unique */
+	for (int k = 0; k < w->nblocks; k++) {
+		struct wall_block *b = &w->blocks[k];
+		enum geom_shape s = geom_check_polygon(b->xy, b->nv, tol);
+		if (s != GEOM_OK)
+			return sw_fail(err, SW_EINPUT, "%s%s '%s' is %s",
+				       WHERE(b->mark),
+				       b->fixed ? "support" : "block", b->id,
+				       geom_shape_text(s));
+		b->area = geom_area(b->xy, b->nv);
+		geom_centroid(b->xy, b->nv, &b->cx, &b->cy);
+	}
+	int dup = duplicate_id(w);
+	if (dup >= 0)
+		return sw_fail(err, SW_EINPUT, "%sblock id '%s' is used twice",
+			       WHERE(w->blocks[dup].mark), w->blocks[dup].id);
+
+	/* the ground: a fixed slab under the whole wall */
+	if (w->has_ground) {
+		for (int k = 0; k < w->nblocks; k++) {
+			const struct wall_block *b = &w->blocks[k];
+			for (int i = 0; i < b->nv && !b->fixed; i++)
+				if (b->xy[2 * i + 1] < w->ground_y - tol)
+					return sw_fail(err, SW_EINPUT,
+						       "%sblock '%s' reaches below the ground (y = %g)",
+						       WHERE(b->mark), b->id,
+						       w->ground_y);
+		}
+		double pad = 0.1 * span, depth = 0.1 * span;
+		double g[8] = {x0 - pad, w->ground_y - depth,
+			       x1 + pad, w->ground_y - depth,
+			       x1 + pad, w->ground_y,
+			       x0 - pad, w->ground_y};
+		w->ground_block = wall_add_block(w, "ground", g, 4, 1,
+						 w->ground_mark);
+		struct wall_block *gb = &w->blocks[w->ground_block];
+		gb->area = geom_area(g, 4);
+		geom_centroid(g, 4, &gb->cx, &gb->cy);
+	}
+
+	int oi, oj;
+	if (geom_find_overlap(w, 1e-6 * span, &oi, &oj)) {
+		const struct wall_block *b = &w->blocks[oj];
+		if (w->blocks[oj].fixed && !w->blocks[oi].fixed)
+			b = &w->blocks[oi];
+		return sw_fail(err, SW_EINPUT, "%sblock '%s' overlaps '%s'",
+			       WHERE(b->mark), b->id,
+			       w->blocks[b == &w->blocks[oi] ? oj : oi].id);
+	}
+
+	/* weights and equation numbers */
+	w->nfree = 0;
+	w->total_weight = 0;
+	double area_sum = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		struct wall_block *b = &w->blocks[k];
+		if (b->fixed) {
+			b->weight = 0;
+			b->eq = -1;
+			continue;
+		}
+		b->weight = w->unit_weight * b->area * w->thickness;
+		b->eq = w->nfree++;
+		w->total_weight += b->weight;
+		area_sum += b->area;
+	}
+	w->mean_weight = w->total_weight / w->nfree;
+	w->mean_size = sqrt(area_sum / w->nfree);
+	if (!(w->mean_weight > 0))
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe blocks weigh nothing (unit weight %g N/m^3, thickness %g m)",
+			       WHERE(none), w->unit_weight, w->thickness);
+
+	/* interfaces; tolerance relative to the block size */
+	free(w->ifaces);
+	w->nifaces = geom_contacts(w, 1e-6 * w->mean_size, &w->ifaces);
+	int nsupports = 0;
+	for (int k = 0; k < w->nblocks; k++)
+		nsupports += w->blocks[k].fixed;
+	if (nsupports == 0)
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe wall has no support (add `supports: [{ground: {y: 0}}]`)",
+			       WHERE(none));
+	int bad = first_unsupported(w);
+	if (bad >= 0) {
+		const struct wall_block *b = &w->blocks[bad];
+		int touches = 0;
+		for (int k = 0; k < w->nifaces && !touches; k++)
+			touches = w->ifaces[k].a == bad || w->ifaces[k].b == bad;
+		return sw_fail(err, SW_EINPUT, "%sblock '%s' %s",
+			       WHERE(b->mark), b->id,
+			       touches ? "does not rest on any support (through the blocks it touches)"
+				       : "touches nothing");
+	}
+
+	/* loads */
+	if (w->nloads == 0)
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe wall has no live load (add a `loads` entry)",
+			       WHERE(none));
+	for (int l = 0; l < w->nloads; l++) {
+		struct wall_load *ld = &w->loads[l];
+		double dn = hypot(ld->dir[0], ld->dir[1]);
+		if (!(dn > 0) || !isfinite(dn))
+			return sw_fail(err, SW_EINPUT,
+				       "%sload direction must be a non-zero vector",
+				       WHERE(ld->mark));
+		ld->dir[0] /= dn;
+		ld->dir[1] /= dn;
+		if (!(ld->magnitude > 0) || !isfinite(ld->magnitude))
+			return sw_fail(err, SW_EINPUT,
+				       "%sload magnitude must be > 0",
+				       WHERE(ld->mark));
+		if (ld->kind != LOAD_POINT) {
+			ld->block = -1;
+			continue;
+		}
+		ld->block = load_block(w, ld->at, ld->dir, tol);
+		if (ld->block < 0)
+			return sw_fail(err, SW_EINPUT,
+				       "%sload point (%g, %g) is outside every block",
+				       WHERE(ld->mark), ld->at[0], ld->at[1]);
+		if (w->blocks[ld->block].fixed)
+			return sw_fail(err, SW_EINPUT,
+				       "%sload point (%g, %g) is on support '%s', which cannot move",
+				       WHERE(ld->mark), ld->at[0], ld->at[1],
+				       w->blocks[ld->block].id);
+	}
+	w->finished = 1;
+	return SW_OK;
+}
+
+double wall_live_reference(const struct wall *w)
+{
+	double s = 0;
+	for (int l = 0; l < w->nloads; l++)
+		s += w->loads[l].kind == LOAD_POINT
+			     ? w->loads[l].magnitude
+			     : w->loads[l].magnitude * w->total_weight;
+	return s;
+}
+
+struct wall *wall_copy(const struct wall *w)
+{
+	struct wall *c = sw_xmalloc(sizeof *c);
+	*c = *w;
+	c->name = w->name ? sw_xstrdup(w->name) : NULL;
+	c->path = w->path ? sw_xstrdup(w->path) : NULL;
+	c->capblocks = w->nblocks;
+	c->blocks = sw_xmalloc(sizeof *c->blocks * (size_t)(w->nblocks + 1));
+	for (int k = 0; k < w->nblocks; k++) {
+		c->blocks[k] = w->blocks[k];
+		c->blocks[k].id = sw_xstrdup(w->blocks[k].id);
+		c->blocks[k].xy = sw_xmalloc(sizeof(double) * 2 * (size_t)w->blocks[k].nv);
+		memcpy(c->blocks[k].xy, w->blocks[k].xy,
+		       sizeof(double) * 2 * (size_t)w->blocks[k].nv);
+	}
+	c->caploads = w->nloads;
+	c->loads = sw_xmalloc(sizeof *c->loads * (size_t)(w->nloads + 1));
+	if (w->nloads)
+		memcpy(c->loads, w->loads, sizeof *c->loads * (size_t)w->nloads);
+	c->tests = sw_xmalloc(sizeof(double) * (size_t)(w->ntests + 1));
+	if (w->ntests)
+		memcpy(c->tests, w->tests, sizeof(double) * (size_t)w->ntests);
+	c->ifaces = sw_xmalloc(sizeof *c->ifaces * (size_t)(w->nifaces + 1));
+	if (w->nifaces)
+		memcpy(c->ifaces, w->ifaces, sizeof *c->ifaces * (size_t)w->nifaces);
+	return c;
+}

@@ -1,0 +1,59 @@
+/*
+ * tap.h - a tiny TAP producer for the unit tests (meson protocol 'tap').
+ * Each check prints "ok N - name" or "not ok N - name" with the numbers
+ * that differed; tap_done() prints the plan and returns the exit status.
+ */
+#ifndef SLIPWALL_TAP_H
+#define SLIPWALL_TAP_H
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+static int tap_n, tap_failed;
+
+static inline int tap_ok(int cond, const char *fmt, ...)
+{
+	va_list ap;
+	tap_n++;
+	printf("%s %d - ", cond ? "ok" : "not ok", tap_n);
+	va_start(ap, fmt);
+	vprintf(fmt, ap);
+	va_end(ap);
+	printf("\n");
+	if (!cond)
+		tap_failed++;
+	fflush(stdout);
+	return cond;
+}
+
+/* |got - want| <= rel * max(1, |want|) */
+static inline int tap_near(double got, double want, double rel,
+			   const char *name)
+{
+	double tol = rel * (fabs(want) > 1 ? fabs(want) : 1);
+	int c = fabs(got - want) <= tol;
+	tap_ok(c, "%s", name);
+	if (!c)
+		printf("#   got %.17g, want %.17g (tol %.3g)\n", got, want, tol);
+	return c;
+}
+
+static inline void tap_diag(const char *fmt, ...)
+{
+	va_list ap;
+	printf("# ");
+	va_start(ap, fmt);
+	vprintf(fmt, ap);
+	va_end(ap);
+	printf("\n");
+}
+
+static inline int tap_done(void)
+{
+	printf("1..%d\n", tap_n);
+	return tap_failed ? 1 : 0;
+}
+
+#endif

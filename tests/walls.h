@@ -1,0 +1,89 @@
+/*
+ * walls.h - small walls built in code for the engine tests: a block, a
+ * stack, a generated layout.  Each returns a finished wall or aborts.
+ */
+#ifndef SLIPWALL_TEST_WALLS_H
+#define SLIPWALL_TEST_WALLS_H
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "slipwall/layout.h"
+#include "slipwall/wall.h"
+#include "slipwall/wallfile.h"
+
+static inline void tw_finish(struct wall *w)
+{
+	char err[SW_ERRLEN];
+	if (wall_finish(w, err) != SW_OK) {
+		fprintf(stderr, "test wall: %s\n", err);
+		abort();
+	}
+}
+
+static inline void tw_rect(struct wall *w, const char *id, double x0,
+			   double y0, double bw, double bh)
+{
+	double xy[8] = {x0, y0, x0 + bw, y0, x0 + bw, y0 + bh, x0, y0 + bh};
+	struct wall_mark mk = {0, 0};
+	wall_add_block(w, id, xy, 4, 0, mk);
+}
+
+static inline void tw_point_load(struct wall *w, double x, double y,
+				 double dx, double dy)
+{
+	struct wall_load ld = {0};
+	ld.kind = LOAD_POINT;
+	ld.at[0] = x;
+	ld.at[1] = y;
+	ld.dir[0] = dx;
+	ld.dir[1] = dy;
+	ld.magnitude = 1;
+	wall_add_load(w, &ld);
+}
+
+static inline void tw_body_load(struct wall *w)
+{
+	struct wall_load ld = {0};
+	ld.kind = LOAD_BODY;
+	ld.dir[0] = 1;
+	ld.magnitude = 1;
+	wall_add_load(w, &ld);
+}
+
+/* A generated running or stack bond wall on the ground (not finished). */
+static inline struct wall *tw_layout(double bw, double bh, int courses,
+				     double length, int running, int half,
+				     double mu)
+{
+	struct wall *w = wall_new();
+	char err[SW_ERRLEN];
+	struct wall_mark mk = {0, 0};
+	w->layout.present = 1;
+	w->layout.block_w = bw;
+	w->layout.block_h = bh;
+	w->layout.courses = courses;
+	w->layout.length = length;
+	w->layout.bond = running ? BOND_RUNNING : BOND_STACK;
+	w->layout.first_half = half;
+	w->has_ground = 1;
+	w->mu_bed = w->mu_head = mu;
+	if (layout_generate(w, mk, err) != SW_OK) {
+		fprintf(stderr, "test layout: %s\n", err);
+		abort();
+	}
+	return w;
+}
+
+static inline struct wall *tw_load_file(const char *path)
+{
+	struct wall *w;
+	char err[SW_ERRLEN];
+	if (wallfile_load(path, &w, err) != SW_OK) {
+		fprintf(stderr, "%s\n", err);
+		abort();
+	}
+	return w;
+}
+
+#endif
