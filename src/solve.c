@@ -75,7 +75,7 @@ static enum sw_status failure(enum sample_status s, char *err)
 			       "the load factor is unbounded: the live load pushes against a support or a block that cannot move, so no mechanism can form");
 	case SAMPLE_NO_EQUILIBRIUM:
 		return sw_fail(err, SW_EANALYSIS,
-			       "no equilibrium: the blocks cannot be held in place by contact forces at any load");
+			       "the wall cannot stand under its own weight: no contact forces hold the blocks in equilibrium, at any load");
 	case SAMPLE_UNSTABLE:
 	case SAMPLE_NONPOSITIVE:
 		return sw_fail(err, SW_EANALYSIS,

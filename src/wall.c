@@ -6,6 +6,7 @@
  * models that are geometrically impossible, pointing at the offending
  * item of the file.  Tolerances are relative to the wall's size.
  */
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -329,8 +330,11 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			return sw_fail(err, SW_EINPUT,
 				       "%sload direction must be a non-zero vector",
 				       WHERE(ld->mark));
-		ld->dir[0] /= dn;
-		ld->dir[1] /= dn;
+		/* a saved (already unit) direction must load back bit for bit */
+		if (fabs(dn - 1) > 4 * DBL_EPSILON) {
+			ld->dir[0] /= dn;
+			ld->dir[1] /= dn;
+		}
 		if (!(ld->magnitude > 0) || !isfinite(ld->magnitude))
 			return sw_fail(err, SW_EINPUT,
 				       "%sload magnitude must be > 0",

@@ -1,0 +1,1102 @@
+/*
+ * wallfile.c - reading and writing wall files (SPEC section 3,
+ * docs/wall-format.md).
+ *
+ * Called by the command line and the workbench; returns a finished
+ * `struct wall` that the caller owns, or SW_EINPUT with a message
+ * "FILE:LINE:COLUMN: what is wrong" that points at the offending value.
+ *
+ * Reading takes three steps over a buffer of at most WALLFILE_MAX_BYTES:
+ *
+ *  1. An event pass (yaml_parser_parse) that only counts nesting and
+ *     events.  libyaml takes time quadratic in the nesting depth (a file of
+ *     100,000 '[' takes over a minute), so a document nested deeper than
+ *     WALLFILE_MAX_DEPTH is refused here, after a few dozen events, before
+ *     the document is built.  Syntax errors are reported from this pass.
+ *  2. yaml_parser_load builds the document.  Aliases become shared node
+ *     references (a recursive alias makes a cycle), so memory stays
+ *     proportional to the file; but a walk can reach one node many times
+ *     (an "alias bomb").
+ *  3. A walk driven by the schema: every mapping is checked for unknown
+ *     and duplicate keys (libyaml accepts duplicates silently), every value
+ *     for its type and range.  The walk never descends into content the
+ *     schema does not expect, so its depth is bounded by the schema and a
+ *     cycle cannot trap it; every node it reaches counts against
+ *     WALLFILE_MAX_NODES, which bounds the work an alias bomb can cause.
+ *
+ * Numbers are plain scalars of the form [-+]digits[.digits][e[-+]digits]:
+ * a quoted "0.6" is a string, and .inf, .nan, hexadecimal and "0.6x" are
+ * refused.  Counts are plain integers.
+ *
+ * Blocks are added in the order: layout (course by course), `blocks`,
+ * `supports` polygons; wall_finish() then adds the ground and does the
+ * geometric validation (its messages point at the marks set here).
+ *
+ * Writing (wallfile_save) emits every free block as an explicit polygon,
+ * so a saved wall does not depend on the layout generator; numbers are
+ * written with 17 significant digits, so they read back bit for bit.
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <yaml.h>
+
+#include "slipwall/layout.h"
+#include "slipwall/wallfile.h"
+
+#define WALLFILE_MAX_DEPTH 64
+
+/* The state of one read: the document, the wall being built, the error
+ * buffer, and the count of nodes the walk has reached. */
+struct reader {
+	const char *name;
+	yaml_document_t doc;
+	struct wall *w;
+	char *err;
+	long visits;
+};
+
+/* ---------------------------------------------------------------- errors */
+
+static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
+			  ...) __attribute__((format(printf, 3, 4)));
+
+static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
+			  ...)
+{
+	char msg[SW_ERRLEN];
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(msg, sizeof msg, fmt, ap);
+	va_end(ap);
+	sw_fail(r->err, SW_EINPUT, "%s:%zu:%zu: %s", r->name, m.line + 1,
+		m.column + 1, msg);
+	return -1;
+}
+
+#define FAIL(r, n, ...) reader_fail_at((r), (n)->start_mark, __VA_ARGS__)
+
+static struct wall_mark mark_of(const yaml_node_t *n)
+{
+	struct wall_mark m = {(int)n->start_mark.line + 1,
+			      (int)n->start_mark.column + 1};
+	return m;
+}
+
+/* A short printable copy of a scalar, for messages. */
+static const char *shown(const yaml_node_t *n, char *buf, size_t len)
+{
+	size_t j = 0;
+	for (size_t i = 0; i < n->data.scalar.length && j + 4 < len; i++) {
+		unsigned char c = n->data.scalar.value[i];
+		buf[j++] = (c < 0x20 || c == 0x7f) ? '?' : (char)c;
+	}
+	if (j + 4 >= len && n->data.scalar.length > j) {
+		memcpy(buf + j, "...", 3);
+		j += 3;
+	}
+	buf[j] = '\0';
+	return buf;
+}
+
+/* What a node is, for "must be a number, not a list" messages. */
+static const char *kind_of(const yaml_node_t *n)
+{
+	switch (n->type) {
+	case YAML_MAPPING_NODE:
+		return "a mapping";
+	case YAML_SEQUENCE_NODE:
+		return "a list";
+	case YAML_SCALAR_NODE:
+		if (n->data.scalar.length == 0 &&
+		    n->data.scalar.style == YAML_PLAIN_SCALAR_STYLE)
+			return "empty";
+		if (n->data.scalar.style != YAML_PLAIN_SCALAR_STYLE)
+			return "a quoted string";
+		return "a string";
+	default:
+		return "nothing";
+	}
+}
+
+/* The error of libyaml's parser, located.  Reader errors (bad encoding)
+ * carry a byte offset instead of a mark. */
+static int reader_yaml_error(struct reader *r, const yaml_parser_t *p,
+			     const char *buf, size_t len)
+{
+	yaml_mark_t m = p->problem_mark;
+	const char *problem = p->problem ? p->problem : "YAML error";
+
+	switch (p->error) {
+	case YAML_MEMORY_ERROR:
+		sw_fail(r->err, SW_EINPUT, "%s: out of memory while reading",
+			r->name);
+		return -1;
+	case YAML_READER_ERROR:
+		m.line = 0;
+		m.column = 0;
+		for (size_t i = 0; i < p->problem_offset && i < len; i++) {
+			if (buf[i] == '\n') {
+				m.line++;
+				m.column = 0;
+			} else {
+				m.column++;
+			}
+		}
+		if (p->problem_value >= 0)
+			return reader_fail_at(r, m, "%s (byte 0x%02x)",
+					      problem, p->problem_value);
+		return reader_fail_at(r, m, "%s", problem);
+	default:
+		if (p->context)
+			return reader_fail_at(r, m, "%s (%s at line %zu, column %zu)",
+					      problem, p->context,
+					      p->context_mark.line + 1,
+					      p->context_mark.column + 1);
+		return reader_fail_at(r, m, "%s", problem);
+	}
+}
+
+/* ------------------------------------------------------------ node access */
+
+/* Every node the walk reaches goes through here: count it, refuse tags. */
+static yaml_node_t *reader_node(struct reader *r, int id)
+{
+	yaml_node_t *n = yaml_document_get_node(&r->doc, id);
+	if (!n) {
+		sw_fail(r->err, SW_EINPUT, "%s: malformed YAML document",
+			r->name);
+		return NULL;
+	}
+	if (++r->visits > WALLFILE_MAX_NODES) {
+		FAIL(r, n, "the document expands to more than %d nodes (aliases?)",
+		     WALLFILE_MAX_NODES);
+		return NULL;
+	}
+	const char *def = n->type == YAML_MAPPING_NODE ? YAML_DEFAULT_MAPPING_TAG
+			  : n->type == YAML_SEQUENCE_NODE ? YAML_DEFAULT_SEQUENCE_TAG
+							  : YAML_DEFAULT_SCALAR_TAG;
+	if (n->tag && strcmp((const char *)n->tag, def)) {
+		FAIL(r, n, "YAML tags are not supported here ('%s')",
+		     (const char *)n->tag);
+		return NULL;
+	}
+	return n;
+}
+
+static int key_is(const yaml_node_t *k, const char *name)
+{
+	return k->data.scalar.length == strlen(name) &&
+	       !memcmp(k->data.scalar.value, name, k->data.scalar.length);
+}
+
+/* Check that n is a mapping whose keys are among keys[] (NULL-terminated),
+ * each at most once; vals[i] is the value of keys[i], or NULL. */
+static int reader_map(struct reader *r, yaml_node_t *n, const char *what,
+		      const char *const *keys, yaml_node_t **vals)
+{
+	int nkeys = 0;
+	while (keys[nkeys])
+		vals[nkeys++] = NULL;
+	if (n->type != YAML_MAPPING_NODE)
+		return FAIL(r, n, "%s must be a mapping, not %s", what,
+			    kind_of(n));
+	for (yaml_node_pair_t *p = n->data.mapping.pairs.start;
+	     p < n->data.mapping.pairs.top; p++) {
+		yaml_node_t *k = reader_node(r, p->key);
+		if (!k)
+			return -1;
+		if (k->type != YAML_SCALAR_NODE)
+			return FAIL(r, k, "a key in %s must be a string, not %s",
+				    what, kind_of(k));
+		char buf[48];
+		int i = 0;
+		while (keys[i] && !key_is(k, keys[i]))
+			i++;
+		if (!keys[i])
+			return FAIL(r, k, "unknown key '%s' in %s",
+				    shown(k, buf, sizeof buf), what);
+		if (vals[i])
+			return FAIL(r, k, "duplicate key '%s' in %s", keys[i],
+				    what);
+		vals[i] = reader_node(r, p->value);
+		if (!vals[i])
+			return -1;
+	}
+	return 0;
+}
+
+/* Strict decimal: [-+]digits[.digits][(e|E)[-+]digits], some digit. */
+static int is_decimal(const char *s)
+{
+	int digits = 0;
+	if (*s == '+' || *s == '-')
+		s++;
+	for (; isdigit((unsigned char)*s); s++)
+		digits++;
+	if (*s == '.')
+		for (s++; isdigit((unsigned char)*s); s++)
+			digits++;
+	if (!digits)
+		return 0;
+	if (*s == 'e' || *s == 'E') {
+		s++;
+		if (*s == '+' || *s == '-')
+			s++;
+		if (!isdigit((unsigned char)*s))
+			return 0;
+		while (isdigit((unsigned char)*s))
+			s++;
+	}
+	return *s == '\0';
+}
+
+static int is_nonfinite_word(const char *s)
+{
+	if (*s == '+' || *s == '-')
+		s++;
+	if (*s == '.')
+		s++;
+	return !strcasecmp(s, "inf") || !strcasecmp(s, "infinity") ||
+	       !strcasecmp(s, "nan");
+}
+
+/* A plain scalar, or an error naming what it is instead. */
+static const char *reader_plain(struct reader *r, yaml_node_t *n,
+				const char *what, const char *type)
+{
+	if (n->type != YAML_SCALAR_NODE ||
+	    n->data.scalar.style != YAML_PLAIN_SCALAR_STYLE ||
+	    n->data.scalar.length == 0) {
+		FAIL(r, n, "%s must be %s, not %s", what, type, kind_of(n));
+		return NULL;
+	}
+	return (const char *)n->data.scalar.value;
+}
+
+static int reader_number(struct reader *r, yaml_node_t *n, const char *what,
+			 double *out)
+{
+	char buf[48];
+	const char *s = reader_plain(r, n, what, "a number");
+	if (!s)
+		return -1;
+	if (is_nonfinite_word(s))
+		return FAIL(r, n, "%s must be a finite number, got '%s'", what,
+			    shown(n, buf, sizeof buf));
+	if (!is_decimal(s))
+		return FAIL(r, n, "%s must be a number, got '%s'", what,
+			    shown(n, buf, sizeof buf));
+	char *end;
+	errno = 0;
+	double v = strtod(s, &end);
+	if (*end || !isfinite(v))
+		return FAIL(r, n, "%s must be a finite number, got '%s'", what,
+			    shown(n, buf, sizeof buf));
+	*out = v;
+	return 0;
+}
+
+/* A number with lo <= v (lo < v when strict) and v <= hi. */
+static int reader_number_in(struct reader *r, yaml_node_t *n,
+			    const char *what, double lo, int strict, double hi,
+			    double *out)
+{
+	double v;
+	if (reader_number(r, n, what, &v))
+		return -1;
+	if ((strict ? !(v > lo) : !(v >= lo)) || v > hi) {
+		if (isinf(hi))
+			return FAIL(r, n, "%s must be %s %g (got %g)", what,
+				    strict ? ">" : ">=", lo, v);
+		if (strict)
+			return FAIL(r, n, "%s must be > %g and <= %g (got %g)",
+				    what, lo, hi, v);
+		return FAIL(r, n, "%s must be between %g and %g (got %g)", what,
+			    lo, hi, v);
+	}
+	*out = v;
+	return 0;
+}
+
+/* A plain integer literal in [lo, hi]. */
+static int reader_integer(struct reader *r, yaml_node_t *n, const char *what,
+			  unsigned long long lo, unsigned long long hi,
+			  unsigned long long *out)
+{
+	char buf[48];
+	const char *s = reader_plain(r, n, what, "an integer");
+	if (!s)
+		return -1;
+	const char *d = s;
+	int neg = 0, ok;
+	if (*d == '+' || *d == '-')
+		neg = *d++ == '-';
+	ok = *d != '\0';
+	for (const char *p = d; *p; p++)
+		ok &= isdigit((unsigned char)*p) != 0;
+	if (!ok)
+		return FAIL(r, n, "%s must be an integer, got '%s'", what,
+			    shown(n, buf, sizeof buf));
+	errno = 0;
+	unsigned long long v = strtoull(d, NULL, 10);
+	if ((neg && v != 0) || v < lo)
+		return FAIL(r, n, "%s must be an integer >= %llu (got %s)", what,
+			    lo, shown(n, buf, sizeof buf));
+	if (errno == ERANGE || v > hi)
+		return FAIL(r, n, "%s must be an integer <= %llu (got %s)", what,
+			    hi, shown(n, buf, sizeof buf));
+	*out = v;
+	return 0;
+}
+
+/* A string scalar of any style, without NUL bytes, not empty. */
+static const char *reader_string(struct reader *r, yaml_node_t *n,
+				 const char *what)
+{
+	if (n->type != YAML_SCALAR_NODE ||
+	    (n->data.scalar.length == 0 &&
+	     n->data.scalar.style == YAML_PLAIN_SCALAR_STYLE)) {
+		FAIL(r, n, "%s must be a string, not %s", what, kind_of(n));
+		return NULL;
+	}
+	if (n->data.scalar.length == 0 ||
+	    memchr(n->data.scalar.value, '\0', n->data.scalar.length)) {
+		FAIL(r, n, "%s must be a non-empty string without NUL bytes",
+		     what);
+		return NULL;
+	}
+	return (const char *)n->data.scalar.value;
+}
+
+/* One of the words in choices[] (NULL-terminated): its index. */
+static int reader_choice(struct reader *r, yaml_node_t *n, const char *what,
+			 const char *const *choices)
+{
+	char buf[48];
+	const char *s = reader_string(r, n, what);
+	if (!s)
+		return -1;
+	for (int i = 0; choices[i]; i++)
+		if (!strcmp(s, choices[i]))
+			return i;
+	return FAIL(r, n, "%s must be '%s' or '%s', got '%s'", what,
+		    choices[0], choices[1], shown(n, buf, sizeof buf));
+}
+
+static int reader_list(struct reader *r, yaml_node_t *n, const char *what)
+{
+	if (n->type != YAML_SEQUENCE_NODE)
+		return FAIL(r, n, "%s must be a list, not %s", what, kind_of(n));
+	return 0;
+}
+
+static int list_len(const yaml_node_t *n)
+{
+	return (int)(n->data.sequence.items.top - n->data.sequence.items.start);
+}
+
+/* [x, y]: a list of exactly two numbers. */
+static int reader_pair(struct reader *r, yaml_node_t *n, const char *what,
+		       double out[2])
+{
+	if (n->type != YAML_SEQUENCE_NODE || list_len(n) != 2)
+		return FAIL(r, n, "%s must be a list of 2 numbers [x, y]%s", what,
+			    n->type == YAML_SEQUENCE_NODE ? "" : ", not a scalar or mapping");
+	for (int i = 0; i < 2; i++) {
+		yaml_node_t *c = reader_node(r, n->data.sequence.items.start[i]);
+		if (!c || reader_number(r, c, what, &out[i]))
+			return -1;
+	}
+	return 0;
+}
+
+/* [[x, y], [x, y], [x, y], ...]: at least 3 vertices; *xy is malloc'd. */
+static int reader_polygon(struct reader *r, yaml_node_t *n, const char *what,
+			  double **xy, int *nv)
+{
+	*xy = NULL;
+	if (reader_list(r, n, what))
+		return -1;
+	int m = list_len(n);
+	if (m < 3)
+		return FAIL(r, n, "%s needs at least 3 vertices (got %d)", what,
+			    m);
+	double *p = sw_xmalloc(sizeof(double) * 2 * (size_t)m);
+	for (int i = 0; i < m; i++) {
+		yaml_node_t *c = reader_node(r, n->data.sequence.items.start[i]);
+		if (!c || reader_pair(r, c, "a vertex", &p[2 * i])) {
+			free(p);
+			return -1;
+		}
+	}
+	*xy = p;
+	*nv = m;
+	return 0;
+}
+
+static yaml_node_t *reader_item(struct reader *r, yaml_node_t *list, int i)
+{
+	return reader_node(r, list->data.sequence.items.start[i]);
+}
+
+/* ----------------------------------------------------------- the sections */
+
+static int read_material(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"friction", "unit_weight",
+					   "thickness", NULL};
+	static const char *const fkeys[] = {"bed", "head", NULL};
+	yaml_node_t *v[3], *f[2];
+	struct wall *w = r->w;
+
+	if (reader_map(r, n, "material", keys, v))
+		return -1;
+	if (v[0] && v[0]->type == YAML_MAPPING_NODE) {
+		if (reader_map(r, v[0], "friction", fkeys, f))
+			return -1;
+		for (int i = 0; i < 2; i++)
+			if (!f[i])
+				return FAIL(r, v[0], "friction needs both 'bed' and 'head' (missing '%s')",
+					    fkeys[i]);
+		if (reader_number_in(r, f[0], "friction (bed)", 0, 0, INFINITY,
+				     &w->mu_bed) ||
+		    reader_number_in(r, f[1], "friction (head)", 0, 0, INFINITY,
+				     &w->mu_head))
+			return -1;
+	} else if (v[0]) {
+		if (reader_number_in(r, v[0], "friction", 0, 0, INFINITY,
+				     &w->mu_bed))
+			return -1;
+		w->mu_head = w->mu_bed;
+	}
+	if (v[1] && reader_number_in(r, v[1], "unit_weight", 0, 1, INFINITY,
+				     &w->unit_weight))
+		return -1;
+	if (v[2] && reader_number_in(r, v[2], "thickness", 0, 1, INFINITY,
+				     &w->thickness))
+		return -1;
+	return 0;
+}
+
+static int read_layout(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"block", "courses", "length", "bond",
+					   "first_course", "origin", NULL};
+	static const char *const bonds[] = {"running", "stack", NULL};
+	static const char *const firsts[] = {"half", "full", NULL};
+	yaml_node_t *v[6];
+	struct wall *w = r->w;
+	struct wall_layout *l = &w->layout;
+	unsigned long long courses;
+	double size[2];
+
+	if (reader_map(r, n, "layout", keys, v))
+		return -1;
+	for (int i = 0; i < 3; i++)
+		if (!v[i])
+			return FAIL(r, n, "layout needs '%s'", keys[i]);
+	if (reader_pair(r, v[0], "layout block [width, height]", size))
+		return -1;
+	if (!(size[0] > 0) || !(size[1] > 0))
+		return FAIL(r, v[0], "layout block width and height must be > 0 (got [%g, %g])",
+			    size[0], size[1]);
+	l->block_w = size[0];
+	l->block_h = size[1];
+	if (reader_integer(r, v[1], "courses", 1, 1000000, &courses))
+		return -1;
+	l->courses = (int)courses;
+	if (reader_number_in(r, v[2], "length", 0, 1, INFINITY, &l->length))
+		return -1;
+	if (l->length < l->block_w / 2)
+		return FAIL(r, v[2], "length %g is shorter than half a block (%g)",
+			    l->length, l->block_w / 2);
+	l->bond = BOND_RUNNING;
+	if (v[3]) {
+		int b = reader_choice(r, v[3], "bond", bonds);
+		if (b < 0)
+			return -1;
+		l->bond = b == 0 ? BOND_RUNNING : BOND_STACK;
+	}
+	l->first_half = 1;
+	if (v[4]) {
+		int f = reader_choice(r, v[4], "first_course", firsts);
+		if (f < 0)
+			return -1;
+		l->first_half = f == 0;
+	}
+	l->x0 = 0;
+	l->y0 = w->has_ground ? w->ground_y : 0;
+	if (v[5]) {
+		double o[2];
+		if (reader_pair(r, v[5], "origin", o))
+			return -1;
+		l->x0 = o[0];
+		l->y0 = o[1];
+	}
+	l->present = 1;
+	if (layout_generate(w, mark_of(n), r->err) != SW_OK)
+		return -1;
+	return 0;
+}
+
+static int read_blocks(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"id", "vertices", NULL};
+	yaml_node_t *v[2];
+
+	if (reader_list(r, n, "blocks"))
+		return -1;
+	for (int i = 0; i < list_len(n); i++) {
+		yaml_node_t *b = reader_item(r, n, i);
+		const char *id = NULL;
+		double *xy;
+		int nv;
+		if (!b || reader_map(r, b, "a block", keys, v))
+			return -1;
+		if (v[0] && !(id = reader_string(r, v[0], "id")))
+			return -1;
+		if (!v[1])
+			return FAIL(r, b, "a block needs 'vertices'");
+		if (reader_polygon(r, v[1], "vertices", &xy, &nv))
+			return -1;
+		wall_add_block(r->w, id, xy, nv, 0, mark_of(b));
+		free(xy);
+	}
+	return 0;
+}
+
+/* Supports in two passes: the ground first (the layout stands on it),
+ * the fixed polygons after the free blocks. */
+static int read_supports(struct reader *r, yaml_node_t *n, int polygons)
+{
+	static const char *const keys[] = {"ground", "vertices", "id", NULL};
+	static const char *const gkeys[] = {"y", NULL};
+	yaml_node_t *v[3], *g[1];
+	struct wall *w = r->w;
+
+	if (reader_list(r, n, "supports"))
+		return -1;
+	for (int i = 0; i < list_len(n); i++) {
+		yaml_node_t *s = reader_item(r, n, i);
+		if (!s || reader_map(r, s, "a support", keys, v))
+			return -1;
+		if (!v[0] == !v[1])
+			return FAIL(r, s, "a support is either 'ground' or 'vertices'%s",
+				    v[0] ? ", not both" : "");
+		if (v[0] && v[2])
+			return FAIL(r, v[2], "'id' belongs to a 'vertices' support, not to 'ground'");
+		if (v[0] && !polygons) {
+			if (w->has_ground)
+				return FAIL(r, v[0], "there is already a ground support");
+			if (reader_map(r, v[0], "ground", gkeys, g))
+				return -1;
+			w->ground_y = 0;
+			if (g[0] && reader_number(r, g[0], "ground y",
+						  &w->ground_y))
+				return -1;
+			w->has_ground = 1;
+			w->ground_mark = mark_of(v[0]);
+		}
+		if (v[1] && polygons) {
+			const char *id = NULL;
+			double *xy;
+			int nv;
+			if (v[2] && !(id = reader_string(r, v[2], "id")))
+				return -1;
+			if (reader_polygon(r, v[1], "vertices", &xy, &nv))
+				return -1;
+			wall_add_block(w, id, xy, nv, 1, mark_of(s));
+			free(xy);
+		}
+	}
+	return 0;
+}
+
+static int read_direction(struct reader *r, yaml_node_t *n, double d[2])
+{
+	if (reader_pair(r, n, "direction", d))
+		return -1;
+	double len = hypot(d[0], d[1]);
+	if (!(len > 0) || !isfinite(len))
+		return FAIL(r, n, "direction must be a non-zero vector (got [%g, %g])",
+			    d[0], d[1]);
+	return 0;
+}
+
+static int read_loads(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"point", "body", NULL};
+	static const char *const pkeys[] = {"at", "direction", "magnitude",
+					    NULL};
+	static const char *const bkeys[] = {"direction", "magnitude", NULL};
+	yaml_node_t *v[2], *p[3];
+
+	if (reader_list(r, n, "loads"))
+		return -1;
+	for (int i = 0; i < list_len(n); i++) {
+		yaml_node_t *item = reader_item(r, n, i);
+		struct wall_load ld;
+		memset(&ld, 0, sizeof ld);
+		ld.block = -1;
+		ld.magnitude = 1;
+		if (!item || reader_map(r, item, "a load", keys, v))
+			return -1;
+		if (!v[0] == !v[1])
+			return FAIL(r, item, "a load is either 'point' or 'body'%s",
+				    v[0] ? ", not both" : "");
+		if (v[0]) {
+			ld.kind = LOAD_POINT;
+			if (reader_map(r, v[0], "a point load", pkeys, p))
+				return -1;
+			if (!p[0])
+				return FAIL(r, v[0], "a point load needs 'at'");
+			if (!p[1])
+				return FAIL(r, v[0], "a point load needs 'direction'");
+			if (reader_pair(r, p[0], "at", ld.at) ||
+			    read_direction(r, p[1], ld.dir))
+				return -1;
+			if (p[2] && reader_number_in(r, p[2], "magnitude", 0, 1,
+						     INFINITY, &ld.magnitude))
+				return -1;
+			ld.mark = mark_of(p[0]);
+		} else {
+			ld.kind = LOAD_BODY;
+			if (reader_map(r, v[1], "a body load", bkeys, p))
+				return -1;
+			if (!p[0])
+				return FAIL(r, v[1], "a body load needs 'direction'");
+			if (read_direction(r, p[0], ld.dir))
+				return -1;
+			if (p[1] && reader_number_in(r, p[1], "magnitude", 0, 1,
+						     INFINITY, &ld.magnitude))
+				return -1;
+			ld.mark = mark_of(p[0]);
+		}
+		wall_add_load(r->w, &ld);
+	}
+	return 0;
+}
+
+static int read_contacts(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"depth", "positions", NULL};
+	static const char *const pos[] = {"anywhere", "depth", NULL};
+	yaml_node_t *v[2];
+
+	if (reader_map(r, n, "contacts", keys, v))
+		return -1;
+	if (v[0] && reader_number_in(r, v[0], "depth", 0, 0, 0.5, &r->w->depth))
+		return -1;
+	if (v[1]) {
+		int p = reader_choice(r, v[1], "positions", pos);
+		if (p < 0)
+			return -1;
+		r->w->anywhere = p == 0;
+	}
+	return 0;
+}
+
+static int read_analysis(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"samples", "seed", NULL};
+	yaml_node_t *v[2];
+	unsigned long long x;
+
+	if (reader_map(r, n, "analysis", keys, v))
+		return -1;
+	if (v[0]) {
+		if (reader_integer(r, v[0], "samples", 1, INT_MAX, &x))
+			return -1;
+		r->w->samples = (int)x;
+	}
+	if (v[1]) {
+		if (reader_integer(r, v[1], "seed", 0, ULONG_MAX, &x))
+			return -1;
+		r->w->seed = (unsigned long)x;
+	}
+	return 0;
+}
+
+static int read_tests(struct reader *r, yaml_node_t *n)
+{
+	static const char *const keys[] = {"loads", NULL};
+	yaml_node_t *v[1];
+	struct wall *w = r->w;
+
+	if (reader_map(r, n, "tests", keys, v))
+		return -1;
+	if (!v[0])
+		return FAIL(r, n, "tests needs 'loads'");
+	if (reader_list(r, v[0], "tests loads"))
+		return -1;
+	int m = list_len(v[0]);
+	free(w->tests);
+	w->tests = sw_xmalloc(sizeof(double) * (size_t)(m + 1));
+	w->ntests = 0;
+	for (int i = 0; i < m; i++) {
+		yaml_node_t *c = reader_item(r, v[0], i);
+		if (!c || reader_number_in(r, c, "a test load", 0, 1, INFINITY,
+					   &w->tests[i]))
+			return -1;
+		w->ntests++;
+	}
+	return 0;
+}
+
+/* The top-level mapping: sections in the order the model needs them. */
+static int read_wall(struct reader *r, yaml_node_t *root)
+{
+	enum { NAME, MATERIAL, LAYOUT, BLOCKS, SUPPORTS, LOADS, CONTACTS,
+	       ANALYSIS, TESTS };
+	static const char *const keys[] = {"name", "material", "layout",
+					   "blocks", "supports", "loads",
+					   "contacts", "analysis", "tests",
+					   NULL};
+	yaml_node_t *v[9];
+	struct wall *w = r->w;
+
+	if (reader_map(r, root, "the top level", keys, v))
+		return -1;
+	if (v[NAME]) {
+		const char *s = reader_string(r, v[NAME], "name");
+		if (!s)
+			return -1;
+		w->name = sw_xstrdup(s);
+	}
+	if (v[MATERIAL] && read_material(r, v[MATERIAL]))
+		return -1;
+	if (v[SUPPORTS] && read_supports(r, v[SUPPORTS], 0))
+		return -1;
+	if (v[LAYOUT] && read_layout(r, v[LAYOUT]))
+		return -1;
+	if (v[BLOCKS] && read_blocks(r, v[BLOCKS]))
+		return -1;
+	if (v[SUPPORTS] && read_supports(r, v[SUPPORTS], 1))
+		return -1;
+	if (v[LOADS] && read_loads(r, v[LOADS]))
+		return -1;
+	if (v[CONTACTS] && read_contacts(r, v[CONTACTS]))
+		return -1;
+	if (v[ANALYSIS] && read_analysis(r, v[ANALYSIS]))
+		return -1;
+	if (v[TESTS] && read_tests(r, v[TESTS]))
+		return -1;
+
+	/* what the whole model needs, pointed at the file (wall_finish
+	 * checks the same, but has no place to point at) */
+	int nfree = 0, nfixed = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		nfree += !w->blocks[k].fixed;
+		nfixed += w->blocks[k].fixed;
+	}
+	if (nfree == 0)
+		return FAIL(r, v[BLOCKS] ? v[BLOCKS] : root,
+			    "the wall has no blocks (give a 'layout' or 'blocks')");
+	if (nfixed == 0 && !w->has_ground)
+		return FAIL(r, v[SUPPORTS] ? v[SUPPORTS] : root,
+			    "the wall has no support (add 'supports: [{ground: {y: 0}}]')");
+	if (w->nloads == 0)
+		return FAIL(r, v[LOADS] ? v[LOADS] : root,
+			    "the wall has no live load (add a 'loads' entry)");
+	return 0;
+}
+
+/* ------------------------------------------------------------------ entry */
+
+/* Pass 1: nesting depth and event count, before libyaml builds a
+ * document (see the top of the file). */
+static int wallfile_prescan(struct reader *r, const char *buf, size_t len)
+{
+	yaml_parser_t p;
+	yaml_event_t ev;
+	int depth = 0, rc = 0;
+	long events = 0;
+
+	yaml_parser_initialize(&p);
+	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
+	for (;;) {
+		if (!yaml_parser_parse(&p, &ev)) {
+			rc = reader_yaml_error(r, &p, buf, len);
+			break;
+		}
+		yaml_event_type_t t = ev.type;
+		if (t == YAML_SEQUENCE_START_EVENT ||
+		    t == YAML_MAPPING_START_EVENT) {
+			if (++depth > WALLFILE_MAX_DEPTH)
+				rc = reader_fail_at(r, ev.start_mark,
+						    "nested deeper than %d levels",
+						    WALLFILE_MAX_DEPTH);
+		} else if (t == YAML_SEQUENCE_END_EVENT ||
+			   t == YAML_MAPPING_END_EVENT) {
+			depth--;
+		}
+		if (++events > WALLFILE_MAX_NODES && !rc)
+			rc = reader_fail_at(r, ev.start_mark,
+					    "the document has more than %d nodes",
+					    WALLFILE_MAX_NODES);
+		yaml_event_delete(&ev);
+		if (rc || t == YAML_STREAM_END_EVENT)
+			break;
+	}
+	yaml_parser_delete(&p);
+	return rc;
+}
+
+enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
+			      struct wall **out, char *err)
+{
+	struct reader r;
+	yaml_parser_t p;
+	yaml_document_t extra;
+	int rc = 0;
+
+	*out = NULL;
+	memset(&r, 0, sizeof r);
+	r.name = name ? name : "<wall>";
+	r.err = err;
+	if (len > WALLFILE_MAX_BYTES)
+		return sw_fail(err, SW_EINPUT,
+			       "%s: file is larger than %u bytes", r.name,
+			       WALLFILE_MAX_BYTES);
+	if (wallfile_prescan(&r, buf, len))
+		return SW_EINPUT;
+
+	yaml_parser_initialize(&p);
+	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
+	if (!yaml_parser_load(&p, &r.doc)) {
+		reader_yaml_error(&r, &p, buf, len);
+		yaml_parser_delete(&p);
+		return SW_EINPUT;
+	}
+	yaml_node_t *root = yaml_document_get_root_node(&r.doc);
+	if (!root) {
+		sw_fail(err, SW_EINPUT, "%s:1:1: the file is empty", r.name);
+		rc = -1;
+		goto out;
+	}
+	/* a second document is a mistake, not something to ignore */
+	if (!yaml_parser_load(&p, &extra)) {
+		rc = reader_yaml_error(&r, &p, buf, len);
+		goto out;
+	}
+	yaml_node_t *root2 = yaml_document_get_root_node(&extra);
+	if (root2)
+		rc = FAIL(&r, root2, "a wall file holds one YAML document; here starts another");
+	yaml_document_delete(&extra);
+	if (rc)
+		goto out;
+
+	r.w = wall_new();
+	r.w->path = sw_xstrdup(r.name);
+	r.visits = 0;
+	if (!(root = reader_node(&r, 1)) || read_wall(&r, root) ||
+	    wall_finish(r.w, err) != SW_OK) {
+		rc = -1;
+		wall_free(r.w);
+		r.w = NULL;
+	}
+out:
+	yaml_document_delete(&r.doc);
+	yaml_parser_delete(&p);
+	if (rc)
+		return SW_EINPUT;
+	*out = r.w;
+	return SW_OK;
+}
+
+enum sw_status wallfile_load(const char *path, struct wall **out, char *err)
+{
+	*out = NULL;
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
+			       strerror(errno));
+	struct stat st;
+	if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) &&
+	    (unsigned long long)st.st_size > WALLFILE_MAX_BYTES) {
+		fclose(f);
+		return sw_fail(err, SW_EINPUT,
+			       "%s: file is larger than %u bytes", path,
+			       WALLFILE_MAX_BYTES);
+	}
+	/* read at most one byte more than allowed: works for pipes too */
+	size_t cap = 1 << 16, len = 0;
+	char *buf = sw_xmalloc(cap);
+	for (;;) {
+		if (len == cap) {
+			if (cap > WALLFILE_MAX_BYTES)
+				break;
+			cap *= 2;
+			buf = sw_xrealloc(buf, cap);
+		}
+		size_t got = fread(buf + len, 1, cap - len, f);
+		len += got;
+		if (got == 0)
+			break;
+	}
+	if (ferror(f)) {
+		int e = errno;
+		free(buf);
+		fclose(f);
+		return sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
+			       strerror(e));
+	}
+	fclose(f);
+	if (len > WALLFILE_MAX_BYTES) {
+		free(buf);
+		return sw_fail(err, SW_EINPUT,
+			       "%s: file is larger than %u bytes", path,
+			       WALLFILE_MAX_BYTES);
+	}
+	enum sw_status st2 = wallfile_parse(buf, len, path, out, err);
+	free(buf);
+	return st2;
+}
+
+/* ----------------------------------------------------------------- saving */
+
+/* A YAML double-quoted string. */
+static void save_string(FILE *f, const char *s)
+{
+	fputc('"', f);
+	for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+		if (*p == '"' || *p == '\\')
+			fprintf(f, "\\%c", *p);
+		else if (*p < 0x20 || *p == 0x7f)
+			fprintf(f, "\\x%02x", *p);
+		else
+			fputc(*p, f);
+	}
+	fputc('"', f);
+}
+
+static void save_polygon(FILE *f, const double *xy, int nv)
+{
+	fputc('[', f);
+	for (int i = 0; i < nv; i++)
+		fprintf(f, "%s[%.17g, %.17g]", i ? ", " : "", xy[2 * i],
+			xy[2 * i + 1]);
+	fputc(']', f);
+}
+
+static void save_wall(FILE *f, const struct wall *w)
+{
+	fputs("# slipwall wall file (docs/wall-format.md); written by slipwall\n",
+	      f);
+	if (w->name) {
+		fputs("name: ", f);
+		save_string(f, w->name);
+		fputc('\n', f);
+	}
+	fprintf(f, "material:\n");
+	fprintf(f, "  friction: {bed: %.17g, head: %.17g}\n", w->mu_bed,
+		w->mu_head);
+	fprintf(f, "  unit_weight: %.17g\n", w->unit_weight);
+	fprintf(f, "  thickness: %.17g\n", w->thickness);
+
+	int nfree = 0, nfixed = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		if (k == w->ground_block)
+			continue;
+		nfree += !w->blocks[k].fixed;
+		nfixed += w->blocks[k].fixed;
+	}
+	if (nfree) {
+		fprintf(f, "blocks:\n");
+		for (int k = 0; k < w->nblocks; k++) {
+			const struct wall_block *b = &w->blocks[k];
+			if (b->fixed)
+				continue;
+			fputs("  - {id: ", f);
+			save_string(f, b->id);
+			fputs(", vertices: ", f);
+			save_polygon(f, b->xy, b->nv);
+			fputs("}\n", f);
+		}
+	}
+	if (w->has_ground || nfixed) {
+		fprintf(f, "supports:\n");
+		if (w->has_ground)
+			fprintf(f, "  - ground: {y: %.17g}\n", w->ground_y);
+		for (int k = 0; k < w->nblocks; k++) {
+			const struct wall_block *b = &w->blocks[k];
+			if (!b->fixed || k == w->ground_block)
+				continue;
+			fputs("  - {id: ", f);
+			save_string(f, b->id);
+			fputs(", vertices: ", f);
+			save_polygon(f, b->xy, b->nv);
+			fputs("}\n", f);
+		}
+	}
+	if (w->nloads) {
+		fprintf(f, "loads:\n");
+		for (int l = 0; l < w->nloads; l++) {
+			const struct wall_load *ld = &w->loads[l];
+			if (ld->kind == LOAD_POINT)
+				fprintf(f, "  - point: {at: [%.17g, %.17g], direction: [%.17g, %.17g], magnitude: %.17g}\n",
+					ld->at[0], ld->at[1], ld->dir[0],
+					ld->dir[1], ld->magnitude);
+			else
+				fprintf(f, "  - body: {direction: [%.17g, %.17g], magnitude: %.17g}\n",
+					ld->dir[0], ld->dir[1], ld->magnitude);
+		}
+	}
+	fprintf(f, "contacts:\n");
+	fprintf(f, "  depth: %.17g\n", w->depth);
+	fprintf(f, "  positions: %s\n", w->anywhere ? "anywhere" : "depth");
+	fprintf(f, "analysis:\n");
+	fprintf(f, "  samples: %d\n", w->samples);
+	fprintf(f, "  seed: %lu\n", w->seed);
+	if (w->ntests) {
+		fprintf(f, "tests:\n  loads: [");
+		for (int i = 0; i < w->ntests; i++)
+			fprintf(f, "%s%.17g", i ? ", " : "", w->tests[i]);
+		fprintf(f, "]\n");
+	}
+}
+
+enum sw_status wallfile_save(const struct wall *w, const char *path,
+			     char *err)
+{
+	size_t n = strlen(path) + 5;
+	char *tmp = sw_xmalloc(n);
+	snprintf(tmp, n, "%s.tmp", path);
+
+	errno = 0;
+	FILE *f = fopen(tmp, "w");
+	if (!f) {
+		int e = errno;
+		sw_fail(err, SW_EIO, "%s: cannot write: %s", tmp, strerror(e));
+		free(tmp);
+		return SW_EIO;
+	}
+	save_wall(f, w);
+	int e = 0;
+	if (ferror(f) || fflush(f) != 0)
+		e = errno ? errno : EIO;
+	if (!e && fsync(fileno(f)) != 0)
+		e = errno;
+	if (fclose(f) != 0 && !e)
+		e = errno ? errno : EIO;
+	if (!e && rename(tmp, path) != 0)
+		e = errno;
+	if (e) {
+		unlink(tmp);
+		sw_fail(err, SW_EIO, "%s: cannot write: %s", path, strerror(e));
+		free(tmp);
+		return SW_EIO;
+	}
+	free(tmp);
+	return SW_OK;
+}

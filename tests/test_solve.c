@@ -1,0 +1,219 @@
+/*
+ * test_solve.c - the single-solution methods: closed forms for a block
+ * and a two-block stack (every method must agree where the collapse
+ * involves one joint), the published Ferris & Tin-Loi values, and the
+ * order global <= gilbert, global <= any sample at depth 0 on random
+ * small walls.
+ */
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "slipwall/lp.h"
+#include "slipwall/solve.h"
+#include "tap.h"
+#include "walls.h"
+
+static double run(const struct wall *w, enum solve_method m,
+		  struct solve_result *r)
+{
+	struct solve_opts o;
+	char err[SW_ERRLEN];
+	solve_opts_default(&o, m);
+	o.time_limit = 30;
+	if (solve_run(w, &o, r, err) != SW_OK) {
+		tap_diag("solve %s: %s", solve_method_name(m), err);
+		return NAN;
+	}
+	return r->lambda;
+}
+
+/* Two blocks, bottom b1 x h1 and top b2 x h2 (flush left), under a point
+ * load pushing +x on the left face at height a.  Candidate collapses:
+ *  load on the top block (a > h1):
+ *    top slides:          P = mu W2
+ *    top overturns:       P (a - h1) = W2 b2 / 2        about (b2, h1)
+ *    stack slides:        P = mu (W1 + W2)
+ *    stack overturns:     P a = W1 b1/2 + W2 (b1 - b2/2) about (b1, 0)
+ *  load on the bottom block (a < h1): the stack cases only.
+ * The collapse load is the least of them (each is a kinematically
+ * admissible single-joint mechanism, and the statically admissible field
+ * reaching it exists for these shapes). */
+struct stack {
+	double b1, h1, b2, h2, mu, a;
+	char top_joint, ground_joint;	/* expected states (ground, top) */
+};
+
+static void stacks(void)
+{
+	static const struct stack cases[] = {
+		/* top slides: wide, low top block, load on it */
+		{0.6, 0.2, 0.6, 0.2, 0.4, 0.3, JOINT_SLIDES, JOINT_CLOSED},
+		/* top overturns: tall slender top block */
+		{0.6, 0.2, 0.15, 0.6, 0.7, 0.75, JOINT_HINGES, JOINT_CLOSED},
+		/* stack slides: load on the bottom block */
+		{0.6, 0.2, 0.6, 0.4, 0.3, 0.1, JOINT_CLOSED, JOINT_SLIDES},
+		/* stack overturns: tall narrow stack, rough joints, load
+		 * near the top of the bottom block */
+		{0.2, 0.5, 0.2, 0.5, 0.9, 0.45, JOINT_CLOSED, JOINT_HINGES},
+	};
+	for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+		const struct stack *s = &cases[c];
+		struct wall *w = wall_new();
+		tw_rect(w, "bottom", 0, 0, s->b1, s->h1);
+		tw_rect(w, "top", 0, s->h1, s->b2, s->h2);
+		w->has_ground = 1;
+		w->mu_bed = w->mu_head = s->mu;
+		tw_point_load(w, 0, s->a, 1, 0);
+		tw_finish(w);
+		double W1 = w->blocks[0].weight, W2 = w->blocks[1].weight;
+		double want = fmin(s->mu * (W1 + W2),
+				   (W1 * s->b1 / 2 + W2 * (s->b1 - s->b2 / 2)) / s->a);
+		if (s->a > s->h1)
+			want = fmin(want, fmin(s->mu * W2,
+					       W2 * s->b2 / (2 * (s->a - s->h1))));
+		/* interface order: (bottom, top) then (bottom, ground) */
+		int kg = -1, kt = -1;
+		for (int k = 0; k < w->nifaces; k++) {
+			if (w->blocks[w->ifaces[k].b].fixed ||
+			    w->blocks[w->ifaces[k].a].fixed)
+				kg = k;
+			else
+				kt = k;
+		}
+		for (int m = 0; m < 3; m++) {
+			struct solve_result r;
+			double lam = run(w, (enum solve_method)m, &r);
+			tap_near(lam, want, 1e-9, "stack case");
+			tap_diag("case %zu %s: %.10g (want %.10g)", c,
+				 solve_method_name((enum solve_method)m), lam, want);
+			if (m != SOLVE_STANDARD && r.has_mechanism)
+				tap_ok(r.mech.joint[kt] == s->top_joint &&
+				       r.mech.joint[kg] == s->ground_joint,
+				       "case %zu %s mechanism: ground '%c' top '%c'",
+				       c, solve_method_name((enum solve_method)m),
+				       r.mech.joint[kg], r.mech.joint[kt]);
+			solve_result_free(&r);
+		}
+		wall_free(w);
+	}
+}
+
+static void published(void)
+{
+	struct solve_result r;
+	struct wall *w1 = tw_load_file("walls/ferris-tinloi-1.yaml");
+	struct wall *w2 = tw_load_file("walls/ferris-tinloi-2.yaml");
+	double s1 = run(w1, SOLVE_STANDARD, &r);
+	solve_result_free(&r);
+	double s2 = run(w2, SOLVE_STANDARD, &r);
+	solve_result_free(&r);
+	tap_ok(fabs(s1 - 0.6429) <= 1e-4, "wall 1 standard %.6f = 0.6429", s1);
+	tap_ok(fabs(s2 - 0.5800) <= 1e-4, "wall 2 standard %.6f = 0.5800", s2);
+	double g2 = run(w2, SOLVE_GILBERT, &r);
+	tap_ok(r.converged, "wall 2 gilbert converged in %d iterations",
+	       r.iterations);
+	tap_ok(g2 >= 0.555 && g2 <= 0.580,
+	       "wall 2 gilbert %.6f in [0.555, 0.580] (Gilbert et al. 2006)", g2);
+	solve_result_free(&r);
+	wall_free(w1);
+	wall_free(w2);
+}
+
+/* At depth 0 the global minimum is below gilbert and below every
+ * accepted sample's lambda_min (same contact points). */
+static void global_below(void)
+{
+	gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+	gsl_rng_set(g, 7);
+	int n = 0, bad = 0, unproven = 0;
+	struct sample_opts so;
+	sample_opts_default(&so);
+	for (int c = 0; c < 40; c++) {
+		double bw = 0.15 + 0.3 * gsl_rng_uniform(g);
+		double bh = bw * (0.25 + 0.75 * gsl_rng_uniform(g));
+		int courses = 1 + (int)gsl_rng_uniform_int(g, 3);
+		double mu = 0.3 + 0.6 * gsl_rng_uniform(g);
+		struct wall *w = tw_layout(bw, bh, courses, 2 * bw, 1, 1, mu);
+		if (gsl_rng_uniform(g) < 0.5)
+			tw_body_load(w);
+		else
+			tw_point_load(w, 0, courses * bh * (0.1 + 0.8 * gsl_rng_uniform(g)), 1, 0);
+		w->depth = 0;
+		tw_finish(w);
+		struct solve_result rg, rb;
+		double glob = run(w, SOLVE_GLOBAL, &rg);
+		double gil = run(w, SOLVE_GILBERT, &rb);
+		unproven += !rg.proven;
+		struct sample_ws *ws = sample_ws_new(w);
+		struct sample_result r;
+		sample_result_init(&r, w);
+		double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+		sample_positions(w, 3, (unsigned long)c, 0, xi);
+		sample_run(ws, xi, &so, &r);
+		double tol = 1e-6 * fmax(1, fabs(gil));
+		if (isfinite(glob) && isfinite(gil)) {
+			n++;
+			if (glob > gil + tol)
+				bad++, tap_diag("case %d: global %.9g > gilbert %.9g", c, glob, gil);
+			if (r.status == SAMPLE_ACCEPTED && glob > r.lambda_min + tol)
+				bad++, tap_diag("case %d: global %.9g > sample %.9g", c, glob, r.lambda_min);
+		}
+		free(xi);
+		sample_result_free(&r);
+		sample_ws_free(ws);
+		solve_result_free(&rg);
+		solve_result_free(&rb);
+		wall_free(w);
+	}
+	gsl_rng_free(g);
+	tap_ok(n >= 35, "global and gilbert solved on %d of 40 random walls", n);
+	tap_ok(unproven == 0, "global optimality proven on every wall (%d not)", unproven);
+	tap_ok(bad == 0, "global <= gilbert and <= the depth-0 sample (%d violations)", bad);
+}
+
+/* A wall that cannot carry a finite load, and one that cannot stand. */
+static void failures(void)
+{
+	char err[SW_ERRLEN];
+	struct solve_opts o;
+	struct solve_result r;
+	solve_opts_default(&o, SOLVE_STANDARD);
+	/* a block boxed in by a support on its right, pushed into it */
+	struct wall *w = wall_new();
+	tw_rect(w, "A", 0, 0, 0.4, 0.4);
+	double wall_xy[8] = {0.4, 0, 0.6, 0, 0.6, 0.4, 0.4, 0.4};
+	struct wall_mark mk = {0, 0};
+	wall_add_block(w, "abutment", wall_xy, 4, 1, mk);
+	w->has_ground = 1;
+	tw_point_load(w, 0, 0.1, 1, 0);
+	tw_finish(w);
+	enum sw_status st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && strstr(err, "unbounded"),
+	       "a load pushing into a support: %s", err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* a block overhanging the ground edge: its centroid is beyond the
+	 * only support, so no stress field carries its weight */
+	w = wall_new();
+	tw_rect(w, "base", 0, 0, 0.2, 0.2);
+	tw_rect(w, "cantilever", 0.1, 0.2, 0.6, 0.1);
+	w->has_ground = 1;
+	tw_point_load(w, 0.1, 0.25, 1, 0);
+	tw_finish(w);
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && strstr(err, "cannot stand"),
+	       "a wall that cannot stand under its own weight: %s", err);
+	solve_result_free(&r);
+	wall_free(w);
+}
+
+int main(void)
+{
+	stacks();
+	published();
+	global_below();
+	failures();
+	lp_thread_done();
+	return tap_done();
+}
