@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "slipwall/lp.h"
 #include "slipwall/status.h"
@@ -33,6 +34,14 @@ static _Thread_local jmp_buf tl_jump;
 static _Thread_local int tl_in_call;
 static _Thread_local char tl_message[256];
 static _Thread_local long tl_solves, tl_iterations;
+static _Thread_local double tl_seconds;
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 static _Thread_local double tl_gap;
 
 /* Branch-and-cut callback: remember the gap between the incumbent and
@@ -223,6 +232,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 		return LP_ERROR;
 	}
 	tl_in_call = 1;
+	double t0 = now();
 	int it0 = glp_get_it_cnt(p->P);
 	int rc = glp_simplex(p->P, &parm);
 	if (rc == GLP_EBADB || rc == GLP_ESING || rc == GLP_ECOND ||
@@ -232,6 +242,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 		rc = glp_simplex(p->P, &parm);
 	}
 	tl_in_call = 0;
+	tl_seconds += now() - t0;
 	p->last_iters = glp_get_it_cnt(p->P) - it0;
 	tl_solves++;
 	tl_iterations += p->last_iters;
@@ -311,6 +322,11 @@ void lp_thread_counters(long *solves, long *iterations)
 {
 	*solves = tl_solves;
 	*iterations = tl_iterations;
+}
+
+double lp_thread_seconds(void)
+{
+	return tl_seconds;
 }
 
 void lp_thread_done(void)

@@ -1,27 +1,33 @@
 /*
  * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
  *
- * Three GLPK problems per wall and thread, built once and warm-started
- * (presolve off) for every LP of every sample; only what depends on the
- * contact points (the moment coefficients of the normal-force columns and
- * of the opening-rate rows) is rewritten per sample.  All quantities are
- * in the scaled units of statics.h; results are converted at the end.
+ * Five GLPK problems per wall and thread, one per LP role, built once and
+ * warm-started (presolve off) for every LP of every sample.  Between two
+ * solves of one role only bounds change, so GLPK keeps its basis and its
+ * factorisation; only what depends on the contact points (the moment
+ * coefficients of the normal-force columns and of the opening-rate rows)
+ * is rewritten per sample.  All quantities are in the scaled units of
+ * statics.h; results are converted at the end.
  *
- *   assoc  rows: equilibrium (3 per free block) | 2 friction rows per
- *                interface: T - mu (Na + Nb) <= 0, -T - mu (Na + Nb) <= 0
- *          cols: Na, Nb, T per interface | lambda
- *          LP-max (max lambda) and LP-min (min lambda >= 0 with the
- *          mechanism's yield conditions held at their limits).
- *   slp    rows: equilibrium | 1 closeness row per interface:
- *                Na + Nb - p + q = c
- *          cols: Na, Nb, T | lambda | p, q per interface
- *          LP1: max lambda with |T| <= mu c (column bounds: a fixed
- *          capacity, no dilatancy).  LP2: min sum (p + q) with lambda held
- *          at LP1's optimum - the optimal stress field closest in L1 to c.
- *   kin    rows: one per column of A (opening rates at q_a, q_b, slip
- *                rate) | f_L . v = 1
- *          cols: block velocities | s+, s- per interface (slip = s+ - s-)
- *          min sum of opening rates + sum |slip|: the least joint motion.
+ *   amax, amin, stand  rows: equilibrium (3 per free block) | 2 friction rows
+ *               per interface: T - mu (Na + Nb) <= 0, -T - mu (Na + Nb) <= 0
+ *               cols: Na, Nb, T per interface | lambda
+ *               amax: LP-max (max lambda).  amin: min lambda >= 0
+ *               with the mechanism's yield conditions held at their
+ *               limits (LP-min).  stand: the same with lambda = 0 and no
+ *               objective: can the wall stand under its own weight?
+ *   lp1, lp2    rows: equilibrium | lp2 only: 1 closeness row per
+ *               interface, Na + Nb - p + q = c
+ *               cols: Na, Nb, T | lambda | lp2 only: p, q per interface
+ *               lp1: max lambda with |T| <= mu c (column bounds: a fixed
+ *               capacity, no dilatancy).  lp2: min sum (p + q) with lambda
+ *               held at lp1's optimum - the optimal stress field closest
+ *               in L1 to c.
+ *   kin         rows: one per column of A (opening rates at q_a, q_b,
+ *               slip rate) | f_L . v = 1
+ *               cols: block velocities | s+, s- per interface (slip =
+ *               s+ - s-); min sum of opening rates + sum |slip|: the
+ *               least joint motion.
  *
  * Tolerances (scaled units, mean block weight = 1): a normal force counts
  * as positive above TOL_FORCE; a joint rate counts as motion above
@@ -105,7 +111,11 @@ struct sample_ws {
 	const struct wall *w;
 	struct statics st;
 	int m, R;		/* interfaces, equilibrium rows */
-	struct lp *assoc, *slp, *kin;
+	/* one GLPK problem per LP role, so that between two solves of a
+	 * role only bounds change and GLPK keeps its factorisation:
+	 * amax (LP-max), stand (standing check), amin (LP-min), lp1, lp2 (the SLP),
+	 * kin (the onset check) */
+	struct lp *amax, *amin, *stand, *lp1, *lp2, *kin;
 	double *c;		/* m: SLP capacities (sum of normal forces) */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */
@@ -113,8 +123,6 @@ struct sample_ws {
 	int *ind;		/* scratch */
 	double *val;
 	gsl_rng *rng;
-	/* the basis each LP role last ended at: LP-max, LP1, kin */
-	struct lp_basis b_max, b_lp1, b_lp2;
 };
 
 /* Column indices. */
@@ -124,7 +132,7 @@ struct sample_ws {
 #define KCOL_SP(ws, k) ((ws)->R + (k))
 #define KCOL_SM(ws, k) ((ws)->R + (ws)->m + (k))
 
-/* Write column j of A into the assoc and slp problems (with the extra
+/* Write column j of A into the associative and SLP problems (with the extra
  * rows each has) and row j into the kinematic problem. */
 static void put_column(struct sample_ws *ws, int j)
 {
@@ -148,7 +156,7 @@ static void put_column(struct sample_ws *ws, int j)
 	}
 	lp_set_row(ws->kin, j, kn, kcols, kvals);
 
-	/* assoc: friction rows */
+	/* amax, amin: friction rows */
 	int an = n;
 	if (kind == 2) {
 		rows[an] = ws->R + 2 * k;
@@ -161,7 +169,9 @@ static void put_column(struct sample_ws *ws, int j)
 		rows[an] = ws->R + 2 * k + 1;
 		vals[an++] = -mu;
 	}
-	lp_set_col(ws->assoc, j, an, rows, vals);
+	lp_set_col(ws->amax, j, an, rows, vals);
+	lp_set_col(ws->amin, j, an, rows, vals);
+	lp_set_col(ws->stand, j, an, rows, vals);
 
 	/* slp: closeness row for normal forces */
 	int sn = n;
@@ -169,7 +179,8 @@ static void put_column(struct sample_ws *ws, int j)
 		rows[sn] = ws->R + k;
 		vals[sn++] = 1;
 	}
-	lp_set_col(ws->slp, j, sn, rows, vals);
+	lp_set_col(ws->lp1, j, n, rows, vals);	/* no closeness row */
+	lp_set_col(ws->lp2, j, sn, rows, vals);
 }
 
 /* The objective of the kinematic LP on the velocities: the sum of the
@@ -191,48 +202,99 @@ static void put_kin_objective(struct sample_ws *ws)
 		lp_set_obj(ws->kin, i, g[i]);
 }
 
+/* The rows, bounds and fixed columns of an associative problem (amax,
+ * amin) or an SLP problem (lp1, lp2); the point-dependent columns are
+ * written by put_column(). */
+static void build_assoc(struct sample_ws *ws, struct lp *P)
+{
+	int m = ws->m, R = ws->R;
+	for (int i = 0; i < R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int r = 0; r < 2 * m; r++)
+		lp_set_row_bounds(P, R + r, -HUGE_VAL, 0);
+	for (int j = 0; j < 3 * m; j++)
+		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+}
+
+/* LP1 needs no closeness rows: without their free p, q columns its
+ * optimum can be recognised as unique, and LP2 skipped. */
+static void build_lp1(struct sample_ws *ws, struct lp *P)
+{
+	for (int i = 0; i < ws->R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int j = 0; j < 3 * ws->m; j++)
+		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+}
+
+static void build_slp(struct sample_ws *ws, struct lp *P)
+{
+	int m = ws->m, R = ws->R;
+	for (int i = 0; i < R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int j = 0; j < 3 * m; j++)
+		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+	for (int k = 0; k < m; k++) {
+		int row = R + k;
+		double one = 1, mone = -1;
+		lp_set_col(P, COL_P(ws, k), 1, &row, &mone);
+		lp_set_col(P, COL_Q(ws, k), 1, &row, &one);
+		lp_set_col_bounds(P, COL_P(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(P, COL_Q(ws, k), 0, HUGE_VAL);
+	}
+}
+
 static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	ws->assoc = lp_new(R + 2 * m, 3 * m + 1);
-	ws->slp = lp_new(R + m, 3 * m + 1 + 2 * m);
+	ws->amax = lp_new(R + 2 * m, 3 * m + 1);
+	ws->amin = lp_new(R + 2 * m, 3 * m + 1);
+	ws->stand = lp_new(R + 2 * m, 3 * m + 1);
+	ws->lp1 = lp_new(R, 3 * m + 1);
+	ws->lp2 = lp_new(R + m, 3 * m + 1 + 2 * m);
 	ws->kin = lp_new(3 * m + 1, R + 2 * m);
-
-	for (int i = 0; i < R; i++) {
-		lp_set_row_bounds(ws->assoc, i, -ws->st.fD[i], -ws->st.fD[i]);
-		lp_set_row_bounds(ws->slp, i, -ws->st.fD[i], -ws->st.fD[i]);
-	}
-	for (int r = 0; r < 2 * m; r++)
-		lp_set_row_bounds(ws->assoc, R + r, -HUGE_VAL, 0);
-	for (int j = 0; j < 3 * m; j++) {
-		double lo = j % 3 == 2 ? -HUGE_VAL : 0;
-		lp_set_col_bounds(ws->assoc, j, lo, HUGE_VAL);
-		lp_set_col_bounds(ws->slp, j, lo, HUGE_VAL);
+	build_assoc(ws, ws->amax);
+	build_assoc(ws, ws->amin);
+	build_assoc(ws, ws->stand);
+	build_lp1(ws, ws->lp1);
+	build_slp(ws, ws->lp2);
+	for (int j = 0; j < 3 * m; j++)
 		put_column(ws, j);
-	}
-	/* lambda */
+
+	/* lambda: the live load */
 	int nl = 0;
 	for (int i = 0; i < R; i++)
 		if (ws->st.fL[i] != 0) {
 			ws->ind[nl] = i;
 			ws->val[nl++] = ws->st.fL[i];
 		}
-	lp_set_col(ws->assoc, COL_LAMBDA(ws), nl, ws->ind, ws->val);
-	lp_set_col(ws->slp, COL_LAMBDA(ws), nl, ws->ind, ws->val);
-	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-	lp_set_col_bounds(ws->slp, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	struct lp *all[5] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2};
+	for (int p = 0; p < 5; p++)
+		lp_set_col(all[p], COL_LAMBDA(ws), nl, ws->ind, ws->val);
+	/* the objectives never change: max lambda (free) for LP-max and
+	 * LP1, min lambda >= 0 for the standing check and LP-min, min
+	 * sum (p + q) for LP2 (its lambda bound is set per iteration) */
+	lp_set_col_bounds(ws->amax, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->amax, COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->amax, 1);
+	lp_set_col_bounds(ws->amin, COL_LAMBDA(ws), 0, HUGE_VAL);
+	lp_set_obj(ws->amin, COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->amin, 0);
+	/* standing: is there an admissible field at lambda = 0?  No
+	 * objective: the simplex stops at the first feasible basis (a
+	 * minimum over the degenerate face costs hundreds of pivots) */
+	lp_set_col_bounds(ws->stand, COL_LAMBDA(ws), 0, 0);
+	lp_set_col_bounds(ws->lp1, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->lp1, COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp1, 1);
+	for (int k = 0; k < m; k++) {
+		lp_set_obj(ws->lp2, COL_P(ws, k), 1);
+		lp_set_obj(ws->lp2, COL_Q(ws, k), 1);
+	}
+	lp_set_maximize(ws->lp2, 0);
+
 	/* kin normalisation row: f_L . v = 1 */
 	lp_set_row(ws->kin, 3 * m, nl, ws->ind, ws->val);
 	lp_set_row_bounds(ws->kin, 3 * m, 1, 1);
-	/* slp: p, q */
-	for (int k = 0; k < m; k++) {
-		int row = R + k;
-		double one = 1, mone = -1;
-		lp_set_col(ws->slp, COL_P(ws, k), 1, &row, &mone);
-		lp_set_col(ws->slp, COL_Q(ws, k), 1, &row, &one);
-		lp_set_col_bounds(ws->slp, COL_P(ws, k), 0, HUGE_VAL);
-		lp_set_col_bounds(ws->slp, COL_Q(ws, k), 0, HUGE_VAL);
-	}
 	/* kin: velocities free, slips >= 0, slip rows = 0 */
 	for (int i = 0; i < R; i++)
 		lp_set_col_bounds(ws->kin, i, -HUGE_VAL, HUGE_VAL);
@@ -271,8 +333,11 @@ void sample_ws_free(struct sample_ws *ws)
 {
 	if (!ws)
 		return;
-	lp_free(ws->assoc);
-	lp_free(ws->slp);
+	lp_free(ws->amax);
+	lp_free(ws->amin);
+	lp_free(ws->stand);
+	lp_free(ws->lp1);
+	lp_free(ws->lp2);
 	lp_free(ws->kin);
 	statics_free(&ws->st);
 	free(ws->c);
@@ -283,17 +348,17 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->ind);
 	free(ws->val);
 	gsl_rng_free(ws->rng);
-	lp_basis_free(&ws->b_max);
-	lp_basis_free(&ws->b_lp1);
-	lp_basis_free(&ws->b_lp2);
 	free(ws);
 }
 
 /* After a GLPK error the problems are dead: build them again. */
 static void rebuild(struct sample_ws *ws)
 {
-	lp_free(ws->assoc);
-	lp_free(ws->slp);
+	lp_free(ws->amax);
+	lp_free(ws->amin);
+	lp_free(ws->stand);
+	lp_free(ws->lp1);
+	lp_free(ws->lp2);
 	lp_free(ws->kin);
 	build(ws);
 }
@@ -341,20 +406,16 @@ static void set_points(struct sample_ws *ws, const double *xi)
 	put_kin_objective(ws);
 }
 
-/* Restore the assoc problem to plain LP-max form. */
-static void assoc_reset(struct sample_ws *ws)
+/* Release LP-min's fixings in amin: back to the plain associative
+ * yield conditions. */
+static void amin_reset(struct sample_ws *ws)
 {
 	for (int k = 0; k < ws->m; k++) {
-		lp_set_col_bounds(ws->assoc, 3 * k, 0, HUGE_VAL);
-		lp_set_col_bounds(ws->assoc, 3 * k + 1, 0, HUGE_VAL);
-		lp_set_row_bounds(ws->assoc, ws->R + 2 * k, -HUGE_VAL, 0);
-		lp_set_row_bounds(ws->assoc, ws->R + 2 * k + 1, -HUGE_VAL, 0);
+		lp_set_col_bounds(ws->amin, 3 * k, 0, HUGE_VAL);
+		lp_set_col_bounds(ws->amin, 3 * k + 1, 0, HUGE_VAL);
+		lp_set_row_bounds(ws->amin, ws->R + 2 * k, -HUGE_VAL, 0);
+		lp_set_row_bounds(ws->amin, ws->R + 2 * k + 1, -HUGE_VAL, 0);
 	}
-	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-	for (int j = 0; j < 3 * ws->m; j++)
-		lp_set_obj(ws->assoc, j, 0);
-	lp_set_obj(ws->assoc, COL_LAMBDA(ws), 1);
-	lp_set_maximize(ws->assoc, 1);
 }
 
 static enum sample_status lp_to_sample(enum lp_status s)
@@ -381,26 +442,20 @@ static enum lp_status solve(struct sample_ws *ws, struct lp *p,
 /* Step 2a: LP-max, and can the wall stand at lambda = 0? */
 static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 {
-	assoc_reset(ws);
-	lp_basis_load(ws->assoc, &ws->b_max);
-	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
+	enum lp_status s = solve(ws, ws->amax, LP_DUAL, r);
 	if (s != LP_OPTIMAL)
 		return lp_to_sample(s);
-	lp_basis_save(ws->assoc, &ws->b_max);
-	double lam = lp_obj(ws->assoc);
+	double lam = lp_obj(ws->amax);
 	r->lambda_lpmax = lam;
 	if (!(lam > TOL_FORCE))
 		return SAMPLE_NONPOSITIVE;
 	for (int k = 0; k < ws->m; k++)
-		ws->c[k] = lp_col(ws->assoc, 3 * k) + lp_col(ws->assoc, 3 * k + 1);
-	/* The feasible load factors form an interval [lo, lam]; the wall
-	 * stands under its own weight iff lo <= 0. */
-	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), 0, HUGE_VAL);
-	lp_set_maximize(ws->assoc, 0);
-	s = solve(ws, ws->assoc, LP_PRIMAL, r);
+		ws->c[k] = lp_col(ws->amax, 3 * k) + lp_col(ws->amax, 3 * k + 1);
+	/* the wall must stand under its own weight on these points */
+	s = solve(ws, ws->stand, LP_PRIMAL, r);
 	if (s == LP_ERROR || s == LP_FAILED)
 		return SAMPLE_NUMERICAL;
-	if (s != LP_OPTIMAL || lp_obj(ws->assoc) > 1e-7 * lam)
+	if (s != LP_OPTIMAL)
 		return SAMPLE_UNSTABLE;
 	return SAMPLE_ACCEPTED;
 }
@@ -413,26 +468,15 @@ static enum sample_status slp(struct sample_ws *ws,
 {
 	int m = ws->m;
 	double lam_prev = NAN;
-	struct lp *P = ws->slp;
+	struct lp *P = ws->lp1, *Q = ws->lp2;
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
 		for (int k = 0; k < m; k++) {
 			double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
 			lp_set_col_bounds(P, 3 * k + 2, -cap, cap);
-			lp_set_row_bounds(P, ws->R + k, ws->c[k], ws->c[k]);
 		}
-		/* LP1: the maximum load with fixed capacities */
-		for (int k = 0; k < m; k++) {
-			lp_set_obj(P, COL_P(ws, k), 0);
-			lp_set_obj(P, COL_Q(ws, k), 0);
-		}
-		lp_set_obj(P, COL_LAMBDA(ws), 1);
-		lp_set_maximize(P, 1);
-		lp_set_col_bounds(P, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-		/* from LP1's last basis: only bounds changed, so it is still
-		 * dual feasible and the dual simplex needs a few pivots */
-		if (it > 1)
-			lp_basis_load(P, &ws->b_lp1);
+		/* LP1: the maximum load with fixed capacities (only bounds
+		 * changed since the last LP1: a few dual simplex pivots) */
 		enum lp_status s = solve(ws, P, LP_DUAL, r);
 		if (s == LP_UNBOUNDED)
 			return SAMPLE_UNBOUNDED;
@@ -441,37 +485,33 @@ static enum sample_status slp(struct sample_ws *ws,
 		if (s != LP_OPTIMAL)
 			return SAMPLE_NUMERICAL;
 		double lam = lp_obj(P);
-		lp_basis_save(P, &ws->b_lp1);
+		struct lp *X = P;	/* where the stress field is read */
 		/* LP2: of the optimal stress fields, the one whose normal
 		 * forces are closest (L1) to c; skipped when LP1's optimum
 		 * is already unique */
 		if (o->stabilise && !lp_unique(P, 1e-12)) {
 			for (int k = 0; k < m; k++) {
-				lp_set_obj(P, COL_P(ws, k), 1);
-				lp_set_obj(P, COL_Q(ws, k), 1);
+				double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+				lp_set_col_bounds(Q, 3 * k + 2, -cap, cap);
+				lp_set_row_bounds(Q, ws->R + k, ws->c[k], ws->c[k]);
 			}
-			lp_set_obj(P, COL_LAMBDA(ws), 0);
-			lp_set_maximize(P, 0);
-			/* exactly lam: the result must be optimal for LP1,
-			 * or its small forces are not complementary to
-			 * LP1's mechanisms */
-			lp_set_col_bounds(P, COL_LAMBDA(ws), lam, HUGE_VAL);
-			/* LP1's basis is primal feasible here, but the primal
-			 * simplex walks the degenerate optimal face for
-			 * hundreds of pivots; LP2's own last basis differs
-			 * only in bounds, so it is dual feasible */
-			int have = ws->b_lp2.n > 0 && it > 1;
-			if (have)
-				lp_basis_load(P, &ws->b_lp2);
-			s = solve(ws, P, have ? LP_DUAL : LP_PRIMAL, r);
+			/* lambda held at exactly LP1's optimum: the result must
+			 * be optimal for LP1, or its small forces are not
+			 * complementary to LP1's mechanisms.  Only bounds
+			 * change between two LP2s, so the dual simplex from
+			 * LP2's own last basis is short (the primal simplex
+			 * from LP1's optimum walks a degenerate face for
+			 * hundreds of pivots). */
+			lp_set_col_bounds(Q, COL_LAMBDA(ws), lam, HUGE_VAL);
+			s = solve(ws, Q, LP_DUAL, r);
 			if (s != LP_OPTIMAL)
 				return SAMPLE_NUMERICAL;
-			lp_basis_save(P, &ws->b_lp2);
-			lam = lp_col(P, COL_LAMBDA(ws));
+			lam = lp_col(Q, COL_LAMBDA(ws));
+			X = Q;
 		}
 		double diff = 0;
 		for (int j = 0; j < 3 * m; j++)
-			ws->x[j] = lp_col(P, j);
+			ws->x[j] = lp_col(X, j);
 		for (int k = 0; k < m; k++) {
 			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
 			diff = fmax(diff, fabs(nk - ws->c[k]));
@@ -555,24 +595,23 @@ static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
 {
 	int m = ws->m;
 	double thr = TOL_MOTION * motion_scale(ws);
-	assoc_reset(ws);
+	struct lp *P = ws->amin;
+	amin_reset(ws);
 	for (int k = 0; k < m; k++) {
 		for (int e = 0; e < 2; e++)
 			if (ws->dn[2 * k + e] > thr)
-				lp_set_col_bounds(ws->assoc, 3 * k + e, 0, 0);
+				lp_set_col_bounds(P, 3 * k + e, 0, 0);
 		if (ws->dt[k] > thr)	/* T = -mu (Na + Nb) */
-			lp_set_row_bounds(ws->assoc, ws->R + 2 * k + 1, 0, 0);
+			lp_set_row_bounds(P, ws->R + 2 * k + 1, 0, 0);
 		else if (ws->dt[k] < -thr)	/* T = +mu (Na + Nb) */
-			lp_set_row_bounds(ws->assoc, ws->R + 2 * k, 0, 0);
+			lp_set_row_bounds(P, ws->R + 2 * k, 0, 0);
 	}
-	lp_set_maximize(ws->assoc, 0);
-	lp_set_col_bounds(ws->assoc, COL_LAMBDA(ws), 0, HUGE_VAL);
-	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
+	enum lp_status s = solve(ws, P, LP_DUAL, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
-	r->lambda_min = lp_obj(ws->assoc);
+	r->lambda_min = lp_obj(P);
 	for (int j = 0; j < 3 * m; j++)
-		ws->x[j] = lp_col(ws->assoc, j);
+		ws->x[j] = lp_col(P, j);
 	return SAMPLE_ACCEPTED;
 }
 
@@ -694,25 +733,19 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 		r->lambda_lpmax *= ws->st.S;
 		return st;
 	}
-	/* back to the LP-max optimum (its saved basis: no pivots) for the
-	 * mechanism: the duals of the equilibrium rows, scaled so that
-	 * f_L . v = 1 */
-	assoc_reset(ws);
-	lp_basis_load(ws->assoc, &ws->b_max);
-	enum lp_status s = solve(ws, ws->assoc, LP_DUAL, r);
-	if (s != LP_OPTIMAL)
-		return r->status = SAMPLE_NUMERICAL;
-	double lam = lp_obj(ws->assoc), fl = 0;
+	/* the mechanism: the duals of LP-max's equilibrium rows (amax still
+	 * holds its optimum), scaled so that f_L . v = 1 */
+	double lam = lp_obj(ws->amax), fl = 0;
 	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
 	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
 	for (int i = 0; i < ws->R; i++) {
-		v[i] = lp_row_dual(ws->assoc, i);
+		v[i] = lp_row_dual(ws->amax, i);
 		fl += ws->st.fL[i] * v[i];
 	}
 	for (int i = 0; i < ws->R && fl != 0; i++)
 		v[i] /= fl;
 	for (int j = 0; j < 3 * ws->m; j++)
-		x[j] = lp_col(ws->assoc, j);
+		x[j] = lp_col(ws->amax, j);
 	sample_export(ws, v, x, r);
 	free(v);
 	free(x);

@@ -76,6 +76,9 @@ int lp_last_iterations(const struct lp *p);
 
 /* Counters of this thread: solves and simplex iterations since start. */
 void lp_thread_counters(long *solves, long *iterations);
+/* Seconds this thread spent inside lp_solve (GLPK's simplex), by the
+ * monotonic clock, since start (for the benchmark). */
+double lp_thread_seconds(void);
 void lp_thread_done(void);
 const char *lp_last_message(void);
 
