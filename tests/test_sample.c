@@ -8,6 +8,7 @@
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "slipwall/lp.h"
 #include "slipwall/sample.h"
@@ -164,6 +165,44 @@ static void positions(void)
 	wall_free(w);
 }
 
+/* A sample is a function of the wall and its positions alone: the same
+ * positions give bit-identical results after other samples, and on a
+ * fresh workspace (so thread counts and replays cannot change results). */
+static void history_free(void)
+{
+	struct wall *w = tw_load_file("walls/demo.yaml");
+	size_t n = 2 * (size_t)w->nifaces;
+	double *a = malloc(sizeof(double) * n), *b = malloc(sizeof(double) * n);
+	sample_positions(w, 1, 5, -1, a);
+	sample_positions(w, 1, 6, -1, b);
+	struct sample_opts o;
+	sample_opts_default(&o);
+	struct sample_ws *ws = sample_ws_new(w), *fresh = sample_ws_new(w);
+	struct sample_result r1, r2, r3;
+	sample_result_init(&r1, w);
+	sample_result_init(&r2, w);
+	sample_result_init(&r3, w);
+	sample_run(ws, a, &o, &r1);
+	for (int i = 0; i < 5; i++)
+		sample_run(ws, b, &o, &r2);
+	sample_run(ws, a, &o, &r2);
+	sample_run(fresh, a, &o, &r3);
+	tap_ok(r1.status == r2.status && r1.lambda_min == r2.lambda_min &&
+	       r1.lambda_max == r2.lambda_max && !strcmp(r1.joint, r2.joint),
+	       "same positions after other samples: identical (%.17g, %.17g)",
+	       r1.lambda_min, r2.lambda_min);
+	tap_ok(r1.lambda_min == r3.lambda_min && !strcmp(r1.joint, r3.joint),
+	       "same positions on a fresh workspace: identical");
+	sample_result_free(&r1);
+	sample_result_free(&r2);
+	sample_result_free(&r3);
+	sample_ws_free(ws);
+	sample_ws_free(fresh);
+	free(a);
+	free(b);
+	wall_free(w);
+}
+
 /* Every accepted sample on 200 random small walls. */
 static void properties(void)
 {
@@ -248,6 +287,7 @@ int main(void)
 	closed_forms();
 	ferris_tinloi();
 	positions();
+	history_free();
 	acceptance();
 	properties();
 	lp_thread_done();
