@@ -438,6 +438,9 @@ void sample_positions(const struct wall *w, unsigned long seed,
  * then carry every LP of the SLP from one iteration to the next. */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
+	/* fresh GLPK problems: GLPK's factorisation storage keeps history
+	 * that shows in the last digit of a solution */
+	rebuild(ws);
 	struct lp *all[6] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2,
 			     ws->kin};
 	for (int p = 0; p < 6; p++) {
