@@ -208,8 +208,54 @@ static void failures(void)
 	wall_free(w);
 }
 
+/* Units must not matter: Ferris & Tin-Loi wall 1 built at 1e-3 and 1e3
+ * times its size has the same load factors (body load); a block pushed
+ * at a point collapses at a load that scales exactly as its weight. */
+static void scale(void)
+{
+	double ref[2] = {NAN, NAN};
+	const double f[3] = {1, 1e-3, 1e3};
+	for (int i = 0; i < 3; i++) {
+		struct wall *w = tw_layout(0.4 * f[i], 0.175 * f[i], 6, 2.0 * f[i],
+					   1, 1, 0.65);
+		tw_body_load(w);
+		tw_finish(w);
+		struct solve_result r;
+		double s = run(w, SOLVE_STANDARD, &r);
+		solve_result_free(&r);
+		double g = run(w, SOLVE_GILBERT, &r);
+		solve_result_free(&r);
+		if (i == 0) {
+			ref[0] = s;
+			ref[1] = g;
+			wall_free(w);
+			continue;
+		}
+		tap_near(s, ref[0], 1e-6, "standard load factor at scale 1e-3 / 1e3");
+		tap_near(g, ref[1], 1e-6, "gilbert load factor at scale 1e-3 / 1e3");
+		wall_free(w);
+	}
+	double ratio = NAN;
+	for (int i = 0; i < 3; i++) {
+		struct wall *w = wall_new();
+		tw_rect(w, "A", 0, 0, 0.4 * f[i], 0.8 * f[i]);
+		w->has_ground = 1;
+		tw_point_load(w, 0, 0.6 * f[i], 1, 0);
+		tw_finish(w);
+		struct solve_result r;
+		double p = run(w, SOLVE_GILBERT, &r) / w->total_weight;
+		solve_result_free(&r);
+		if (i == 0)
+			ratio = p;
+		else
+			tap_near(p, ratio, 1e-9, "point load / weight independent of the scale");
+		wall_free(w);
+	}
+}
+
 int main(void)
 {
+	scale();
 	stacks();
 	published();
 	global_below();
