@@ -4,7 +4,7 @@
 # not done yet.
 set -e
 cd "$(dirname "$0")/.."
-pkgs="build-essential meson ninja-build pkg-config libglpk-dev libgsl-dev libyaml-dev libncurses-dev tmux python3 valgrind"
+pkgs="build-essential meson ninja-build pkg-config libglpk-dev libgsl-dev libyaml-dev libncurses-dev libcairo2-dev tmux python3 valgrind"
 missing=""
 for p in $pkgs; do
 	dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -1,19 +1,499 @@
 /*
- * cmd_report.c - `slipwall report`: figures and a summary of a run.
+ * cmd_report.c - `slipwall report`: the paper's figures and a summary of
+ * a run, written into a directory (docs/report.md is the user's page).
  *
- * Not built yet (issue "Figures and reports"): the command says so and
- * exits with status 2, rather than pretending.
+ * The model's loads come from a fresh Monte Carlo run (mc.c, like `run`)
+ * or from a samples file of `run --samples`.  A samples file keeps the
+ * loads and the contact positions but not the mechanisms, so for Fig. 6
+ * the file's positions are replayed through the pool (`run --positions`
+ * does the same); the figures use the file's loads, and the summary says
+ * whether the replay reproduced them.  The experimental loads come from
+ * --tests FILE (one per line, '#' comments) or the wall's `tests:` key.
+ * The single-solution values of Fig. 10 are computed here on this thread
+ * (solve_run): standard and gilbert always, global only for walls of at
+ * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
+ * Then report_write() (report.c) draws everything.
  */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
+#include "slipwall/lp.h"
+#include "slipwall/mc.h"
+#include "slipwall/report.h"
+#include "slipwall/runlog.h"
+#include "slipwall/solve.h"
+#include "slipwall/tally.h"
+
+#define CMD "report"
+#define GLOBAL_MAX_BLOCKS 12	/* the mixed-integer program beyond is slow */
+#define GLOBAL_TIME 10.0	/* default --time-limit, s */
+
+struct report_args {
+	const char *wall, *samples, *tests, *out;
+	long n;
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;
+	double depth;		/* < 0: the wall's */
+	double time_limit;
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall report WALL.yaml --out DIR [--samples FILE.csv]\n"
+		"                       [--tests FILE] [-n N] [--seed S] [--threads T]\n"
+		"                       [--depth D] [--time-limit S]\n"
+		"\n"
+		"Figures (SVG, PDF and PNG) and a Markdown summary of a Monte Carlo\n"
+		"run: the paper's Figs. 6, 8, 9 and 10, the convergence of p05 and\n"
+		"Table 1, written into DIR (created if missing).\n"
+		"\n"
+		"  --out DIR           where to write (required)\n"
+		"  --samples FILE.csv  the loads of a samples file of 'run' (its\n"
+		"                      contact positions are replayed for the mechanisms)\n"
+		"  --tests FILE        experimental loads, one per line, '#' comments\n"
+		"                      (default: the wall's tests: key)\n"
+		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --time-limit S      for the global method (walls of at most %d\n"
+		"                      blocks), default %g s\n", GLOBAL_MAX_BLOCKS,
+		GLOBAL_TIME);
+}
+
+static const char *opt_value(int argc, char **argv, int *i, const char *name,
+			     int *missing)
+{
+	const char *a = argv[*i];
+	size_t len = strlen(name);
+	if (strncmp(a, name, len))
+		return NULL;
+	if (a[len] == '=')
+		return a + len + 1;
+	if (a[len])
+		return NULL;
+	if (*i + 1 >= argc) {
+		*missing = 1;
+		return NULL;
+	}
+	return argv[++*i];
+}
+
+static int parse_args(int argc, char **argv, struct report_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	a->time_limit = GLOBAL_TIME;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0;
+		long l;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if ((v = opt_value(argc, argv, &i, "-n", &missing))) {
+			if (cli_parse_long(v, 1, 1000000000L, &a->n))
+				return cli_usage_error(CMD, "-n: '%s' is not a "
+						       "sample count (1 to 10^9)", v);
+			a->n_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--seed", &missing))) {
+			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
+				return cli_usage_error(CMD, "--seed: '%s' is not a "
+						       "whole number from 0 to 2^31-1", v);
+			a->seed = (unsigned long)l;
+			a->seed_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--threads", &missing))) {
+			if (cli_parse_long(v, 1, 1024, &l))
+				return cli_usage_error(CMD, "--threads: '%s' is not "
+						       "a thread count (1 to 1024)", v);
+			a->threads = (int)l;
+		} else if ((v = opt_value(argc, argv, &i, "--depth", &missing))) {
+			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
+			    a->depth > 0.5)
+				return cli_usage_error(CMD, "--depth: '%s' is not a "
+						       "depth between 0 and 0.5", v);
+		} else if ((v = opt_value(argc, argv, &i, "--time-limit",
+					  &missing))) {
+			if (cli_parse_double(v, &a->time_limit) ||
+			    !(a->time_limit > 0))
+				return cli_usage_error(CMD, "--time-limit: '%s' is "
+						       "not a positive number of "
+						       "seconds", v);
+		} else if ((v = opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if ((v = opt_value(argc, argv, &i, "--tests", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--tests: empty file name");
+			a->tests = v;
+		} else if ((v = opt_value(argc, argv, &i, "--out", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--out: empty directory name");
+			a->out = v;
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall report "
+				       "WALL.yaml --out DIR)");
+	if (!a->out)
+		return cli_usage_error(CMD, "where to? (--out DIR)");
+	if (a->samples && (a->n_set || a->seed_set || a->depth >= 0))
+		return cli_usage_error(CMD, "--samples takes the loads from a "
+				       "file: -n, --seed and --depth do not apply");
+	return 0;
+}
+
+/* One load per line; '#' starts a comment; blank lines are skipped
+ * (the format of `compare --tests`). */
+static enum sw_status read_tests(const char *path, double **out, long *nout,
+				 char *err)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
+			       strerror(errno));
+	char *line = NULL;
+	size_t cap = 0;
+	long lineno = 0, n = 0, xcap = 0;
+	double *x = NULL;
+	enum sw_status st = SW_OK;
+	while (st == SW_OK && getline(&line, &cap, f) >= 0) {
+		lineno++;
+		char *hash = strchr(line, '#');
+		if (hash)
+			*hash = 0;
+		char *p = line, *end;
+		while (isspace((unsigned char)*p))
+			p++;
+		if (!*p)
+			continue;
+		errno = 0;
+		double v = strtod(p, &end);
+		while (isspace((unsigned char)*end))
+			end++;
+		if (end == p || errno == ERANGE || !isfinite(v) || *end)
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: one number per "
+				     "line (a '#' starts a comment)", path, lineno,
+				     (int)(p - line) + 1);
+		else if (v < 0)
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
+				     "must be >= 0", path, lineno,
+				     (int)(p - line) + 1);
+		if (st != SW_OK)
+			break;
+		if (n == xcap) {
+			xcap = xcap ? 2 * xcap : 64;
+			x = sw_xrealloc(x, sizeof(double) * (size_t)xcap);
+		}
+		x[n++] = v;
+	}
+	free(line);
+	fclose(f);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*out = x;
+	*nout = n;
+	return SW_OK;
+}
+
+/* Run the pool to the end: the tally and, in sample order, the accepted
+ * loads (when lam is not NULL). */
+static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
+			       double **lam, long *nlam, char *err)
+{
+	struct mc *m = mc_start(cfg, err);
+	if (!m)
+		return SW_EANALYSIS;
+	int tty = isatty(STDERR_FILENO);
+	struct mc_item it;
+	mc_item_init(&it, cfg->w);
+	if (lam) {
+		*lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
+		*nlam = 0;
+	}
+	int got;
+	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
+		if (got > 0) {
+			tally_add(t, &it);
+			if (lam && it.status == SAMPLE_ACCEPTED)
+				(*lam)[(*nlam)++] = it.lambda_min;
+		}
+		if (tty) {
+			fprintf(stderr, "\rreport: %ld/%ld samples\033[K",
+				t->samples, cfg->n);
+			fflush(stderr);
+		}
+	}
+	if (tty)
+		fprintf(stderr, "\r\033[K");
+	mc_item_free(&it);
+	mc_free(m);
+	return SW_OK;
+}
+
+/* The single-solution values (this thread's GLPK). */
+static void single_solutions(const struct wall *w, double tlim,
+			     struct report_solution *sol, int *nsol)
+{
+	static const enum solve_method ms[3] = {SOLVE_STANDARD, SOLVE_GILBERT,
+						SOLVE_GLOBAL};
+	*nsol = 0;
+	for (int i = 0; i < 3; i++) {
+		struct report_solution *s = &sol[(*nsol)++];
+		memset(s, 0, sizeof *s);
+		s->method = solve_method_name(ms[i]);
+		s->lambda = NAN;
+		if (ms[i] == SOLVE_GLOBAL && w->nfree > GLOBAL_MAX_BLOCKS) {
+			snprintf(s->note, sizeof s->note, "not run: %d blocks "
+				 "(the mixed-integer program runs for walls of at "
+				 "most %d)", w->nfree, GLOBAL_MAX_BLOCKS);
+			continue;
+		}
+		struct solve_opts o;
+		struct solve_result r;
+		char err[SW_ERRLEN];
+		solve_opts_default(&o, ms[i]);
+		o.time_limit = tlim;
+		s->ran = 1;
+		if (solve_run(w, &o, &r, err) != SW_OK) {
+			snprintf(s->note, sizeof s->note, "%.159s", err);
+		} else if (r.status == SAMPLE_ACCEPTED ||
+			   (ms[i] == SOLVE_GILBERT && isfinite(r.lambda))) {
+			s->found = isfinite(r.lambda);
+			s->lambda = r.lambda;
+			if (ms[i] == SOLVE_GILBERT)
+				snprintf(s->note, sizeof s->note, "%s after %d "
+					 "iterations%s", r.converged ? "converged" :
+					 "NOT converged", r.iterations,
+					 r.status == SAMPLE_ACCEPTED ? "" :
+					 "; no onset-of-collapse mechanism");
+			else if (ms[i] == SOLVE_GLOBAL)
+				snprintf(s->note, sizeof s->note, "%s (%.1f s)",
+					 r.proven ? "optimal, proven" :
+					 "best found within the time limit, not "
+					 "proven", r.seconds);
+			else
+				snprintf(s->note, sizeof s->note, "associative: "
+					 "an upper value");
+		} else {
+			snprintf(s->note, sizeof s->note, "%s",
+				 sample_status_text(r.status));
+		}
+		solve_result_free(&r);
+	}
+	lp_thread_done();
+}
+
+/* Append s to buf, single-quoted for a POSIX shell when needed. */
+static void shell_arg(char *buf, size_t len, const char *s)
+{
+	size_t u = strlen(buf);
+	int plain = *s != 0;
+	for (const char *p = s; *p; p++)
+		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
+			plain = 0;
+	if (plain) {
+		snprintf(buf + u, len - u, " %s", s);
+		return;
+	}
+	snprintf(buf + u, len - u, " '");
+	for (const char *p = s; *p; p++) {
+		u = strlen(buf);
+		if (*p == '\'')
+			snprintf(buf + u, len - u, "'\\''");
+		else
+			snprintf(buf + u, len - u, "%c", *p);
+	}
+	u = strlen(buf);
+	snprintf(buf + u, len - u, "'");
+}
 
 int cmd_report(int argc, char **argv)
 {
-	(void)argc;
-	(void)argv;
-	fprintf(stderr,
-		"slipwall report: not available in this version (figures are planned);\n"
-		"use 'slipwall run --json' and 'slipwall compare --json' for the numbers.\n");
-	return 2;
+	struct report_args a;
+	int rc = parse_args(argc, argv, &a);
+	if (rc)
+		return rc < 0 ? 0 : rc;
+	struct wall *w;
+	if ((rc = cli_load_wall(a.wall, &w)))
+		return rc;
+
+	char err[SW_ERRLEN], note[512] = "";
+	int status = 0;
+	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
+	long ntests = 0, nlam = 0;
+	struct tally t;
+	tally_init(&t, w);
+
+	if (a.depth >= 0 && w->anywhere) {
+		status = cli_usage_error(CMD, "--depth: %s draws its contact "
+					 "points anywhere: there is no depth",
+					 a.wall);
+		goto out;
+	}
+	if (a.tests) {
+		if (read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
+			fprintf(stderr, "%s\n", err);
+			status = 2;
+			goto out;
+		}
+	} else if (w->ntests > 0) {
+		ntests = w->ntests;
+		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
+		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
+	}
+
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.threads = a.threads ? a.threads : cli_ncpu();
+	if (a.samples) {
+		long rows;
+		if (runlog_read_loads(a.samples, &lam, &nlam, err) != SW_OK ||
+		    runlog_read_positions(a.samples, w, &xi, &rows, err) !=
+		    SW_OK) {
+			fprintf(stderr, "%s\n", err);
+			status = 2;
+			goto out;
+		}
+		if (rows < 1) {
+			fprintf(stderr, "%s: no samples\n", a.samples);
+			status = 2;
+			goto out;
+		}
+		cfg.positions = xi;
+		cfg.n = rows;
+		long nrep = 0;
+		if (run_pool(&cfg, &t, &replay, &nrep, err) != SW_OK) {
+			fprintf(stderr, "slipwall report: %s\n", err);
+			status = 1;
+			goto out;
+		}
+		long differ = nrep != nlam;
+		for (long i = 0; i < nrep && i < nlam; i++)
+			differ += replay[i] != lam[i];
+		if (differ)
+			snprintf(note, sizeof note, "**Warning:** replaying the "
+				 "contact positions of `%s` on this wall did not "
+				 "give the file's loads (%ld accepted, the file has "
+				 "%ld; %ld differences): the mechanisms and counts "
+				 "are those of the replay, the plotted loads those "
+				 "of the file. Was the wall changed?", a.samples,
+				 nrep, nlam, differ);
+		else
+			snprintf(note, sizeof note, "The loads are those of `%s`; "
+				 "its contact positions were replayed to recover "
+				 "the mechanisms, and gave the same loads.",
+				 a.samples);
+	} else {
+		cfg.n = a.n_set ? a.n : w->samples;
+		if (a.seed_set)
+			cfg.seed = a.seed;
+		cfg.depth = a.depth;
+		if (run_pool(&cfg, &t, &lam, &nlam, err) != SW_OK) {
+			fprintf(stderr, "slipwall report: %s\n", err);
+			status = 1;
+			goto out;
+		}
+	}
+	if (nlam == 0) {
+		fprintf(stderr, "slipwall report: no accepted sample (%ld "
+			"computed): nothing to plot\n", t.samples);
+		status = 1;
+		goto out;
+	}
+
+	struct report_solution sol[3];
+	int nsol;
+	single_solutions(w, a.time_limit, sol, &nsol);
+
+	char cmdline[2048] = "slipwall report";
+	shell_arg(cmdline, sizeof cmdline, a.wall);
+	if (a.samples) {
+		strcat(cmdline, " --samples");
+		shell_arg(cmdline, sizeof cmdline, a.samples);
+	} else {
+		size_t u = strlen(cmdline);
+		snprintf(cmdline + u, sizeof cmdline - u, " -n %ld --seed %lu",
+			 cfg.n, cfg.seed);
+		if (a.depth >= 0) {
+			u = strlen(cmdline);
+			snprintf(cmdline + u, sizeof cmdline - u, " --depth %g",
+				 a.depth);
+		}
+	}
+	if (a.tests) {
+		strcat(cmdline, " --tests");
+		shell_arg(cmdline, sizeof cmdline, a.tests);
+	}
+	strcat(cmdline, " --out");
+	shell_arg(cmdline, sizeof cmdline, a.out);
+
+	char tsrc[1024];
+	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`" : "the wall's tests: key",
+		 a.tests);
+	struct report_input in = {
+		.w = w,
+		.lam = lam,
+		.nlam = nlam,
+		.mech = &t,
+		.tests = tests,
+		.ntests = ntests,
+		.sol = sol,
+		.nsol = nsol,
+		.run = {
+			.wall_path = a.wall,
+			.version = SLIPWALL_VERSION,
+			.command = cmdline,
+			.samples_file = a.samples,
+			.tests_source = tsrc,
+			.seed_known = !a.samples,
+			.seed = cfg.seed,
+			.requested = a.samples ? 0 : cfg.n,
+			.threads = cfg.threads,
+			.depth = a.samples ? NAN : a.depth >= 0 ? a.depth : w->depth,
+			.anywhere = w->anywhere,
+			.has_counts = 1,
+			.samples = t.samples,
+			.accepted = t.accepted,
+			.note = *note ? note : NULL,
+		},
+	};
+	memcpy(in.run.rejected, t.rejected, sizeof t.rejected);
+	if (report_write(&in, a.out, NULL, err) != SW_OK) {
+		fprintf(stderr, "slipwall report: %s\n", err);
+		status = 1;
+		goto out;
+	}
+	printf("%s/report.md: %ld accepted loads of %ld samples, %ld tests, "
+	       "%d mechanisms\n", a.out, nlam, t.samples, ntests, t.nmech);
+	if (!ntests)
+		printf("no experimental loads: the figures show the model "
+		       "alone\n");
+out:
+	report_cleanup();
+	tally_free(&t);
+	free(lam);
+	free(replay);
+	free(xi);
+	free(tests);
+	wall_free(w);
+	return status;
 }

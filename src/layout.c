@@ -21,7 +21,14 @@
 
 #include "slipwall/layout.h"
 
-#define LAYOUT_MAX_BLOCKS 1000000
+/* A few bytes of layout can ask for any number of blocks.  Refuse more
+ * than ten times the largest wall the program is meant for (10,000
+ * blocks, docs/reliability.md): a million-block layout took 8 s and
+ * 700 MB just to check, and no LP of that size is solvable here.  The
+ * fuzz build (scripts/fuzz.sh) lowers the limit to keep executions fast. */
+#ifndef LAYOUT_MAX_BLOCKS
+#define LAYOUT_MAX_BLOCKS 100000
+#endif
 
 /* Does course c (1-based) start with a half block? */
 static int course_starts_half(const struct wall_layout *l, int c)

@@ -7,9 +7,16 @@
  * environment (the only documented recovery) and bump a per-thread
  * generation number; a problem built in an older generation is dead and
  * is never touched again by GLPK calls.
+ *
+ * Fault injection (lp_fault_set, or SLIPWALL_LP_FAULT in the environment)
+ * makes every n-th lp_solve of a thread fail, to test that a failed LP
+ * costs one sample and nothing else (tests/test_faults.c,
+ * tests/cli_faults.sh).  An injected LP_ERROR goes through GLPK's own
+ * error path (glp_error, the hook, the longjmp), not around it.
  */
 #include <glpk.h>
 #include <math.h>
+#include <pthread.h>
 #include <setjmp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,6 +42,13 @@ static _Thread_local int tl_in_call;
 static _Thread_local char tl_message[256];
 static _Thread_local long tl_solves, tl_iterations;
 static _Thread_local double tl_seconds;
+
+/* Fault injection: set once (lp_fault_set before any thread solves, or
+ * the environment at the first solve), then only read. */
+static pthread_once_t fault_once = PTHREAD_ONCE_INIT;
+static long fault_every;		/* 0: off */
+static enum lp_status fault_as;		/* LP_FAILED or LP_ERROR */
+static _Thread_local long tl_fault_count;
 
 static double now(void)
 {
@@ -189,6 +203,11 @@ void lp_reset_basis(struct lp *p)
 	glp_std_basis(p->P);
 }
 
+void lp_crash_basis(struct lp *p)
+{
+	glp_adv_basis(p->P, 0);
+}
+
 static enum lp_status map_status(glp_prob *P)
 {
 	switch (glp_get_status(P)) {
@@ -210,10 +229,54 @@ static enum lp_status map_status(glp_prob *P)
 	}
 }
 
+/* SLIPWALL_LP_FAULT=failed:N or error:N (see lp.h). */
+static void fault_from_env(void)
+{
+	const char *s = getenv("SLIPWALL_LP_FAULT");
+	char *end;
+	if (!s || !*s)
+		return;
+	enum lp_status as = LP_FAILED;
+	if (!strncmp(s, "failed:", 7)) {
+		s += 7;
+	} else if (!strncmp(s, "error:", 6)) {
+		as = LP_ERROR;
+		s += 6;
+	}
+	long n = strtol(s, &end, 10);
+	if (*end || n <= 0) {
+		fprintf(stderr, "slipwall: SLIPWALL_LP_FAULT must be failed:N or error:N, N >= 1\n");
+		return;
+	}
+	fault_every = n;
+	fault_as = as;
+}
+
+void lp_fault_set(long every, enum lp_status as)
+{
+	pthread_once(&fault_once, fault_from_env);
+	fault_every = every > 0 ? every : 0;
+	fault_as = as == LP_ERROR ? LP_ERROR : LP_FAILED;
+	tl_fault_count = 0;
+}
+
+/* Is this solve of this thread one that must fail? */
+static int fault_now(void)
+{
+	pthread_once(&fault_once, fault_from_env);
+	return fault_every > 0 && ++tl_fault_count % fault_every == 0;
+}
+
 enum lp_status lp_solve(struct lp *p, enum lp_method m)
 {
 	if (!alive(p))
 		return LP_ERROR;
+	int fault = fault_now();
+	if (fault && fault_as == LP_FAILED) {
+		tl_solves++;
+		p->last_iters = 0;
+		return LP_FAILED;
+	}
 	glp_smcp parm;
 	glp_init_smcp(&parm);
 	parm.msg_lev = GLP_MSG_OFF;
@@ -232,6 +295,8 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 		return LP_ERROR;
 	}
 	tl_in_call = 1;
+	if (fault)	/* an injected error, through GLPK's error path */
+		glp_error("slipwall: injected fault (SLIPWALL_LP_FAULT)\n");
 	double t0 = now();
 	int it0 = glp_get_it_cnt(p->P);
 	int rc = glp_simplex(p->P, &parm);

@@ -172,6 +172,7 @@ static void *worker(void *arg)
 
 	long solves, iters;
 	lp_thread_counters(&solves, &iters);
+	double lp_seconds = lp_thread_seconds();
 	sample_result_free(&r);
 	mc_item_free(&it);
 	sample_ws_free(ws);
@@ -179,6 +180,7 @@ static void *worker(void *arg)
 	pthread_mutex_lock(&m->mu);
 	m->counters.solves += solves;
 	m->counters.iterations += iters;
+	m->counters.lp_seconds += lp_seconds;
 	m->running--;
 	pthread_cond_broadcast(&m->cv_ready);
 	notify(m);
@@ -305,6 +307,17 @@ void mc_counters(const struct mc *m, struct mc_counters *c)
 	pthread_mutex_lock((pthread_mutex_t *)&m->mu);
 	*c = m->counters;
 	pthread_mutex_unlock((pthread_mutex_t *)&m->mu);
+}
+
+void mc_wait(struct mc *m)
+{
+	pthread_mutex_lock(&m->mu);
+	while (m->running > 0) {
+		struct timespec ts;
+		deadline(&ts, 100);
+		pthread_cond_timedwait(&m->cv_ready, &m->mu, &ts);
+	}
+	pthread_mutex_unlock(&m->mu);
 }
 
 void mc_free(struct mc *m)

@@ -9,9 +9,16 @@
  * is rewritten per sample.  All quantities are in the scaled units of
  * statics.h; results are converted at the end.
  *
- *   amax, amin, stand  rows: equilibrium (3 per free block) | 2 friction rows
- *               per interface: T - mu (Na + Nb) <= 0, -T - mu (Na + Nb) <= 0
- *               cols: Na, Nb, T per interface | lambda
+ *   amax, amin, stand  rows: equilibrium (3 per free block) only
+ *               cols: the force at each contact point in the edge
+ *               directions of its friction cone, F = alpha (n + mu t) +
+ *               beta (n - mu t), alpha, beta >= 0 (so N = alpha + beta,
+ *               T = mu (alpha - beta) summed over the two points):
+ *               alpha_a, beta_a, alpha_b, beta_b per interface | lambda.
+ *               No friction rows (they were two thirds of the rows), and
+ *               every yield condition LP-min holds at its limit is a
+ *               column bound: N_j = 0 is alpha_j = beta_j = 0, T = +mu N
+ *               is beta = 0, T = -mu N is alpha = 0.
  *               amax: LP-max (max lambda).  amin: min lambda >= 0
  *               with the mechanism's yield conditions held at their
  *               limits (LP-min).  stand: the same with lambda = 0 and no
@@ -128,6 +135,10 @@ struct sample_ws {
 
 /* Column indices. */
 #define COL_LAMBDA(ws) (3 * (ws)->m)
+/* associative problems: cone edges of point e (0: q_a, 1: q_b) */
+#define ACOL_ALPHA(k, e) (4 * (k) + 2 * (e))
+#define ACOL_BETA(k, e) (4 * (k) + 2 * (e) + 1)
+#define ACOL_LAMBDA(ws) (4 * (ws)->m)
 #define COL_P(ws, k) (3 * (ws)->m + 1 + (k))
 #define COL_Q(ws, k) (3 * (ws)->m + 1 + (ws)->m + (k))
 #define KCOL_SP(ws, k) ((ws)->R + (k))
@@ -143,6 +154,7 @@ static void put_column(struct sample_ws *ws, int j)
 	double mu = ws->w->ifaces[k].mu;
 
 	n = statics_column(&ws->st, j, rows, vals);
+	(void)mu;
 	/* kin: row j over the velocity columns, plus the slip split */
 	int kn = n;
 	int kcols[8];
@@ -157,22 +169,36 @@ static void put_column(struct sample_ws *ws, int j)
 	}
 	lp_set_row(ws->kin, j, kn, kcols, kvals);
 
-	/* amax, amin: friction rows */
-	int an = n;
-	if (kind == 2) {
-		rows[an] = ws->R + 2 * k;
-		vals[an++] = 1;
-		rows[an] = ws->R + 2 * k + 1;
-		vals[an++] = -1;
-	} else {
-		rows[an] = ws->R + 2 * k;
-		vals[an++] = -mu;
-		rows[an] = ws->R + 2 * k + 1;
-		vals[an++] = -mu;
+	/* amax, amin, stand: the cone edges n +- mu t at this point; the
+	 * shear's part of a column does not depend on the point */
+	if (kind != 2) {
+		int trows[6];
+		double tvals[6];
+		int tn = statics_column(&ws->st, 3 * k + 2, trows, tvals);
+		for (int sgn = 0; sgn < 2; sgn++) {
+			int er[12];
+			double ev[12];
+			int en = 0;
+			for (int i = 0; i < n; i++) {
+				er[en] = rows[i];
+				ev[en++] = vals[i];
+			}
+			for (int i = 0; i < tn; i++) {
+				int q;
+				for (q = 0; q < en && er[q] != trows[i]; q++)
+					;
+				if (q == en) {
+					er[en] = trows[i];
+					ev[en++] = 0;
+				}
+				ev[q] += (sgn ? -mu : mu) * tvals[i];
+			}
+			int col = sgn ? ACOL_BETA(k, kind) : ACOL_ALPHA(k, kind);
+			lp_set_col(ws->amax, col, en, er, ev);
+			lp_set_col(ws->amin, col, en, er, ev);
+			lp_set_col(ws->stand, col, en, er, ev);
+		}
 	}
-	lp_set_col(ws->amax, j, an, rows, vals);
-	lp_set_col(ws->amin, j, an, rows, vals);
-	lp_set_col(ws->stand, j, an, rows, vals);
 
 	/* slp: closeness row for normal forces */
 	int sn = n;
@@ -208,13 +234,10 @@ static void put_kin_objective(struct sample_ws *ws)
  * written by put_column(). */
 static void build_assoc(struct sample_ws *ws, struct lp *P)
 {
-	int m = ws->m, R = ws->R;
-	for (int i = 0; i < R; i++)
+	for (int i = 0; i < ws->R; i++)
 		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
-	for (int r = 0; r < 2 * m; r++)
-		lp_set_row_bounds(P, R + r, -HUGE_VAL, 0);
-	for (int j = 0; j < 3 * m; j++)
-		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+	for (int j = 0; j < 4 * ws->m; j++)
+		lp_set_col_bounds(P, j, 0, HUGE_VAL);
 }
 
 /* LP1 needs no closeness rows: without their free p, q columns its
@@ -247,9 +270,9 @@ static void build_slp(struct sample_ws *ws, struct lp *P)
 static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	ws->amax = lp_new(R + 2 * m, 3 * m + 1);
-	ws->amin = lp_new(R + 2 * m, 3 * m + 1);
-	ws->stand = lp_new(R + 2 * m, 3 * m + 1);
+	ws->amax = lp_new(R, 4 * m + 1);
+	ws->amin = lp_new(R, 4 * m + 1);
+	ws->stand = lp_new(R, 4 * m + 1);
 	ws->lp1 = lp_new(R, 3 * m + 1);
 	ws->lp2 = lp_new(R + m, 3 * m + 1 + 2 * m);
 	ws->kin = lp_new(3 * m + 1, R + 2 * m);
@@ -270,20 +293,21 @@ static void build(struct sample_ws *ws)
 		}
 	struct lp *all[5] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2};
 	for (int p = 0; p < 5; p++)
-		lp_set_col(all[p], COL_LAMBDA(ws), nl, ws->ind, ws->val);
+		lp_set_col(all[p], p < 3 ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws), nl,
+			   ws->ind, ws->val);
 	/* the objectives never change: max lambda (free) for LP-max and
 	 * LP1, min lambda >= 0 for the standing check and LP-min, min
 	 * sum (p + q) for LP2 (its lambda bound is set per iteration) */
-	lp_set_col_bounds(ws->amax, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-	lp_set_obj(ws->amax, COL_LAMBDA(ws), 1);
+	lp_set_col_bounds(ws->amax, ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->amax, ACOL_LAMBDA(ws), 1);
 	lp_set_maximize(ws->amax, 1);
-	lp_set_col_bounds(ws->amin, COL_LAMBDA(ws), 0, HUGE_VAL);
-	lp_set_obj(ws->amin, COL_LAMBDA(ws), 1);
+	lp_set_col_bounds(ws->amin, ACOL_LAMBDA(ws), 0, HUGE_VAL);
+	lp_set_obj(ws->amin, ACOL_LAMBDA(ws), 1);
 	lp_set_maximize(ws->amin, 0);
 	/* standing: is there an admissible field at lambda = 0?  No
 	 * objective: the simplex stops at the first feasible basis (a
 	 * minimum over the degenerate face costs hundreds of pivots) */
-	lp_set_col_bounds(ws->stand, COL_LAMBDA(ws), 0, 0);
+	lp_set_col_bounds(ws->stand, ACOL_LAMBDA(ws), 0, 0);
 	lp_set_col_bounds(ws->lp1, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
 	lp_set_obj(ws->lp1, COL_LAMBDA(ws), 1);
 	lp_set_maximize(ws->lp1, 1);
@@ -461,11 +485,24 @@ static void set_points(struct sample_ws *ws, const double *xi)
  * yield conditions. */
 static void amin_reset(struct sample_ws *ws)
 {
+	for (int j = 0; j < 4 * ws->m; j++)
+		lp_set_col_bounds(ws->amin, j, 0, HUGE_VAL);
+}
+
+/* The stress field (N_a, N_b, T per interface, ws->x's layout) of the
+ * cone-edge solution of an associative problem. */
+static void assoc_field(const struct sample_ws *ws, const struct lp *P,
+			double *x)
+{
 	for (int k = 0; k < ws->m; k++) {
-		lp_set_col_bounds(ws->amin, 3 * k, 0, HUGE_VAL);
-		lp_set_col_bounds(ws->amin, 3 * k + 1, 0, HUGE_VAL);
-		lp_set_row_bounds(ws->amin, ws->R + 2 * k, -HUGE_VAL, 0);
-		lp_set_row_bounds(ws->amin, ws->R + 2 * k + 1, -HUGE_VAL, 0);
+		double mu = ws->w->ifaces[k].mu, t = 0;
+		for (int e = 0; e < 2; e++) {
+			double a = lp_col(P, ACOL_ALPHA(k, e));
+			double b = lp_col(P, ACOL_BETA(k, e));
+			x[3 * k + e] = a + b;
+			t += mu * (a - b);
+		}
+		x[3 * k + 2] = t;
 	}
 }
 
@@ -493,15 +530,22 @@ static enum lp_status solve(struct sample_ws *ws, struct lp *p,
 /* Step 2a: LP-max, and can the wall stand at lambda = 0? */
 static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 {
-	enum lp_status s = solve(ws, ws->amax, LP_DUAL, r);
+	/* The primal simplex from the slack basis: LP-max is degenerate,
+	 * and the optimal vertex it reaches decides the SLP's start.  This
+	 * choice reproduces the independent implementation of SPEC section
+	 * 5 on the demo wall (p95/p05 6.7, 7 mechanisms); the dual simplex
+	 * lands on other vertices (p95/p05 2.2) and, on the 1,000-block
+	 * wall, does not finish within GLPK's time limit. */
+	enum lp_status s = solve(ws, ws->amax, LP_PRIMAL, r);
 	if (s != LP_OPTIMAL)
 		return lp_to_sample(s);
 	double lam = lp_obj(ws->amax);
 	r->lambda_lpmax = lam;
 	if (!(lam > TOL_FORCE))
 		return SAMPLE_NONPOSITIVE;
+	assoc_field(ws, ws->amax, ws->x);
 	for (int k = 0; k < ws->m; k++)
-		ws->c[k] = lp_col(ws->amax, 3 * k) + lp_col(ws->amax, 3 * k + 1);
+		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
 	/* the wall must stand under its own weight on these points */
 	s = solve(ws, ws->stand, LP_PRIMAL, r);
 	if (s == LP_ERROR || s == LP_FAILED)
@@ -649,20 +693,22 @@ static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
 	struct lp *P = ws->amin;
 	amin_reset(ws);
 	for (int k = 0; k < m; k++) {
-		for (int e = 0; e < 2; e++)
-			if (ws->dn[2 * k + e] > thr)
-				lp_set_col_bounds(P, 3 * k + e, 0, 0);
-		if (ws->dt[k] > thr)	/* T = -mu (Na + Nb) */
-			lp_set_row_bounds(P, ws->R + 2 * k + 1, 0, 0);
-		else if (ws->dt[k] < -thr)	/* T = +mu (Na + Nb) */
-			lp_set_row_bounds(P, ws->R + 2 * k, 0, 0);
+		for (int e = 0; e < 2; e++) {
+			if (ws->dn[2 * k + e] > thr) {	/* N = 0 */
+				lp_set_col_bounds(P, ACOL_ALPHA(k, e), 0, 0);
+				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
+			}
+			if (ws->dt[k] > thr)	/* T = -mu (Na + Nb) */
+				lp_set_col_bounds(P, ACOL_ALPHA(k, e), 0, 0);
+			else if (ws->dt[k] < -thr)	/* T = +mu (Na + Nb) */
+				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
+		}
 	}
 	enum lp_status s = solve(ws, P, LP_DUAL, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	r->lambda_min = lp_obj(P);
-	for (int j = 0; j < 3 * m; j++)
-		ws->x[j] = lp_col(P, j);
+	assoc_field(ws, P, ws->x);
 	return SAMPLE_ACCEPTED;
 }
 
@@ -795,8 +841,7 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 	}
 	for (int i = 0; i < ws->R && fl != 0; i++)
 		v[i] /= fl;
-	for (int j = 0; j < 3 * ws->m; j++)
-		x[j] = lp_col(ws->amax, j);
+	assoc_field(ws, ws->amax, x);
 	sample_export(ws, v, x, r);
 	free(v);
 	free(x);

@@ -49,6 +49,10 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 enum lp_status lp_solve(struct lp *p, enum lp_method m);
 /* Forget the basis (next solve starts from the standard basis). */
 void lp_reset_basis(struct lp *p);
+/* Start from GLPK's advanced (crash) basis: deterministic, built from
+ * the matrix alone, and usually far fewer pivots from optimal than the
+ * standard (all-slack) basis. */
+void lp_crash_basis(struct lp *p);
 
 /* A saved basis (row and column statuses), to warm-start a problem that
  * alternates between objectives from the basis each objective last
@@ -81,6 +85,15 @@ void lp_thread_counters(long *solves, long *iterations);
 double lp_thread_seconds(void);
 void lp_thread_done(void);
 const char *lp_last_message(void);
+
+/* Fault injection, for tests: from now on every `every`-th lp_solve()
+ * of each thread (counted per thread, from 0 again for the calling
+ * thread) returns `as` - LP_FAILED at once,
+ * or LP_ERROR by raising a GLPK error inside the solve, so the recovery
+ * above runs for real.  every = 0 turns it off.  Call it before the
+ * threads that solve start.  Without a call, the environment variable
+ * SLIPWALL_LP_FAULT=failed:N or error:N does the same (read once). */
+void lp_fault_set(long every, enum lp_status as);
 
 /* Mixed-integer: mark a column binary; solve with branch and cut. */
 void lp_set_binary(struct lp *p, int col);

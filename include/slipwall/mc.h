@@ -76,7 +76,11 @@ void mc_free(struct mc *m);
  * they spent inside GLPK's simplex (approximate). */
 struct mc_counters {
 	long solves, iterations;
+	double lp_seconds;	/* inside lp_solve, summed over workers */
 };
 void mc_counters(const struct mc *m, struct mc_counters *c);
+/* Wait until every worker has exited: after mc_pop returned -1 (or
+ * after mc_stop), so that mc_counters covers every worker. */
+void mc_wait(struct mc *m);
 
 #endif

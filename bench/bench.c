@@ -1,0 +1,144 @@
+/*
+ * bench.c - the sampling benchmark (issue 4; figures in
+ * docs/performance.md).
+ *
+ *   bench WALL.yaml [-n N] [--threads 1,2] [--seed S]
+ *
+ * For each thread count, runs N samples of the wall through the real
+ * worker pool (mc.c, the code path of `slipwall run`, without the CSV)
+ * and prints one line: samples per second, acceptance, LPs per sample,
+ * simplex iterations per LP, microseconds per LP, the share of the
+ * workers' time spent inside GLPK's simplex (lp_solve, timed by lp.c per
+ * thread), and the p05 so that a speed change that changes the results
+ * is noticed.  The last line gives the peak resident memory of the
+ * process (getrusage), which covers the largest run.
+ *
+ * Two shares are printed: "glpk/sample" is the time inside lp_solve over
+ * the time inside sample_run (the solver's own overhead: building,
+ * convergence tests, the onset check's bookkeeping); "glpk/wall" is the
+ * time inside lp_solve over threads x elapsed time (everything else too:
+ * the pool, the reorder window, drawing positions, the consumer).
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+
+#include "slipwall/mc.h"
+#include "slipwall/stats.h"
+#include "slipwall/tally.h"
+#include "slipwall/wallfile.h"
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int usage(void)
+{
+	fprintf(stderr, "usage: bench WALL.yaml [-n N] [--threads 1,2,...] "
+		"[--seed S]\n");
+	return 2;
+}
+
+static int bench_one(const struct wall *w, long n, unsigned long seed,
+		     int threads)
+{
+	char err[SW_ERRLEN];
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = n;
+	cfg.seed = seed;
+	cfg.threads = threads;
+	double t0 = now();
+	struct mc *m = mc_start(&cfg, err);
+	if (!m) {
+		fprintf(stderr, "bench: %s\n", err);
+		return 1;
+	}
+	struct tally t;
+	struct mc_item it;
+	tally_init(&t, w);
+	mc_item_init(&it, w);
+	while (mc_pop(m, &it, -1) > 0)
+		tally_add(&t, &it);
+	double elapsed = now() - t0;
+	mc_wait(m);
+	struct mc_counters c;
+	mc_counters(m, &c);
+	mc_free(m);
+	mc_item_free(&it);
+
+	struct stats_summary s;
+	tally_summary(&t, &s);
+	double ns = (double)t.samples;
+	printf("%-8d %9.2f %7.1f%% %9.1f %10.1f %9.1f %7.1f%% %7.1f%% %12.6g\n",
+	       threads, ns / elapsed, 100.0 * (double)t.accepted / ns,
+	       (double)c.solves / ns,
+	       c.solves ? (double)c.iterations / (double)c.solves : 0.0,
+	       c.solves ? 1e6 * c.lp_seconds / (double)c.solves : 0.0,
+	       t.compute_seconds > 0 ? 100.0 * c.lp_seconds /
+	       t.compute_seconds : 0.0,
+	       100.0 * c.lp_seconds / (elapsed * threads), s.p05);
+	fflush(stdout);
+	tally_free(&t);
+	return 0;
+}
+
+int main(int argc, char **argv)
+{
+	const char *path = NULL;
+	long n = 200;
+	unsigned long seed = 1;
+	int threads[16] = {1, 2}, nthreads = 2;
+	for (int i = 1; i < argc; i++) {
+		if (!strcmp(argv[i], "-n") && i + 1 < argc) {
+			n = strtol(argv[++i], NULL, 10);
+		} else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
+			seed = strtoul(argv[++i], NULL, 10);
+		} else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
+			char *s = argv[++i];
+			nthreads = 0;
+			while (*s && nthreads < 16) {
+				threads[nthreads++] = (int)strtol(s, &s, 10);
+				if (*s == ',')
+					s++;
+				else if (*s)
+					return usage();
+			}
+		} else if (argv[i][0] == '-' || path) {
+			return usage();
+		} else {
+			path = argv[i];
+		}
+	}
+	if (!path || n < 1 || nthreads < 1)
+		return usage();
+	for (int k = 0; k < nthreads; k++)
+		if (threads[k] < 1)
+			return usage();
+
+	char err[SW_ERRLEN];
+	struct wall *w;
+	if (wallfile_load(path, &w, err) != SW_OK) {
+		fprintf(stderr, "%s\n", err);
+		return 2;
+	}
+	printf("%s: %d blocks (%d free), %d interfaces; %ld samples, seed %lu\n",
+	       path, w->nblocks, w->nfree, w->nifaces, n, seed);
+	printf("%-8s %9s %8s %9s %10s %9s %8s %8s %12s\n", "threads",
+	       "samples/s", "accept", "LPs/smp", "iters/LP", "us/LP",
+	       "glpk/smp", "glpk/wall", "p05");
+	int rc = 0;
+	for (int k = 0; k < nthreads && !rc; k++)
+		rc = bench_one(w, n, seed, threads[k]);
+	struct rusage ru;
+	getrusage(RUSAGE_SELF, &ru);
+	printf("peak resident memory %.1f MB\n\n", (double)ru.ru_maxrss / 1024.0);
+	wall_free(w);
+	return rc;
+}

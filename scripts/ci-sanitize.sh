@@ -1,0 +1,102 @@
+#!/bin/sh
+# ci-sanitize.sh - the test suite under the sanitizers (docs/reliability.md).
+#
+#   sh scripts/ci-sanitize.sh [asan|tsan]...     (default: both)
+#
+# asan: every test (unit, command line, workbench) built with
+#       -Db_sanitize=address,undefined in build-asan/; leaks are errors
+#       (LeakSanitizer), except those listed in scripts/sanitizers/lsan.supp.
+# tsan: the threaded tests - the sampler's pool (test_mc), `run` with 1
+#       and 2 threads (cli_run, cli_faults) - built with -Db_sanitize=thread
+#       in build-tsan/; scripts/sanitizers/tsan.supp says what is
+#       suppressed and why.
+# Environment: ASAN_DIR, TSAN_DIR (build directories).  Prints each
+# suite's meson summary and ends with "tests: N passed, M failed".
+set -e
+cd "$(dirname "$0")/.."
+sh scripts/setup.sh >/dev/null	# the packages (and the plain build)
+jobs=${*:-asan tsan}
+supp=$(pwd)/scripts/sanitizers
+passed=0
+failed=0
+
+# reports DIR PREFIX: sanitizer reports written by any process (the
+# command-line tests send the program's stderr to files or /dev/null, so
+# every report also goes to DIR/PREFIX.PID): each one is a failure
+reports() {
+	n=0
+	for r in "$1/$2".*; do
+		[ -e "$r" ] || continue
+		n=$((n + 1))
+		echo "--- $r"
+		head -n 40 "$r"
+	done
+	failed=$(( failed + n ))
+	echo "$2: $n sanitizer report(s) from the programs the tests ran"
+}
+
+# count NAME LOG RC: add meson's Ok / Fail / Timeout counts of LOG
+count() {
+	p=$(sed -n 's/^Ok: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
+	f=$(sed -n 's/^Fail: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
+	t=$(sed -n 's/^Timeout: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
+	f=$(( ${f:-0} + ${t:-0} ))
+	if [ "$3" != 0 ] && [ "$f" = 0 ]; then f=1; fi
+	passed=$(( passed + ${p:-0} ))
+	failed=$(( failed + f ))
+	echo "$1: ${p:-0} passed, $f failed"
+}
+
+for job in $jobs; do
+	case $job in
+	asan)
+		dir=${ASAN_DIR:-build-asan}
+		[ -f "$dir/build.ninja" ] ||
+			meson setup "$dir" -Db_sanitize=address,undefined >/dev/null
+		meson compile -C "$dir" >/dev/null
+		rm -f "$dir"/san-report.*
+		log=$(pwd)/$dir/san-report
+		set +e
+		ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:log_path=$log \
+		LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0 \
+		UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:log_path=$log \
+		meson test -C "$dir" --print-errorlogs --num-processes 2 \
+			--timeout-multiplier 3 >"$dir/test-output.txt" 2>&1
+		rc=$?
+		set -e
+		tail -n 12 "$dir/test-output.txt"
+		count asan "$dir/test-output.txt" $rc
+		reports "$dir" san-report
+		;;
+	tsan)
+		dir=${TSAN_DIR:-build-tsan}
+		[ -f "$dir/build.ninja" ] ||
+			meson setup "$dir" -Db_sanitize=thread >/dev/null
+		meson compile -C "$dir" >/dev/null
+		# TSan needs a memory layout some kernels' address randomisation
+		# breaks ("unexpected memory mapping"): run without it if we can
+		wrap=
+		if setarch "$(uname -m)" -R true 2>/dev/null; then
+			wrap="--wrapper=setarch $(uname -m) -R"
+		fi
+		rm -f "$dir"/san-report.*
+		log=$(pwd)/$dir/san-report
+		set +e
+		TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp:log_path=$log \
+		meson test -C "$dir" --print-errorlogs --num-processes 1 \
+			--timeout-multiplier 4 ${wrap:+"$wrap"} mc run faults_cli \
+			>"$dir/test-output.txt" 2>&1
+		rc=$?
+		set -e
+		tail -n 12 "$dir/test-output.txt"
+		count tsan "$dir/test-output.txt" $rc
+		reports "$dir" san-report
+		;;
+	*)
+		echo "ci-sanitize: unknown job '$job' (asan, tsan)" >&2
+		exit 2
+		;;
+	esac
+done
+echo "tests: $passed passed, $failed failed"
+[ "$failed" = 0 ]

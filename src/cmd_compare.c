@@ -1,0 +1,682 @@
+/*
+ * cmd_compare.c - `slipwall compare`: the model's collapse loads against
+ * experimental ones (docs/run.md; the statistics in docs/statistics.md).
+ *
+ * The experimental loads come from the wall's `tests:` key or from a
+ * file of one load per line; the model's from a samples file of `run` or
+ * from a fresh Monte Carlo run (no file written).  The comparison is the
+ * two-sample Kolmogorov-Smirnov test (stats_ks2, x = model, y = tests,
+ * exact p-values) and the paper's Table 1: the characteristic value
+ * (p05) of each with its distribution-free 99 % interval.
+ *
+ * --fit-depth calibrates the one free parameter of the contact model,
+ * the imperfection depth d: a run per d on a grid over [0, 0.5], then a
+ * finer grid around the best, all with the same seed.  sample_positions
+ * draws the same uniforms for every d and scales them by d (common
+ * random numbers), so the profile of the KS distance against d is
+ * smooth rather than noisy.  The best d has the least KS distance (ties:
+ * the larger two-sided p-value, then the smaller d).
+ */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "slipwall/json.h"
+#include "slipwall/mc.h"
+#include "slipwall/runlog.h"
+#include "slipwall/stats.h"
+
+#define CMD "compare"
+#define GRID_STEP 0.05		/* first pass: 0, 0.05, ..., 0.5 */
+#define FINE_STEP 0.01		/* second pass: +-0.04 around the best */
+#define FINE_HALF 4
+
+struct compare_args {
+	const char *wall, *tests, *samples;
+	long n;
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;
+	double depth;		/* < 0: the wall's */
+	int fit_depth;
+	int json;
+};
+
+/* One model run (a depth of the profile, or the only one). */
+struct model {
+	double depth;
+	long samples, accepted;
+	double *lam;		/* accepted lambda_min, n = accepted */
+	struct stats_summary s;
+	struct stats_ks ks;
+	int ks_ok;
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall compare WALL.yaml [--tests FILE] [--samples FILE.csv]\n"
+		"                        [-n N] [--seed S] [--threads T] [--depth D]\n"
+		"                        [--fit-depth] [--json]\n"
+		"\n"
+		"The model's collapse loads against experimental ones: two-sample\n"
+		"Kolmogorov-Smirnov test (exact p-values) and the characteristic\n"
+		"values (p05) with their 99 %% intervals, side by side.\n"
+		"\n"
+		"  --tests FILE        experimental loads, one per line, '#' comments\n"
+		"                      (default: the wall's tests: key)\n"
+		"  --samples FILE.csv  the model's loads from a samples file of 'run'\n"
+		"                      (default: run the Monte Carlo analysis now)\n"
+		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --fit-depth         find the depth d in [0, 0.5] whose loads match\n"
+		"                      the tests best (least KS distance)\n"
+		"  --json              print the result as JSON\n");
+}
+
+static const char *opt_value(int argc, char **argv, int *i, const char *name,
+			     int *missing)
+{
+	const char *a = argv[*i];
+	size_t len = strlen(name);
+	if (strncmp(a, name, len))
+		return NULL;
+	if (a[len] == '=')
+		return a + len + 1;
+	if (a[len])
+		return NULL;
+	if (*i + 1 >= argc) {
+		*missing = 1;
+		return NULL;
+	}
+	return argv[++*i];
+}
+
+static int parse_args(int argc, char **argv, struct compare_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0;
+		long l;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if (!strcmp(s, "--json")) {
+			a->json = 1;
+		} else if (!strcmp(s, "--fit-depth")) {
+			a->fit_depth = 1;
+		} else if ((v = opt_value(argc, argv, &i, "-n", &missing))) {
+			if (cli_parse_long(v, 1, 1000000000L, &a->n))
+				return cli_usage_error(CMD, "-n: '%s' is not a "
+						       "sample count (1 to 10^9)", v);
+			a->n_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--seed", &missing))) {
+			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
+				return cli_usage_error(CMD, "--seed: '%s' is not a "
+						       "whole number from 0 to 2^31-1", v);
+			a->seed = (unsigned long)l;
+			a->seed_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--threads", &missing))) {
+			if (cli_parse_long(v, 1, 1024, &l))
+				return cli_usage_error(CMD, "--threads: '%s' is not "
+						       "a thread count (1 to 1024)", v);
+			a->threads = (int)l;
+		} else if ((v = opt_value(argc, argv, &i, "--depth", &missing))) {
+			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
+			    a->depth > 0.5)
+				return cli_usage_error(CMD, "--depth: '%s' is not a "
+						       "depth between 0 and 0.5", v);
+		} else if ((v = opt_value(argc, argv, &i, "--tests", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--tests: empty file name");
+			a->tests = v;
+		} else if ((v = opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall compare WALL.yaml)");
+	if (a->samples && (a->fit_depth || a->n_set || a->seed_set ||
+			   a->threads || a->depth >= 0))
+		return cli_usage_error(CMD, "--samples takes the model's loads "
+				       "from a file: --fit-depth, -n, --seed, "
+				       "--threads and --depth do not apply");
+	if (a->fit_depth && a->depth >= 0)
+		return cli_usage_error(CMD, "--fit-depth searches the depth: "
+				       "--depth does not apply");
+	return 0;
+}
+
+/* ---- the experimental loads ------------------------------------------ */
+
+/* One load per line; '#' starts a comment; blank lines are skipped. */
+static enum sw_status read_tests(const char *path, double **out, long *nout,
+				 char *err)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
+			       strerror(errno));
+	char *line = NULL;
+	size_t cap = 0;
+	long lineno = 0, n = 0, xcap = 0;
+	double *x = NULL;
+	enum sw_status st = SW_OK;
+	ssize_t len;
+	while (st == SW_OK && (len = getline(&line, &cap, f)) >= 0) {
+		lineno++;
+		if ((size_t)len != strlen(line)) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in "
+				     "a text file", path, lineno,
+				     strlen(line) + 1);
+			break;
+		}
+		char *hash = strchr(line, '#');
+		if (hash)
+			*hash = 0;
+		char *p = line;
+		while (isspace((unsigned char)*p))
+			p++;
+		if (!*p)
+			continue;
+		int col = (int)(p - line) + 1;
+		char *end;
+		errno = 0;
+		double v = strtod(p, &end);
+		if (end == p || errno == ERANGE || !isfinite(v) ||
+		    (*end && !isspace((unsigned char)*end))) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
+				     "a number", path, lineno, col);
+			break;
+		}
+		if (v < 0) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
+				     "must be >= 0", path, lineno, col);
+			break;
+		}
+		char *q = end;
+		while (isspace((unsigned char)*q))
+			q++;
+		if (*q) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: one load per "
+				     "line (a '#' starts a comment)", path,
+				     lineno, (int)(q - line) + 1);
+			break;
+		}
+		if (n == xcap) {
+			xcap = xcap ? 2 * xcap : 64;
+			x = sw_xrealloc(x, sizeof(double) * (size_t)xcap);
+		}
+		x[n++] = v;
+	}
+	if (st == SW_OK && ferror(f))
+		st = sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
+			     strerror(errno));
+	free(line);
+	fclose(f);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*out = x;
+	*nout = n;
+	return SW_OK;
+}
+
+/* ---- the model's loads -------------------------------------------------- */
+
+/* Run the pool to the end and keep the accepted loads (no file). */
+static enum sw_status run_model(const struct mc_config *cfg, struct model *md,
+				char *err)
+{
+	struct mc *m = mc_start(cfg, err);
+	if (!m)
+		return SW_EIO;
+	struct mc_item it;
+	mc_item_init(&it, cfg->w);
+	md->lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
+	md->samples = md->accepted = 0;
+	while (mc_pop(m, &it, -1) > 0) {
+		md->samples++;
+		if (it.status == SAMPLE_ACCEPTED)
+			md->lam[md->accepted++] = it.lambda_min;
+	}
+	mc_item_free(&it);
+	mc_free(m);
+	return SW_OK;
+}
+
+/* Statistics of a model run and its KS test against the tests. */
+static void analyse(struct model *md, const double *tests, long ntests)
+{
+	stats_summarise(md->lam, (size_t)md->accepted, &md->s);
+	md->ks_ok = md->accepted > 0 &&
+		    stats_ks2(md->lam, (size_t)md->accepted, tests,
+			      (size_t)ntests, &md->ks) == 0;
+}
+
+static int better(const struct model *a, const struct model *b)
+{
+	if (!a->ks_ok)
+		return 0;
+	if (!b->ks_ok)
+		return 1;
+	if (a->ks.d != b->ks.d)
+		return a->ks.d < b->ks.d;
+	if (a->ks.p_two_sided != b->ks.p_two_sided)
+		return a->ks.p_two_sided > b->ks.p_two_sided;
+	return a->depth < b->depth;
+}
+
+static int cmp_depth(const void *x, const void *y)
+{
+	const struct model *a = x, *b = y;
+	return (a->depth > b->depth) - (a->depth < b->depth);
+}
+
+/* The depth profile: returns the profile (sorted by depth) in *prof,
+ * its length, and the index of the best run. */
+static enum sw_status fit_depth(struct mc_config *cfg, const double *tests,
+				long ntests, struct model **prof, int *nprof,
+				int *best, int verbose, char *err)
+{
+	int cap = 32, n = 0;
+	struct model *p = sw_xcalloc((size_t)cap, sizeof *p);
+	int coarse = (int)lround(0.5 / GRID_STEP);
+	int b = -1;
+	for (int pass = 0; pass < 2; pass++) {
+		double lo = 0, step = GRID_STEP;
+		int count = coarse + 1;
+		if (pass == 1) {
+			if (b < 0)
+				break;
+			lo = p[b].depth - FINE_HALF * FINE_STEP;
+			step = FINE_STEP;
+			count = 2 * FINE_HALF + 1;
+		}
+		for (int k = 0; k < count; k++) {
+			/* on the 0.01 lattice exactly, so points are shared */
+			double d = round((lo + k * step) * 100) / 100;
+			if (d < 0 || d > 0.5)
+				continue;
+			int seen = 0;
+			for (int i = 0; i < n; i++)
+				seen |= fabs(p[i].depth - d) < 1e-9;
+			if (seen)
+				continue;
+			if (n == cap) {
+				cap *= 2;
+				p = sw_xrealloc(p, sizeof *p * (size_t)cap);
+			}
+			struct model *md = &p[n];
+			memset(md, 0, sizeof *md);
+			md->depth = d;
+			cfg->depth = d;
+			enum sw_status st = run_model(cfg, md, err);
+			if (st != SW_OK) {
+				for (int i = 0; i <= n; i++)
+					free(p[i].lam);
+				free(p);
+				return st;
+			}
+			analyse(md, tests, ntests);
+			if (verbose) {
+				fprintf(stderr, "\rfit-depth: d = %.2f done (%d)\033[K",
+					d, n + 1);
+				fflush(stderr);
+			}
+			n++;
+			if (b < 0 || better(md, &p[b]))
+				b = n - 1;
+		}
+	}
+	if (verbose)
+		fprintf(stderr, "\r\033[K");
+	double bd = b >= 0 ? p[b].depth : NAN;
+	qsort(p, (size_t)n, sizeof *p, cmp_depth);
+	*best = -1;
+	for (int i = 0; i < n; i++)
+		if (p[i].depth == bd)
+			*best = i;
+	*prof = p;
+	*nprof = n;
+	return SW_OK;
+}
+
+/* ---- output ------------------------------------------------------------- */
+
+static void fmt_ci(char *buf, size_t len, const struct stats_summary *s)
+{
+	if (s->has_ci)
+		snprintf(buf, len, "[%.6g, %.6g]", s->p05_lo, s->p05_hi);
+	else if (s->n > 0)
+		snprintf(buf, len, "none (n < 90)");
+	else
+		snprintf(buf, len, "-");
+}
+
+static void print_table(const struct model *md, const struct stats_summary *ts,
+			long ntests)
+{
+	const struct stats_summary *ms = &md->s;
+	char a[64], b[64];
+	printf("%-24s %-26s %s\n", "", "model", "tests");
+	snprintf(a, sizeof a, "%ld", md->accepted);
+	printf("%-24s %-26s %ld\n", "values", a, ntests);
+	printf("%-24s %-26.6g %.6g\n", "min", ms->min, ts->min);
+	printf("%-24s %-26.6g %.6g\n", "p05 (characteristic)", ms->p05, ts->p05);
+	fmt_ci(a, sizeof a, ms);
+	fmt_ci(b, sizeof b, ts);
+	printf("%-24s %-26s %s\n", "  99 % interval", a, b);
+	printf("%-24s %-26.6g %.6g\n", "p50", ms->p50, ts->p50);
+	printf("%-24s %-26.6g %.6g\n", "p95", ms->p95, ts->p95);
+	printf("%-24s %-26.6g %.6g\n", "max", ms->max, ts->max);
+	printf("%-24s %-26.6g %.6g\n", "mean", ms->mean, ts->mean);
+	printf("%-24s %-26.6g %.6g\n", "std", ms->std, ts->std);
+	if (!ms->has_ci || !ts->has_ci)
+		printf("(no interval: needs at least 90 values)\n");
+}
+
+static void print_ks(const struct model *md)
+{
+	if (!md->ks_ok) {
+		printf("\nno Kolmogorov-Smirnov test: the model has no accepted "
+		       "sample\n");
+		return;
+	}
+	const struct stats_ks *k = &md->ks;
+	printf("\nKolmogorov-Smirnov, two samples (x = model, y = tests), %s "
+	       "p-values:\n", k->exact ? "exact" : "asymptotic");
+	printf("  D  = %.6g   (D+ = %.6g, D- = %.6g)\n", k->d, k->d_plus,
+	       k->d_minus);
+	printf("  p two-sided  %-12.6g H1: the distributions differ\n",
+	       k->p_two_sided);
+	printf("  p greater    %-12.6g H1: model CDF above the tests' "
+	       "(model < tests)\n", k->p_greater);
+	printf("  p less       %-12.6g H1: model CDF below the tests' "
+	       "(model > tests)\n", k->p_less);
+}
+
+static void json_summary(struct json *j, const struct stats_summary *s)
+{
+	json_key(j, "lambda");
+	json_object_begin(j);
+	json_key(j, "min");
+	json_double(j, s->min);
+	json_key(j, "p05");
+	json_double(j, s->p05);
+	json_key(j, "p50");
+	json_double(j, s->p50);
+	json_key(j, "p95");
+	json_double(j, s->p95);
+	json_key(j, "max");
+	json_double(j, s->max);
+	json_key(j, "mean");
+	json_double(j, s->mean);
+	json_key(j, "std");
+	json_double(j, s->std);
+	json_object_end(j);
+	json_key(j, "p05_ci99");
+	if (s->has_ci) {
+		json_array_begin(j);
+		json_double(j, s->p05_lo);
+		json_double(j, s->p05_hi);
+		json_array_end(j);
+	} else {
+		json_null(j);
+	}
+}
+
+static void json_ks(struct json *j, const struct model *md)
+{
+	if (!md->ks_ok) {
+		json_null(j);
+		return;
+	}
+	json_object_begin(j);
+	json_key(j, "statistic");
+	json_double(j, md->ks.d);
+	json_key(j, "d_plus");
+	json_double(j, md->ks.d_plus);
+	json_key(j, "d_minus");
+	json_double(j, md->ks.d_minus);
+	json_key(j, "p_two_sided");
+	json_double(j, md->ks.p_two_sided);
+	json_key(j, "p_less");
+	json_double(j, md->ks.p_less);
+	json_key(j, "p_greater");
+	json_double(j, md->ks.p_greater);
+	json_key(j, "exact");
+	json_bool(j, md->ks.exact);
+	json_object_end(j);
+}
+
+/* ---- the command -------------------------------------------------------- */
+
+int cmd_compare(int argc, char **argv)
+{
+	struct compare_args a;
+	int rc = parse_args(argc, argv, &a);
+	if (rc)
+		return rc < 0 ? 0 : rc;
+	struct wall *w;
+	if ((rc = cli_load_wall(a.wall, &w)))
+		return rc;
+
+	char err[SW_ERRLEN];
+	int status = 0;
+	double *tests = NULL;
+	long ntests = 0;
+	struct model *prof = NULL, one;
+	int nprof = 0, best = -1;
+	memset(&one, 0, sizeof one);
+
+	if (a.tests) {
+		if (read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
+			fprintf(stderr, "%s\n", err);
+			status = 2;
+			goto out;
+		}
+	} else if (w->ntests > 0) {
+		ntests = w->ntests;
+		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
+		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
+	}
+	if (ntests == 0) {
+		status = cli_usage_error(CMD, "no experimental loads: %s%s%s",
+					 a.tests ? a.tests : a.wall,
+					 a.tests ? " holds no load" :
+					 " has no tests: key",
+					 a.tests ? "" : "; give --tests FILE");
+		goto out;
+	}
+	if (a.fit_depth && w->anywhere) {
+		status = cli_usage_error(CMD, "--fit-depth: %s draws its contact "
+					 "points anywhere (contacts.positions): "
+					 "there is no depth to fit", a.wall);
+		goto out;
+	}
+	if (a.depth >= 0 && w->anywhere) {
+		status = cli_usage_error(CMD, "--depth: %s draws its contact "
+					 "points anywhere: there is no depth",
+					 a.wall);
+		goto out;
+	}
+
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	if (a.n_set)
+		cfg.n = a.n;
+	if (a.seed_set)
+		cfg.seed = a.seed;
+	cfg.threads = a.threads ? a.threads : cli_ncpu();
+	cfg.depth = a.depth;
+	if (cfg.n < 1) {
+		status = cli_usage_error(CMD, "no samples to compute (-n)");
+		goto out;
+	}
+
+	struct model *md = &one;
+	if (a.samples) {
+		long n;
+		if (runlog_read_loads(a.samples, &one.lam, &n, err) != SW_OK) {
+			fprintf(stderr, "%s\n", err);
+			status = 2;
+			goto out;
+		}
+		one.samples = one.accepted = n;
+		one.depth = NAN;
+		analyse(&one, tests, ntests);
+	} else if (a.fit_depth) {
+		if (fit_depth(&cfg, tests, ntests, &prof, &nprof, &best,
+			      isatty(STDERR_FILENO), err) != SW_OK) {
+			fprintf(stderr, "slipwall compare: %s\n", err);
+			status = 1;
+			goto out;
+		}
+		if (best < 0) {
+			fprintf(stderr, "slipwall compare: no depth gave an "
+				"accepted sample: the analysis failed\n");
+			status = 1;
+			goto out;
+		}
+		md = &prof[best];
+	} else {
+		if (run_model(&cfg, &one, err) != SW_OK) {
+			fprintf(stderr, "slipwall compare: %s\n", err);
+			status = 1;
+			goto out;
+		}
+		one.depth = cfg.depth < 0 ? w->depth : cfg.depth;
+		analyse(&one, tests, ntests);
+	}
+
+	struct stats_summary ts;
+	stats_summarise(tests, (size_t)ntests, &ts);
+
+	if (a.json) {
+		struct json j;
+		json_init(&j, stdout, 1);
+		json_object_begin(&j);
+		json_key(&j, "wall");
+		json_string(&j, a.wall);
+		json_key(&j, "model");
+		json_object_begin(&j);
+		json_key(&j, "source");
+		json_string(&j, a.samples ? a.samples : "run");
+		if (!a.samples) {
+			json_key(&j, "seed");
+			json_int(&j, (long long)cfg.seed);
+			json_key(&j, "depth");
+			if (w->anywhere)
+				json_null(&j);
+			else
+				json_double(&j, md->depth);
+			json_key(&j, "samples");
+			json_int(&j, md->samples);
+		}
+		json_key(&j, "accepted");
+		json_int(&j, md->accepted);
+		json_summary(&j, &md->s);
+		json_object_end(&j);
+		json_key(&j, "tests");
+		json_object_begin(&j);
+		json_key(&j, "source");
+		json_string(&j, a.tests ? a.tests : "wall");
+		json_key(&j, "n");
+		json_int(&j, ntests);
+		json_summary(&j, &ts);
+		json_object_end(&j);
+		json_key(&j, "ks");
+		json_ks(&j, md);
+		if (a.fit_depth) {
+			json_key(&j, "fit_depth");
+			json_object_begin(&j);
+			json_key(&j, "best_depth");
+			json_double(&j, md->depth);
+			json_key(&j, "profile");
+			json_array_begin(&j);
+			for (int i = 0; i < nprof; i++) {
+				json_object_begin(&j);
+				json_key(&j, "depth");
+				json_double(&j, prof[i].depth);
+				json_key(&j, "samples");
+				json_int(&j, prof[i].samples);
+				json_key(&j, "accepted");
+				json_int(&j, prof[i].accepted);
+				json_key(&j, "p05");
+				json_double(&j, prof[i].s.p05);
+				json_key(&j, "ks_statistic");
+				json_double(&j, prof[i].ks_ok ? prof[i].ks.d : NAN);
+				json_key(&j, "p_two_sided");
+				json_double(&j, prof[i].ks_ok ?
+					    prof[i].ks.p_two_sided : NAN);
+				json_object_end(&j);
+			}
+			json_array_end(&j);
+			json_object_end(&j);
+		}
+		json_object_end(&j);
+		json_end(&j);
+	} else {
+		printf("%s  [%s]\n", w->name ? w->name : a.wall, a.wall);
+		if (a.samples)
+			printf("model: %ld accepted loads from %s\n", md->accepted,
+			       a.samples);
+		else
+			printf("model: %ld of %ld samples accepted (seed %lu, %s "
+			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
+			       a.fit_depth ? "best depth" : "depth", md->depth);
+		printf("tests: %ld loads from %s\n\n", ntests,
+		       a.tests ? a.tests : "the wall's tests: key");
+		if (a.fit_depth) {
+			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
+			       "p05", "KS D", "p two-sided");
+			for (int i = 0; i < nprof; i++) {
+				const struct model *p = &prof[i];
+				printf("%-7.2f %5.1f %%    %-12.6g %-10.4g %-11.4g%s\n",
+				       p->depth, p->samples ? 100.0 *
+				       (double)p->accepted / (double)p->samples : 0.0,
+				       p->s.p05, p->ks_ok ? p->ks.d : NAN,
+				       p->ks_ok ? p->ks.p_two_sided : NAN,
+				       i == best ? "  <- best" : "");
+			}
+			printf("best depth %.2f: KS distance %.4g, p = %.4g "
+			       "(two-sided)\n\n", md->depth, md->ks.d,
+			       md->ks.p_two_sided);
+		}
+		print_table(md, &ts, ntests);
+		print_ks(md);
+	}
+	if (md->accepted == 0) {
+		fprintf(stderr, "slipwall compare: no model sample was accepted: "
+			"the analysis failed\n");
+		status = 1;
+	}
+out:
+	for (int i = 0; i < nprof; i++)
+		free(prof[i].lam);
+	free(prof);
+	free(one.lam);
+	free(tests);
+	wall_free(w);
+	return status;
+}

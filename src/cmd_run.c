@@ -1,0 +1,674 @@
+/*
+ * cmd_run.c - `slipwall run`: the Monte Carlo analysis from the command
+ * line (SPEC sections 2 and 4; docs/run.md is the user's page).
+ *
+ * The worker pool (mc.c) computes the samples; this thread pops them in
+ * index order, writes each one's row to the samples file (runlog.c: one
+ * write(2) per row), feeds the tally (tally.c) and, when stderr is a
+ * terminal, redraws a progress line at most ten times a second.  At the
+ * end it prints the summary, for people or as JSON.
+ *
+ * Stopping: SIGINT, SIGTERM and SIGHUP arrive on this thread (mc_start
+ * blocks them in the workers).  The handler only records the signal and
+ * calls mc_stop(), which is async-signal-safe (a signal ignored when the
+ * program starts, as under nohup, stays ignored); the handler is one-shot
+ * (SA_RESETHAND), so a second Ctrl-C kills at once - the samples file
+ * still holds complete rows only.  After a stop the loop keeps popping:
+ * every sample finished in order is written and counted, then the
+ * summary of what was done is printed and the exit status is 1
+ * ("interrupted", SW_EINTR): the run did not do what was asked.
+ *
+ * --until-ci W stops at the first sample count at which the 99 %
+ * interval of p05 is narrower than W times p05.  Samples the pool
+ * finished beyond that point are discarded, so the result does not
+ * depend on the thread count or the timing.  Finding the interval's
+ * ranks costs O(n) (stats_quantile_ci_ranks), so the test is made after
+ * every accepted sample up to 1000 of them, then after every
+ * ceil(n/1000)-th: a stop at most 0.1 % late, at a constant cost per
+ * sample.  The progress line refreshes its interval at most once a
+ * second beyond 20000 accepted samples, for the same reason.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "slipwall/json.h"
+#include "slipwall/mc.h"
+#include "slipwall/runlog.h"
+#include "slipwall/stats.h"
+#include "slipwall/tally.h"
+
+#define CMD "run"
+#define TOP_MECHANISMS 8	/* in the summary for people */
+
+struct run_args {
+	const char *wall;
+	const char *samples;	/* --samples: the CSV to write */
+	const char *positions;	/* --positions: a CSV to replay */
+	long n;			/* 0: the wall's analysis.samples */
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;		/* 0: the number of CPUs */
+	double depth;		/* < 0: the wall's */
+	double until_ci;	/* 0: off */
+	int json;
+};
+
+enum stop_reason { STOP_NONE, STOP_SIGNAL, STOP_UNTIL_CI, STOP_WRITE };
+
+/* The pool and the signal that stopped it.  Globals because a signal
+ * handler has no other way to reach them; set before the handlers are
+ * installed, cleared after they are removed. */
+static struct mc *volatile run_mc;
+static volatile sig_atomic_t run_signal;
+
+static void on_signal(int sig)
+{
+	run_signal = sig;
+	if (run_mc)
+		mc_stop(run_mc);
+}
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
+		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
+		"                    [--depth D] [--until-ci W] [--json]\n"
+		"\n"
+		"Monte Carlo analysis (SPEC section 2): N samples of the collapse\n"
+		"load with random contact points, their statistics and mechanisms.\n"
+		"\n"
+		"  -n N                 samples (default: the wall's analysis.samples)\n"
+		"  --seed S             random seed (default: the wall's analysis.seed)\n"
+		"  --threads T          worker threads (default: the number of CPUs);\n"
+		"                       the results do not depend on it\n"
+		"  --samples FILE.csv   write one row per sample, as it is computed\n"
+		"  --positions FILE.csv replay the contact positions of a samples file\n"
+		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
+		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
+		"                       than W times p05 (at most N samples)\n"
+		"  --json               print the summary as JSON\n"
+		"\n"
+		"Ctrl-C stops cleanly: the summary of the samples done, exit status 1.\n");
+}
+
+/* "--opt VALUE" or "--opt=VALUE": the value, advancing *i; NULL if this
+ * is not the option.  *missing is set when the value is absent. */
+static const char *opt_value(int argc, char **argv, int *i, const char *name,
+			     int *missing)
+{
+	const char *a = argv[*i];
+	size_t len = strlen(name);
+	if (strncmp(a, name, len))
+		return NULL;
+	if (a[len] == '=')
+		return a + len + 1;
+	if (a[len])
+		return NULL;
+	if (*i + 1 >= argc) {
+		*missing = 1;
+		return NULL;
+	}
+	return argv[++*i];
+}
+
+static int parse_args(int argc, char **argv, struct run_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0;
+		long l;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if (!strcmp(s, "--json")) {
+			a->json = 1;
+		} else if ((v = opt_value(argc, argv, &i, "-n", &missing))) {
+			if (cli_parse_long(v, 1, 1000000000L, &a->n))
+				return cli_usage_error(CMD, "-n: '%s' is not a "
+						       "sample count (1 to 10^9)", v);
+			a->n_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--seed", &missing))) {
+			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
+				return cli_usage_error(CMD, "--seed: '%s' is not a "
+						       "whole number from 0 to 2^31-1", v);
+			a->seed = (unsigned long)l;
+			a->seed_set = 1;
+		} else if ((v = opt_value(argc, argv, &i, "--threads", &missing))) {
+			if (cli_parse_long(v, 1, 1024, &l))
+				return cli_usage_error(CMD, "--threads: '%s' is not "
+						       "a thread count (1 to 1024)", v);
+			a->threads = (int)l;
+		} else if ((v = opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if ((v = opt_value(argc, argv, &i, "--positions", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--positions: empty file name");
+			a->positions = v;
+		} else if ((v = opt_value(argc, argv, &i, "--depth", &missing))) {
+			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
+			    a->depth > 0.5)
+				return cli_usage_error(CMD, "--depth: '%s' is not a "
+						       "depth between 0 and 0.5", v);
+		} else if ((v = opt_value(argc, argv, &i, "--until-ci", &missing))) {
+			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
+				return cli_usage_error(CMD, "--until-ci: '%s' is not "
+						       "a relative width > 0", v);
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall run WALL.yaml)");
+	if (a->samples && a->positions && !strcmp(a->samples, a->positions))
+		return cli_usage_error(CMD, "--samples would overwrite the "
+				       "--positions file '%s'", a->positions);
+	if (a->positions && (a->seed_set || a->depth >= 0))
+		return cli_usage_error(CMD, "--positions replays the contact "
+				       "positions of a file: --seed and --depth "
+				       "do not apply");
+	return 0;
+}
+
+/* ---- the 99 % interval of p05, incrementally ------------------------- */
+
+/* The ranks of the interval depend on n only; they are found again only
+ * when the number of accepted samples changed. */
+struct ci_state {
+	size_t n;		/* accepted count the ranks belong to */
+	int ok;
+	size_t lo, hi;
+};
+
+static int p05_interval(const struct tally *t, struct ci_state *c,
+			double *p05, double *lo, double *hi)
+{
+	size_t n = t->lam.n;
+	if (n != c->n) {
+		c->n = n;
+		c->ok = stats_quantile_ci_ranks(n, 0.05, 0.99, &c->lo,
+						&c->hi) == 0;
+	}
+	*p05 = stats_quantile_sorted(t->lam.x, n, 0.05);
+	if (!c->ok) {
+		*lo = *hi = NAN;
+		return 0;
+	}
+	*lo = t->lam.x[c->lo - 1];
+	*hi = t->lam.x[c->hi - 1];
+	return 1;
+}
+
+/* Is the --until-ci test due after the n-th accepted sample? */
+static int ci_due(size_t n)
+{
+	return n <= 1000 || n % ((n + 999) / 1000) == 0;
+}
+
+/* ---- the progress line ------------------------------------------------ */
+
+static void fmt_duration(char *buf, size_t len, double s)
+{
+	if (!isfinite(s) || s < 0) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	long t = (long)(s + 0.5);
+	if (t >= 3600)
+		snprintf(buf, len, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+	else
+		snprintf(buf, len, "%ld:%02ld", t / 60, t % 60);
+}
+
+/* What the progress line shows of the interval, refreshed sparingly. */
+struct progress_ci {
+	struct ci_state ci;
+	double when;		/* elapsed time of the last refresh */
+	int has;
+	double p05, lo, hi;
+};
+
+static void progress(const struct tally *t, struct progress_ci *pc, long n,
+		     double elapsed)
+{
+	double rate = elapsed > 0 ? (double)t->samples / elapsed : 0;
+	char left[32], p05s[96] = "";
+	fmt_duration(left, sizeof left, rate > 0 ? (double)(n - t->samples) /
+		     rate : NAN);
+	if (t->lam.n > 0 && (t->lam.n <= 20000 || elapsed - pc->when >= 1)) {
+		pc->has = p05_interval(t, &pc->ci, &pc->p05, &pc->lo, &pc->hi);
+		pc->when = elapsed;
+	}
+	if (t->lam.n > 0) {
+		if (pc->has)
+			snprintf(p05s, sizeof p05s, "  p05 %.4g [%.4g, %.4g]",
+				 pc->p05, pc->lo, pc->hi);
+		else
+			snprintf(p05s, sizeof p05s, "  p05 %.4g", pc->p05);
+	}
+	fprintf(stderr, "\r%ld/%ld  accepted %ld  rejected %ld  %.1f/s%s  "
+		"left %s\033[K", t->samples, n, t->accepted,
+		t->samples - t->accepted, rate, p05s, left);
+	fflush(stderr);
+}
+
+/* ---- the summary -------------------------------------------------------- */
+
+/* The moving joints of a mechanism, 1-based as in the samples file:
+ * "3s 7s 12h", cut short with "..." to fit len. */
+static void fmt_joints(char *buf, size_t len, const char *joint)
+{
+	size_t used = 0;
+	int any = 0;
+	buf[0] = 0;
+	for (int k = 0; joint[k]; k++) {
+		if (joint[k] == JOINT_CLOSED)
+			continue;
+		char tmp[32];
+		int n = snprintf(tmp, sizeof tmp, "%s%d%c", any ? " " : "",
+				 k + 1, joint[k]);
+		if (used + (size_t)n + 4 >= len) {
+			snprintf(buf + used, len - used, " ...");
+			return;
+		}
+		memcpy(buf + used, tmp, (size_t)n + 1);
+		used += (size_t)n;
+		any = 1;
+	}
+	if (!any)
+		snprintf(buf, len, "(no joint moves)");
+}
+
+struct run_info {
+	const struct run_args *a;
+	const struct wall *w;
+	const struct mc_config *cfg;
+	long requested;
+	enum stop_reason stop;
+	double elapsed;
+};
+
+static double depth_used(const struct run_info *r)
+{
+	return r->cfg->depth < 0 ? r->w->depth : r->cfg->depth;
+}
+
+static const char *stop_name(enum stop_reason s)
+{
+	switch (s) {
+	case STOP_SIGNAL:
+		return "interrupted";
+	case STOP_UNTIL_CI:
+		return "until_ci";
+	case STOP_WRITE:
+		return "write_error";
+	default:
+		return "complete";
+	}
+}
+
+static void print_text(const struct run_info *r, const struct tally *t)
+{
+	struct stats_summary s;
+	tally_summary(t, &s);
+	const struct wall *w = r->w;
+
+	if (w->name)
+		printf("%s  [%s]\n", w->name, r->a->wall);
+	else
+		printf("%s\n", r->a->wall);
+	printf("samples      %ld of %ld (", t->samples, r->requested);
+	if (r->a->positions)
+		printf("positions of %s", r->a->positions);
+	else if (w->anywhere)
+		printf("seed %lu, positions anywhere", r->cfg->seed);
+	else
+		printf("seed %lu, depth %g", r->cfg->seed, depth_used(r));
+	printf(", %d thread%s)\n", r->cfg->threads, r->cfg->threads > 1 ? "s" : "");
+	printf("accepted     %ld (%.1f %%)\n", t->accepted,
+	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
+	printf("rejected     %ld\n", t->samples - t->accepted);
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++)
+		if (k != SAMPLE_ACCEPTED && t->rejected[k])
+			printf("  %-40s %ld\n", sample_status_text(k),
+			       t->rejected[k]);
+	if (s.n > 0) {
+		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
+		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
+		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
+		if (s.has_ci)
+			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
+			       "(characteristic value)\n", s.p05, s.p05_lo,
+			       s.p05_hi);
+		else
+			printf("p05          %.6g, no interval: needs at least "
+			       "90 accepted samples\n", s.p05);
+	}
+	if (t->samples > 0)
+		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",
+		       (double)t->iterations / (double)t->samples,
+		       (double)t->lps / (double)t->samples);
+	printf("speed        %.1f samples/s (%.2f s)\n",
+	       r->elapsed > 0 ? (double)t->samples / r->elapsed : 0.0,
+	       r->elapsed);
+	if (t->nmech > 0) {
+		int idx[TOP_MECHANISMS];
+		int nt = tally_top(t, idx, TOP_MECHANISMS);
+		printf("mechanisms   %d distinct; %s:\n", t->nmech,
+		       t->nmech > nt ? "the most frequent" : "by frequency");
+		for (int i = 0; i < nt; i++) {
+			const struct tally_mech *m = &t->mech[idx[i]];
+			char j[72];
+			fmt_joints(j, sizeof j, m->joint);
+			printf("  %7ld %5.1f %%  lambda %.4g..%.4g  joints %s\n",
+			       m->count, 100.0 * (double)m->count /
+			       (double)t->accepted, m->lam_lo, m->lam_hi, j);
+		}
+		printf("             (joint k as in the samples file's xa_k: "
+		       "s slides, h hinges,\n"
+		       "              H hinges and slides, o opens)\n");
+	}
+	if (r->a->samples)
+		printf("samples file %s\n", r->a->samples);
+}
+
+static void print_json(const struct run_info *r, const struct tally *t)
+{
+	struct stats_summary s;
+	tally_summary(t, &s);
+	struct json j;
+	json_init(&j, stdout, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, r->a->wall);
+	json_key(&j, "name");
+	if (r->w->name)
+		json_string(&j, r->w->name);
+	else
+		json_null(&j);
+	json_key(&j, "positions");
+	json_string(&j, r->a->positions ? "replay" :
+		    r->w->anywhere ? "anywhere" : "depth");
+	json_key(&j, "seed");
+	json_int(&j, (long long)r->cfg->seed);
+	json_key(&j, "depth");
+	if (r->a->positions || r->w->anywhere)
+		json_null(&j);
+	else
+		json_double(&j, depth_used(r));
+	json_key(&j, "threads");
+	json_int(&j, r->cfg->threads);
+	json_key(&j, "requested");
+	json_int(&j, r->requested);
+	json_key(&j, "stopped");
+	json_string(&j, stop_name(r->stop));
+	json_key(&j, "samples");
+	json_int(&j, t->samples);
+	json_key(&j, "accepted");
+	json_int(&j, t->accepted);
+	json_key(&j, "rejected");
+	json_object_begin(&j);
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
+		if (k == SAMPLE_ACCEPTED)
+			continue;
+		json_key(&j, sample_status_name(k));
+		json_int(&j, t->rejected[k]);
+	}
+	json_object_end(&j);
+	json_key(&j, "lambda");
+	json_object_begin(&j);
+	json_key(&j, "min");
+	json_double(&j, s.min);
+	json_key(&j, "p05");
+	json_double(&j, s.p05);
+	json_key(&j, "p50");
+	json_double(&j, s.p50);
+	json_key(&j, "p95");
+	json_double(&j, s.p95);
+	json_key(&j, "max");
+	json_double(&j, s.max);
+	json_key(&j, "mean");
+	json_double(&j, s.mean);
+	json_key(&j, "std");
+	json_double(&j, s.std);
+	json_object_end(&j);
+	json_key(&j, "p05_ci99");
+	if (s.has_ci) {
+		json_array_begin(&j);
+		json_double(&j, s.p05_lo);
+		json_double(&j, s.p05_hi);
+		json_array_end(&j);
+	} else {
+		json_null(&j);
+	}
+	json_key(&j, "iterations_per_sample");
+	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
+	json_key(&j, "lps_per_sample");
+	json_double(&j, t->samples ? (double)t->lps / (double)t->samples : NAN);
+	json_key(&j, "mechanisms");
+	json_array_begin(&j);
+	int *idx = sw_xmalloc(sizeof(int) * ((size_t)t->nmech + 1));
+	int nt = tally_top(t, idx, t->nmech);
+	for (int i = 0; i < nt; i++) {
+		const struct tally_mech *m = &t->mech[idx[i]];
+		json_object_begin(&j);
+		json_key(&j, "joints");
+		json_string(&j, m->joint);
+		json_key(&j, "count");
+		json_int(&j, m->count);
+		json_key(&j, "lambda_lo");
+		json_double(&j, m->lam_lo);
+		json_key(&j, "lambda_hi");
+		json_double(&j, m->lam_hi);
+		json_object_end(&j);
+	}
+	free(idx);
+	json_array_end(&j);
+	json_key(&j, "samples_file");
+	if (r->a->samples)
+		json_string(&j, r->a->samples);
+	else
+		json_null(&j);
+	/* timing: the only fields that change from run to run */
+	json_key(&j, "elapsed_seconds");
+	json_double(&j, r->elapsed);
+	json_key(&j, "samples_per_second");
+	json_double(&j, r->elapsed > 0 ? (double)t->samples / r->elapsed : NAN);
+	json_object_end(&j);
+	json_end(&j);
+}
+
+/* ---- the command -------------------------------------------------------- */
+
+int cmd_run(int argc, char **argv)
+{
+	struct run_args a;
+	int rc = parse_args(argc, argv, &a);
+	if (rc)
+		return rc < 0 ? 0 : rc;
+
+	struct wall *w;
+	if ((rc = cli_load_wall(a.wall, &w)))
+		return rc;
+	if (a.depth >= 0 && w->anywhere) {
+		wall_free(w);
+		return cli_usage_error(CMD, "--depth: %s draws its contact "
+				       "points anywhere (contacts.positions), "
+				       "there is no depth", a.wall);
+	}
+
+	char err[SW_ERRLEN];
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	double *replay = NULL;
+	if (a.positions) {
+		long rows;
+		if (runlog_read_positions(a.positions, w, &replay, &rows,
+					  err) != SW_OK) {
+			fprintf(stderr, "%s\n", err);
+			wall_free(w);
+			return 2;
+		}
+		if (a.n_set && a.n > rows) {
+			free(replay);
+			wall_free(w);
+			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
+					       "samples", a.n, a.positions, rows);
+		}
+		cfg.positions = replay;
+		cfg.n = a.n_set ? a.n : rows;
+	} else {
+		cfg.n = a.n_set ? a.n : w->samples;
+	}
+	if (cfg.n < 1) {
+		free(replay);
+		wall_free(w);
+		return cli_usage_error(CMD, "no samples to compute (-n)");
+	}
+	if (a.seed_set)
+		cfg.seed = a.seed;
+	cfg.depth = a.depth;
+	cfg.threads = a.threads ? a.threads : cli_ncpu();
+
+	struct runlog *log = NULL;
+	if (a.samples && !(log = runlog_open(a.samples, w, err))) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		free(replay);
+		wall_free(w);
+		return 1;
+	}
+
+	double t0 = now();
+	struct mc *m = mc_start(&cfg, err);
+	if (!m) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		runlog_close(log, err);
+		free(replay);
+		wall_free(w);
+		return 1;
+	}
+	run_signal = 0;
+	run_mc = m;
+	struct sigaction sa, old[3];
+	static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART | SA_RESETHAND;
+	/* a signal ignored at start stays ignored (nohup, a background job
+	 * of a shell without job control) */
+	int caught[3];
+	for (int k = 0; k < 3; k++) {
+		sigaction(sigs[k], NULL, &old[k]);
+		caught[k] = old[k].sa_handler != SIG_IGN;
+		if (caught[k])
+			sigaction(sigs[k], &sa, NULL);
+	}
+
+	int tty = isatty(STDERR_FILENO);
+	struct tally t;
+	struct mc_item it;
+	struct ci_state ci = {0};
+	struct progress_ci pci = {0};
+	tally_init(&t, w);
+	mc_item_init(&it, w);
+	enum stop_reason stop = STOP_NONE;
+	double last_draw = 0;
+	enum sw_status wst = SW_OK;
+	char werr[SW_ERRLEN] = "";
+	for (;;) {
+		int got = mc_pop(m, &it, tty ? 100 : -1);
+		if (got < 0)
+			break;
+		if (got > 0 && stop != STOP_UNTIL_CI && stop != STOP_WRITE) {
+			if (log && (wst = runlog_write(log, &it, werr)) != SW_OK) {
+				/* the row is lost: count nothing more */
+				stop = STOP_WRITE;
+				mc_stop(m);
+				continue;
+			}
+			tally_add(&t, &it);
+			double p05, lo, hi;
+			if (a.until_ci > 0 && it.status == SAMPLE_ACCEPTED &&
+			    ci_due(t.lam.n) &&
+			    p05_interval(&t, &ci, &p05, &lo, &hi) && p05 > 0 &&
+			    hi - lo < a.until_ci * p05) {
+				stop = STOP_UNTIL_CI;
+				mc_stop(m);
+			}
+		}
+		if (tty && now() - last_draw >= 0.1) {
+			last_draw = now();
+			progress(&t, &pci, cfg.n, last_draw - t0);
+		}
+	}
+	double elapsed = now() - t0;
+	if (tty)
+		fprintf(stderr, "\r\033[K");
+	int sig = run_signal;
+	if (sig && stop == STOP_NONE)
+		stop = STOP_SIGNAL;
+	for (int k = 0; k < 3; k++)
+		if (caught[k])
+			sigaction(sigs[k], &old[k], NULL);
+	run_mc = NULL;
+	mc_free(m);
+	mc_item_free(&it);
+
+	enum sw_status cst = runlog_close(log, err);
+
+	struct run_info info = {&a, w, &cfg, cfg.n, stop, elapsed};
+	if (a.json)
+		print_json(&info, &t);
+	else
+		print_text(&info, &t);
+	fflush(stdout);
+
+	int status = 0;
+	if (stop == STOP_WRITE) {
+		fprintf(stderr, "slipwall run: %s\n", werr);
+		status = 1;
+	} else if (cst != SW_OK) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		status = 1;
+	}
+	if (stop == STOP_SIGNAL) {
+		fprintf(stderr, "slipwall run: interrupted (%s) after %ld of %ld "
+			"samples\n", strsignal(sig), t.samples, cfg.n);
+		status = sw_status_exit(SW_EINTR);
+	}
+	if (t.accepted == 0 && t.samples > 0) {
+		fprintf(stderr, "slipwall run: no sample was accepted: the "
+			"analysis failed (see the rejections above)\n");
+		status = 1;
+	}
+	tally_free(&t);
+	free(replay);
+	wall_free(w);
+	return status;
+}

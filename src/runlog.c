@@ -1,0 +1,430 @@
+/*
+ * runlog.c - the samples file: writing rows as they come, reading them
+ * back; see runlog.h.
+ *
+ * Writing: the `run` command (and the workbench) calls runlog_write()
+ * for every sample popped from the pool, in index order.  The row is
+ * formatted into a buffer owned by the log and handed to the kernel with
+ * one write(2): no stdio buffer holds half a row, so a process killed at
+ * any instant leaves a file of complete rows (a write to a regular file
+ * is only ever short when the disk is full, which is reported).  Numbers
+ * are printed with 17 significant digits, so positions read back are
+ * bit-identical and a replay (--positions) recomputes the same samples.
+ *
+ * Reading: a small strict CSV reader (no quoting: the file never needs
+ * it).  Every field is checked and a problem is reported at its
+ * FILE:LINE:COLUMN.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "slipwall/runlog.h"
+
+struct runlog {
+	char *path;
+	int fd;
+	int nifaces;
+	int failed;		/* a write failed: close reports it */
+	char *buf;		/* the row being formatted */
+	size_t len, cap;
+};
+
+/* ---- writing ----------------------------------------------------------- */
+
+static void put(struct runlog *l, const char *s, size_t n)
+{
+	if (l->len + n + 1 > l->cap) {
+		while (l->len + n + 1 > l->cap)
+			l->cap = l->cap ? 2 * l->cap : 4096;
+		l->buf = sw_xrealloc(l->buf, l->cap);
+	}
+	memcpy(l->buf + l->len, s, n);
+	l->len += n;
+}
+
+static void put_str(struct runlog *l, const char *s)
+{
+	put(l, s, strlen(s));
+}
+
+/* A number with 17 significant digits (exact round trip); empty when
+ * not finite (not computed). */
+static void put_num(struct runlog *l, double v)
+{
+	char tmp[40];
+	if (!isfinite(v))
+		return;
+	int n = snprintf(tmp, sizeof tmp, "%.17g", v);
+	put(l, tmp, (size_t)n);
+}
+
+/* Hand the buffer to the kernel: one write(2) unless the kernel takes
+ * less (a full disk), then the rest and an error. */
+static enum sw_status flush_row(struct runlog *l, char *err)
+{
+	size_t off = 0;
+	while (off < l->len) {
+		ssize_t n = write(l->fd, l->buf + off, l->len - off);
+		if (n < 0 && errno == EINTR)
+			continue;
+		if (n <= 0) {
+			l->failed = 1;
+			l->len = 0;
+			return sw_fail(err, SW_EIO, "%s: cannot write: %s",
+				       l->path, n < 0 ? strerror(errno) :
+				       "nothing written");
+		}
+		off += (size_t)n;
+	}
+	l->len = 0;
+	return SW_OK;
+}
+
+struct runlog *runlog_open(const char *path, const struct wall *w, char *err)
+{
+	int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+	if (fd < 0) {
+		sw_fail(err, SW_EIO, "%s: cannot create: %s", path,
+			strerror(errno));
+		return NULL;
+	}
+	struct runlog *l = sw_xcalloc(1, sizeof *l);
+	l->path = sw_xstrdup(path);
+	l->fd = fd;
+	l->nifaces = w->nifaces;
+	put_str(l, "sample,status,lambda_max,lambda_min,iterations");
+	for (int k = 1; k <= w->nifaces; k++) {
+		char tmp[48];
+		int n = snprintf(tmp, sizeof tmp, ",xa_%d,xb_%d", k, k);
+		put(l, tmp, (size_t)n);
+	}
+	put(l, "\n", 1);
+	if (flush_row(l, err) != SW_OK) {
+		close(fd);
+		free(l->buf);
+		free(l->path);
+		free(l);
+		return NULL;
+	}
+	return l;
+}
+
+enum sw_status runlog_write(struct runlog *l, const struct mc_item *it,
+			    char *err)
+{
+	char tmp[64];
+	int n = snprintf(tmp, sizeof tmp, "%ld,%s,", it->index,
+			 sample_status_name(it->status));
+	put(l, tmp, (size_t)n);
+	put_num(l, it->lambda_max);
+	put(l, ",", 1);
+	/* the result exists only for accepted samples */
+	if (it->status == SAMPLE_ACCEPTED)
+		put_num(l, it->lambda_min);
+	n = snprintf(tmp, sizeof tmp, ",%d", it->iterations);
+	put(l, tmp, (size_t)n);
+	for (int k = 0; k < 2 * l->nifaces; k++) {
+		put(l, ",", 1);
+		put_num(l, it->xi[k]);
+	}
+	put(l, "\n", 1);
+	return flush_row(l, err);
+}
+
+enum sw_status runlog_close(struct runlog *l, char *err)
+{
+	if (!l)
+		return SW_OK;
+	enum sw_status st = SW_OK;
+	if (l->failed)
+		st = sw_fail(err, SW_EIO, "%s: some rows could not be written",
+			     l->path);
+	if (close(l->fd) != 0 && st == SW_OK)
+		st = sw_fail(err, SW_EIO, "%s: %s", l->path, strerror(errno));
+	free(l->buf);
+	free(l->path);
+	free(l);
+	return st;
+}
+
+const char *runlog_path(const struct runlog *l)
+{
+	return l->path;
+}
+
+/* ---- reading ----------------------------------------------------------- */
+
+#define FIXED_COLS 5	/* sample,status,lambda_max,lambda_min,iterations */
+
+static const char *fixed_names[FIXED_COLS] = {
+	"sample", "status", "lambda_max", "lambda_min", "iterations",
+};
+
+/* A CSV file being read: the current line split in place into fields,
+ * each with its 1-based column for messages. */
+struct reader {
+	const char *path;
+	FILE *f;
+	char *line;
+	size_t cap, len;	/* len: of the line before splitting */
+	long lineno;
+	char **field;
+	int *col;
+	int nfield, capfield;
+};
+
+static int reader_open(struct reader *r, const char *path, char *err)
+{
+	memset(r, 0, sizeof *r);
+	r->path = path;
+	r->f = fopen(path, "r");
+	if (!r->f) {
+		sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
+			strerror(errno));
+		return -1;
+	}
+	return 0;
+}
+
+static void reader_close(struct reader *r)
+{
+	if (r->f)
+		fclose(r->f);
+	free(r->line);
+	free(r->field);
+	free(r->col);
+}
+
+/* The next line, split at commas.  Returns 1, 0 at the end of the file,
+ * -1 (err filled) on a read error or a NUL byte. */
+static int reader_next(struct reader *r, char *err)
+{
+	errno = 0;
+	ssize_t n = getline(&r->line, &r->cap, r->f);
+	if (n < 0) {
+		if (ferror(r->f)) {
+			sw_fail(err, SW_EINPUT, "%s:%ld: cannot read: %s",
+				r->path, r->lineno + 1, strerror(errno));
+			return -1;
+		}
+		return 0;
+	}
+	r->lineno++;
+	if ((size_t)n != strlen(r->line)) {
+		sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text file",
+			r->path, r->lineno, strlen(r->line) + 1);
+		return -1;
+	}
+	while (n > 0 && (r->line[n - 1] == '\n' || r->line[n - 1] == '\r'))
+		r->line[--n] = 0;
+	r->len = (size_t)n;
+	r->nfield = 0;
+	char *p = r->line;
+	for (;;) {
+		if (r->nfield == r->capfield) {
+			r->capfield = r->capfield ? 2 * r->capfield : 64;
+			r->field = sw_xrealloc(r->field, sizeof *r->field *
+					       (size_t)r->capfield);
+			r->col = sw_xrealloc(r->col, sizeof *r->col *
+					     (size_t)r->capfield);
+		}
+		r->field[r->nfield] = p;
+		r->col[r->nfield] = (int)(p - r->line) + 1;
+		r->nfield++;
+		char *c = strchr(p, ',');
+		if (!c)
+			break;
+		*c = 0;
+		p = c + 1;
+	}
+	return 1;
+}
+
+static enum sw_status at(const struct reader *r, int field, char *err,
+			 const char *what)
+{
+	return sw_fail(err, SW_EINPUT, "%s:%ld:%d: %s", r->path, r->lineno,
+		       field < r->nfield ? r->col[field] :
+		       (int)r->len + 1, what);
+}
+
+/* Check the header: the five fixed columns, then xa_k,xb_k pairs.
+ * *m gets the number of interfaces. */
+static enum sw_status read_header(struct reader *r, int *m, char *err)
+{
+	int got = reader_next(r, err);
+	if (got < 0)
+		return SW_EINPUT;
+	if (got == 0)
+		return sw_fail(err, SW_EINPUT, "%s:1:1: empty file: not a "
+			       "samples file", r->path);
+	for (int k = 0; k < FIXED_COLS; k++) {
+		if (k >= r->nfield || strcmp(r->field[k], fixed_names[k])) {
+			char msg[128];
+			snprintf(msg, sizeof msg, "expected column '%s': not a "
+				 "samples file of 'slipwall run'",
+				 fixed_names[k]);
+			return at(r, k, err, msg);
+		}
+	}
+	int extra = r->nfield - FIXED_COLS;
+	if (extra % 2)
+		return at(r, r->nfield - 1, err,
+			  "the contact positions come in xa_k,xb_k pairs");
+	for (int k = 0; k < extra; k++) {
+		char want[48];
+		snprintf(want, sizeof want, "%s_%d", k % 2 ? "xb" : "xa",
+			 k / 2 + 1);
+		if (strcmp(r->field[FIXED_COLS + k], want)) {
+			char msg[96];
+			snprintf(msg, sizeof msg, "expected column '%s'", want);
+			return at(r, FIXED_COLS + k, err, msg);
+		}
+	}
+	*m = extra / 2;
+	return SW_OK;
+}
+
+static int parse_num(const char *s, double *v)
+{
+	char *end;
+	if (!*s)
+		return -1;
+	/* ERANGE on underflow is fine (a subnormal is still a number); an
+	 * overflow gives an infinity */
+	*v = strtod(s, &end);
+	if (*end || !isfinite(*v))
+		return -1;
+	return 0;
+}
+
+/* Check the fixed fields of a data row; *status gets its status. */
+static enum sw_status check_row(struct reader *r, int m, int *status,
+				char *err)
+{
+	if (r->nfield != FIXED_COLS + 2 * m) {
+		char msg[128];
+		snprintf(msg, sizeof msg, "%d fields, the header has %d%s",
+			 r->nfield, FIXED_COLS + 2 * m,
+			 r->nfield < FIXED_COLS + 2 * m ?
+			 " (an incomplete row?)" : "");
+		return at(r, r->nfield < FIXED_COLS + 2 * m ? r->nfield :
+			  FIXED_COLS + 2 * m, err, msg);
+	}
+	*status = sample_status_parse(r->field[1]);
+	if (*status < 0)
+		return at(r, 1, err, "unknown status (accepted or a "
+			  "rejection reason such as no_mechanism)");
+	return SW_OK;
+}
+
+enum sw_status runlog_read_positions(const char *path, const struct wall *w,
+				     double **xi, long *rows, char *err)
+{
+	struct reader r;
+	if (reader_open(&r, path, err))
+		return SW_EINPUT;
+	int m;
+	enum sw_status st = read_header(&r, &m, err);
+	if (st == SW_OK && m != w->nifaces) {
+		char msg[160];
+		snprintf(msg, sizeof msg, "the file has the contact positions "
+			 "of %d interfaces, the wall has %d: a samples file of "
+			 "another wall?", m, w->nifaces);
+		st = at(&r, FIXED_COLS, err, msg);
+	}
+	double *x = NULL;
+	long n = 0, cap = 0;
+	size_t per = 2 * (size_t)m;
+	while (st == SW_OK) {
+		int got = reader_next(&r, err);
+		if (got <= 0) {
+			if (got < 0)
+				st = SW_EINPUT;
+			break;
+		}
+		int status;
+		if ((st = check_row(&r, m, &status, err)) != SW_OK)
+			break;
+		if (n == cap) {
+			cap = cap ? 2 * cap : 256;
+			x = sw_xrealloc(x, sizeof(double) * per * (size_t)cap + 1);
+		}
+		double *row = x + per * (size_t)n;
+		for (int k = 0; k < 2 * m && st == SW_OK; k++) {
+			double v = 0;
+			if (parse_num(r.field[FIXED_COLS + k], &v))
+				st = at(&r, FIXED_COLS + k, err,
+					"a contact position must be a number");
+			else if (v < 0 || v > 1)
+				st = at(&r, FIXED_COLS + k, err,
+					"a contact position must be between "
+					"0 and 1");
+			else if (k % 2 && v < row[k - 1])
+				st = at(&r, FIXED_COLS + k, err,
+					"xb must not be less than xa");
+			row[k] = v;
+		}
+		n++;
+	}
+	if (st == SW_OK && n == 0)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: no samples in the file",
+			     path, r.lineno + 1);
+	reader_close(&r);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*xi = x;
+	*rows = n;
+	return SW_OK;
+}
+
+enum sw_status runlog_read_loads(const char *path, double **lam, long *n,
+				 char *err)
+{
+	struct reader r;
+	if (reader_open(&r, path, err))
+		return SW_EINPUT;
+	int m;
+	enum sw_status st = read_header(&r, &m, err);
+	double *x = NULL;
+	long k = 0, cap = 0;
+	while (st == SW_OK) {
+		int got = reader_next(&r, err);
+		if (got <= 0) {
+			if (got < 0)
+				st = SW_EINPUT;
+			break;
+		}
+		int status;
+		if ((st = check_row(&r, m, &status, err)) != SW_OK)
+			break;
+		if (status != SAMPLE_ACCEPTED)
+			continue;
+		double v;
+		if (parse_num(r.field[3], &v) || v < 0) {
+			st = at(&r, 3, err, "an accepted sample needs a "
+				"lambda_min >= 0");
+			break;
+		}
+		if (k == cap) {
+			cap = cap ? 2 * cap : 256;
+			x = sw_xrealloc(x, sizeof(double) * (size_t)cap);
+		}
+		x[k++] = v;
+	}
+	reader_close(&r);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*lam = x;
+	*n = k;
+	return SW_OK;
+}

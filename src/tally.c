@@ -1,0 +1,163 @@
+/*
+ * tally.c - what a run has found so far; see tally.h.
+ *
+ * The consumer of the Monte Carlo pool (the `run` command, the
+ * workbench's UI thread) feeds every popped sample to tally_add().  The
+ * accepted loads go into a sorted array (running percentiles), the
+ * mechanisms into an array in order of first appearance.  A mechanism is
+ * found again by its joint-state string through an open-addressing hash
+ * table of indices into that array (FNV-1a, linear probing, kept at most
+ * half full), so a run of 10^5 samples on a wall with thousands of
+ * interfaces costs one hash of the string per sample, not a scan of every
+ * mechanism seen.  Nothing here is shared between threads.
+ */
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/tally.h"
+
+void tally_init(struct tally *t, const struct wall *w)
+{
+	memset(t, 0, sizeof *t);
+	t->nifaces = w->nifaces;
+	t->nblocks = w->nblocks;
+}
+
+void tally_free(struct tally *t)
+{
+	for (int k = 0; k < t->nmech; k++) {
+		free(t->mech[k].joint);
+		free(t->mech[k].vel);
+	}
+	free(t->mech);
+	free(t->hash);
+	stats_sorted_free(&t->lam);
+	memset(t, 0, sizeof *t);
+}
+
+static uint64_t fnv1a(const char *s, size_t n)
+{
+	uint64_t h = 1469598103934665603ull;
+	for (size_t i = 0; i < n; i++) {
+		h ^= (unsigned char)s[i];
+		h *= 1099511628211ull;
+	}
+	return h;
+}
+
+/* Rebuild the index with room for twice the mechanisms (power of two). */
+static void rehash(struct tally *t)
+{
+	int cap = t->hashcap ? 2 * t->hashcap : 64;
+	int *h = sw_xmalloc(sizeof(int) * (size_t)cap);
+	for (int i = 0; i < cap; i++)
+		h[i] = -1;
+	for (int k = 0; k < t->nmech; k++) {
+		uint64_t s = fnv1a(t->mech[k].joint, (size_t)t->nifaces);
+		int i = (int)(s & (uint64_t)(cap - 1));
+		while (h[i] >= 0)
+			i = (i + 1) & (cap - 1);
+		h[i] = k;
+	}
+	free(t->hash);
+	t->hash = h;
+	t->hashcap = cap;
+}
+
+/* The index of mechanism `joint` in t->mech, adding it if new. */
+static int find_or_add(struct tally *t, const char *joint, const double *vel,
+		       double lam)
+{
+	size_t len = (size_t)t->nifaces;
+	if (2 * (t->nmech + 1) > t->hashcap)
+		rehash(t);
+	uint64_t s = fnv1a(joint, len);
+	int i = (int)(s & (uint64_t)(t->hashcap - 1));
+	while (t->hash[i] >= 0) {
+		int k = t->hash[i];
+		if (!memcmp(t->mech[k].joint, joint, len))
+			return k;
+		i = (i + 1) & (t->hashcap - 1);
+	}
+	if (t->nmech == t->capmech) {
+		t->capmech = t->capmech ? 2 * t->capmech : 16;
+		t->mech = sw_xrealloc(t->mech, sizeof *t->mech * (size_t)t->capmech);
+	}
+	struct tally_mech *m = &t->mech[t->nmech];
+	m->joint = sw_xmalloc(len + 1);
+	memcpy(m->joint, joint, len);
+	m->joint[len] = 0;
+	m->vel = sw_xmalloc(sizeof(double) * (3 * (size_t)t->nblocks + 1));
+	memcpy(m->vel, vel, sizeof(double) * 3 * (size_t)t->nblocks);
+	m->count = 0;
+	m->lam_lo = m->lam_hi = lam;
+	t->hash[i] = t->nmech;
+	return t->nmech++;
+}
+
+void tally_add(struct tally *t, const struct mc_item *it)
+{
+	t->samples++;
+	t->iterations += it->iterations;
+	t->lps += it->lps;
+	t->compute_seconds += it->seconds;
+	if (it->status != SAMPLE_ACCEPTED) {
+		if ((unsigned)it->status < SAMPLE_STATUS_COUNT)
+			t->rejected[it->status]++;
+		else
+			t->rejected[SAMPLE_NUMERICAL]++;
+		return;
+	}
+	double lam = it->lambda_min;
+	t->accepted++;
+	stats_sorted_insert(&t->lam, lam);
+	t->lam_sum += lam;
+	/* find_or_add may move t->mech: index it afterwards */
+	int k = find_or_add(t, it->joint, it->vel, lam);
+	struct tally_mech *m = &t->mech[k];
+	m->count++;
+	if (lam < m->lam_lo)
+		m->lam_lo = lam;
+	if (lam > m->lam_hi)
+		m->lam_hi = lam;
+}
+
+/* A mechanism's sort key: qsort has no context argument, so the count
+ * travels with the index (no file-static state). */
+struct rank {
+	long count;
+	int k;
+};
+
+static int by_count(const void *a, const void *b)
+{
+	const struct rank *ra = a, *rb = b;
+	if (ra->count != rb->count)
+		return ra->count > rb->count ? -1 : 1;
+	/* equal counts: first appearance first (a stable order that does
+	 * not depend on the thread count) */
+	return (ra->k > rb->k) - (ra->k < rb->k);
+}
+
+int tally_top(const struct tally *t, int *idx, int max)
+{
+	if (max <= 0 || t->nmech == 0)
+		return 0;
+	struct rank *r = sw_xmalloc(sizeof *r * (size_t)t->nmech);
+	for (int k = 0; k < t->nmech; k++) {
+		r[k].count = t->mech[k].count;
+		r[k].k = k;
+	}
+	qsort(r, (size_t)t->nmech, sizeof *r, by_count);
+	int n = t->nmech < max ? t->nmech : max;
+	for (int i = 0; i < n; i++)
+		idx[i] = r[i].k;
+	free(r);
+	return n;
+}
+
+void tally_summary(const struct tally *t, struct stats_summary *s)
+{
+	stats_summarise(t->lam.x, t->lam.n, s);
+}

@@ -1,0 +1,351 @@
+/*
+ * tui.c - the workbench: tui_main, the event loop, signals, and the
+ * dispatcher of screens (main, help).
+ *
+ * One thread (this one) owns the terminal.  It sleeps in poll() on stdin
+ * and on the sampler's wake pipe (mc_wake_fd) for at most 100 ms, then
+ * reads every pending key, pops every sample that is ready (tui_run_pump:
+ * written to the samples CSV and tallied), looks whether the solve
+ * thread has finished, and redraws if anything changed and the last
+ * frame is at least TUI_FRAME old: at most 10 frames a second, a key
+ * answered within 100 ms.
+ *
+ * Signals: SIGINT, SIGTERM and SIGHUP set a flag and stop the current
+ * pool (mc_stop is async-signal-safe); the loop sees the flag, drains
+ * the samples that were being computed into the CSV, closes it, restores
+ * the terminal and returns 0.  The handlers are installed before curses
+ * starts, so ncurses keeps its hands off them; SIGWINCH stays with
+ * ncurses, which turns it into KEY_RESIZE.  Workers block every signal
+ * (mc_start, tui_solve_start), so the handler always runs on this thread
+ * and the pool pointer it reads is never being freed under it.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <langinfo.h>
+#include <locale.h>
+#include <math.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <curses.h>
+
+#include "cli.h"
+#include "slipwall/wallfile.h"
+#include "tui/tui.h"
+
+/* Set by the signal handler, read by the loop. */
+static volatile sig_atomic_t tui_signalled;
+/* The pool the handler stops; written only by the UI thread, which is
+ * also the only thread the handler can interrupt. */
+static struct mc *volatile tui_signal_mc;
+
+static const struct tui_screen tui_screens[TUI_SCREEN_COUNT] = {
+	[TUI_SCREEN_MAIN] = {tui_main_init, tui_main_key, tui_main_draw},
+	[TUI_SCREEN_HELP] = {tui_help_init, tui_help_key, tui_help_draw},
+};
+
+static void tui_on_signal(int sig)
+{
+	struct mc *m = tui_signal_mc;
+	tui_signalled = sig;
+	if (m)
+		mc_stop(m);
+}
+
+void tui_signal_watch(struct mc *m)
+{
+	tui_signal_mc = m;
+}
+
+int tui_signal_pending(void)
+{
+	return tui_signalled != 0;
+}
+
+double tui_now(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_MONOTONIC, &ts);
+	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void tui_message(struct tui *t, int is_err, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(t->msg, sizeof t->msg, fmt, ap);
+	va_end(ap);
+	t->msg_err = is_err;
+}
+
+void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii)
+{
+	mvaddstr(y, x, t->utf8 ? utf8 : ascii);
+}
+
+void tui_text(int y, int x, int w, const char *s)
+{
+	int cols = 0;
+	size_t n = 0;
+	while (s[n]) {
+		if (((unsigned char)s[n] & 0xc0) != 0x80) {
+			if (cols == w)
+				break;
+			cols++;
+		}
+		n++;
+	}
+	if (n)
+		mvaddnstr(y, x, s, (int)n);
+}
+
+const char *tui_lam(const struct tui *t)
+{
+	return t->utf8 ? "\u03bb" : "lam";
+}
+
+const char *tui_mu(const struct tui *t)
+{
+	return t->utf8 ? "\u03bc" : "mu";
+}
+
+void tui_set_wall(struct tui *t, struct wall *nw)
+{
+	tui_run_end(t);
+	if (t->solve)
+		tui_solve_abandon(t->solve);
+	t->solve = NULL;
+	wall_free(t->w);
+	t->w = nw;
+	t->has_std = t->has_gil = t->solve_done = 0;
+	t->mech_sel = 0;
+	tui_run_start(t);
+	t->solve = tui_solve_start(nw);
+}
+
+static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
+{
+	t->screen = id;
+	tui_screens[id].init(t);
+}
+
+static void tui_key(struct tui *t, int ch)
+{
+	enum tui_screen_id next = tui_screens[t->screen].key(t, ch);
+	if (next != t->screen)
+		tui_switch_screen(t, next);
+}
+
+static void tui_draw(struct tui *t)
+{
+	getmaxyx(stdscr, t->rows, t->cols);
+	erase();
+	if (t->rows < TUI_MIN_ROWS || t->cols < TUI_MIN_COLS) {
+		char buf[128];
+		snprintf(buf, sizeof buf,
+			 "terminal too small: %dx%d, the workbench needs %dx%d",
+			 t->cols, t->rows, TUI_MIN_COLS, TUI_MIN_ROWS);
+		mvaddnstr(0, 0, buf, t->cols);
+		mvaddnstr(t->rows > 1 ? 1 : 0, 0, "(sampling goes on; q quits)",
+			  t->cols);
+	} else {
+		tui_screens[t->screen].draw(t);
+	}
+	refresh();
+}
+
+static void tui_colors(struct tui *t)
+{
+	t->colors = has_colors();
+	if (!t->colors)
+		return;
+	start_color();
+	use_default_colors();
+	init_pair(1, COLOR_BLACK, COLOR_YELLOW);	/* moving blocks */
+	init_pair(2, COLOR_RED, -1);			/* the load */
+	init_pair(3, COLOR_CYAN, -1);			/* histogram bars */
+	init_pair(4, COLOR_MAGENTA, -1);		/* markers */
+	init_pair(5, COLOR_WHITE, COLOR_RED);		/* errors */
+	init_pair(6, COLOR_BLACK, COLOR_CYAN);		/* title, status */
+}
+
+/* While curses owns the terminal, stderr goes to a file: nothing that a
+ * library prints (GSL's default error handler, an allocation failure)
+ * may write over the screen.  After endwin() the file is copied to the
+ * real stderr and removed; if the program dies instead, it stays in
+ * $TMPDIR.  Returns the saved descriptor, or -1 (stderr unchanged). */
+static int tui_stderr_begin(char *path, size_t len)
+{
+	const char *dir = getenv("TMPDIR");
+	snprintf(path, len, "%s/slipwall-stderr-XXXXXX",
+		 dir && dir[0] ? dir : "/tmp");
+	int fd = mkstemp(path);
+	if (fd < 0)
+		return -1;
+	fflush(stderr);
+	int saved = dup(STDERR_FILENO);
+	if (saved < 0 || dup2(fd, STDERR_FILENO) < 0) {
+		if (saved >= 0)
+			close(saved);
+		close(fd);
+		unlink(path);
+		return -1;
+	}
+	close(fd);
+	return saved;
+}
+
+static void tui_stderr_end(int saved, const char *path)
+{
+	char buf[4096];
+	size_t n;
+	if (saved < 0)
+		return;
+	fflush(stderr);
+	dup2(saved, STDERR_FILENO);
+	close(saved);
+	FILE *f = fopen(path, "r");
+	if (f) {
+		while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+			fwrite(buf, 1, n, stderr);
+		fclose(f);
+	}
+	unlink(path);
+}
+
+static int tui_signals(void)
+{
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = tui_on_signal;
+	sigemptyset(&sa.sa_mask);
+	/* no SA_RESTART: poll() returns EINTR and the loop looks */
+	if (sigaction(SIGINT, &sa, NULL) || sigaction(SIGTERM, &sa, NULL) ||
+	    sigaction(SIGHUP, &sa, NULL))
+		return -1;
+	signal(SIGPIPE, SIG_IGN);
+	return 0;
+}
+
+int tui_main(const char *path)
+{
+	struct tui tt, *t = &tt;
+	char err[SW_ERRLEN];
+	struct wall *w;
+
+	memset(t, 0, sizeof *t);
+	if (!path)
+		path = cli_demo_wall();
+	if (wallfile_load(path, &w, err) != SW_OK) {
+		fprintf(stderr, "%s\n", err);
+		return 2;
+	}
+	if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+		fprintf(stderr, "slipwall: the workbench needs a terminal "
+				"(use 'slipwall run' for batch work)\n");
+		wall_free(w);
+		return 2;
+	}
+	setlocale(LC_ALL, "");
+	t->utf8 = !strcmp(nl_langinfo(CODESET), "UTF-8");
+	t->threads = cli_ncpu();
+	if (tui_signals()) {
+		fprintf(stderr, "slipwall: cannot install signal handlers\n");
+		wall_free(w);
+		return 1;
+	}
+	char errpath[PATH_MAX];
+	int saved_err = tui_stderr_begin(errpath, sizeof errpath);
+	SCREEN *scr = newterm(NULL, stdout, stdin);
+	if (!scr) {
+		tui_stderr_end(saved_err, errpath);
+		fprintf(stderr, "slipwall: cannot start the terminal (TERM=%s)\n",
+			getenv("TERM") ? getenv("TERM") : "");
+		wall_free(w);
+		return 2;
+	}
+	cbreak();
+	noecho();
+	nonl();
+	keypad(stdscr, TRUE);
+	nodelay(stdscr, TRUE);
+	curs_set(0);
+	set_escdelay(25);
+	tui_colors(t);
+	getmaxyx(stdscr, t->rows, t->cols);
+
+	t->w = w;
+	t->cur_x = t->cur_y = NAN;	/* placed on a block by Tab */
+	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
+		    t->threads);
+	tui_run_start(t);
+	t->solve = tui_solve_start(w);
+	tui_switch_screen(t, TUI_SCREEN_MAIN);
+
+	double last_draw = -1;
+	int dirty = 1, more = 0;
+	while (!t->quit && !tui_signalled) {
+		struct pollfd pf[2];
+		pf[0].fd = STDIN_FILENO;
+		pf[0].events = POLLIN;
+		pf[1].fd = t->run.mc ? mc_wake_fd(t->run.mc) : -1;
+		pf[1].events = POLLIN;
+		int timeout = 100;
+		if (more)
+			timeout = 0;
+		else if (dirty) {
+			double left = last_draw + TUI_FRAME - tui_now();
+			timeout = left <= 0 ? 0 : (int)(left * 1000) + 1;
+		}
+		if (poll(pf, 2, timeout) < 0 && errno != EINTR)
+			break;
+		if (tui_signalled)
+			break;
+
+		int ch;
+		while (!t->quit && (ch = getch()) != ERR) {
+			dirty = 1;
+			if (ch == KEY_RESIZE)
+				getmaxyx(stdscr, t->rows, t->cols);
+			else
+				tui_key(t, ch);
+		}
+		/* pop for at most 50 ms, then come back for the keys */
+		int n = tui_run_pump(t, 0.05);
+		more = n < 0;
+		if (n != 0)
+			dirty = 1;
+		if (t->solve && !t->solve_done &&
+		    tui_solve_poll(t->solve, &t->has_std, &t->lam_std,
+				   &t->has_gil, &t->lam_gil)) {
+			t->solve_done = 1;
+			dirty = 1;
+		}
+		if (dirty && tui_now() - last_draw >= TUI_FRAME) {
+			tui_draw(t);
+			last_draw = tui_now();
+			dirty = 0;
+		}
+	}
+
+	tui_run_end(t);
+	endwin();
+	delscreen(scr);
+	tui_stderr_end(saved_err, errpath);
+	if (t->solve)
+		tui_solve_abandon(t->solve);
+	for (int k = 0; k < t->ncsvs; k++) {
+		printf("samples: %s\n", t->csvs[k]);
+		free(t->csvs[k]);
+	}
+	free(t->csvs);
+	fflush(stdout);
+	wall_free(t->w);
+	return 0;
+}

@@ -1,0 +1,309 @@
+/*
+ * tui_file.c - the workbench's files: where the samples of a run stream
+ * to, saving the wall and a summary, opening another wall.
+ *
+ * Samples files: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs, else
+ * ~/.local/share/slipwall/runs (made if missing), named
+ * <wall>-<YYYYmmdd-HHMMSS>-<run>.csv: <wall> is the wall file's name
+ * without .yaml, <run> counts the runs of the session (each edit, reset
+ * or open starts one).  The file streams from the first sample, so
+ * saving never copies it.
+ *
+ * Save (s) asks for the wall's path (default: the samples file's with
+ * .yaml) and writes the wall with wallfile_save (PATH.tmp then rename)
+ * and a JSON summary of the run beside it (.json, same way).  Open (o)
+ * asks for a path; a file that does not load leaves the current wall
+ * and shows the reader's FILE:LINE:COLUMN message.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "slipwall/json.h"
+#include "slipwall/stats.h"
+#include "slipwall/wallfile.h"
+#include "tui/tui.h"
+
+/* mkdir -p */
+static int tui_file_mkdirs(const char *dir)
+{
+	char p[PATH_MAX];
+	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
+		return -1;
+	for (char *s = p + 1; *s; s++) {
+		if (*s != '/')
+			continue;
+		*s = 0;
+		if (mkdir(p, 0777) && errno != EEXIST)
+			return -1;
+		*s = '/';
+	}
+	if (mkdir(p, 0777) && errno != EEXIST)
+		return -1;
+	return 0;
+}
+
+/* The wall's short name: file name without directory and .yaml. */
+static void tui_file_stem(const struct wall *w, char *out, size_t len)
+{
+	const char *p = w->path ? w->path : (w->name ? w->name : "wall");
+	const char *slash = strrchr(p, '/');
+	snprintf(out, len, "%s", slash ? slash + 1 : p);
+	char *dot = strrchr(out, '.');
+	if (dot && dot != out && (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
+		*dot = 0;
+	for (char *s = out; *s; s++)
+		if (*s == ' ' || *s == '/' || (unsigned char)*s < 32)
+			*s = '_';
+	if (!out[0])
+		snprintf(out, len, "wall");
+}
+
+int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
+{
+	char dir[PATH_MAX], stem[128], stamp[32];
+	const char *env = getenv("SLIPWALL_RUNS");
+	const char *xdg = getenv("XDG_DATA_HOME");
+	const char *home = getenv("HOME");
+
+	if (env && env[0])
+		snprintf(dir, sizeof dir, "%s", env);
+	else if (xdg && xdg[0] == '/')
+		snprintf(dir, sizeof dir, "%s/slipwall/runs", xdg);
+	else if (home && home[0])
+		snprintf(dir, sizeof dir, "%s/.local/share/slipwall/runs", home);
+	else {
+		sw_fail(err, SW_EIO, "no place for the samples file: set SLIPWALL_RUNS or HOME");
+		return -1;
+	}
+	if (tui_file_mkdirs(dir)) {
+		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", dir,
+			strerror(errno));
+		return -1;
+	}
+	time_t now = time(NULL);
+	struct tm tm;
+	localtime_r(&now, &tm);
+	strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
+	tui_file_stem(t->w, stem, sizeof stem);
+	for (int k = 0;; k++) {
+		int n;
+		if (k == 0)
+			n = snprintf(out, len, "%s/%s-%s-%d.csv", dir, stem, stamp,
+				     t->runno);
+		else
+			n = snprintf(out, len, "%s/%s-%s-%d.%d.csv", dir, stem,
+				     stamp, t->runno, k);
+		if (n < 0 || (size_t)n >= len) {
+			sw_fail(err, SW_EIO, "%s: path too long", dir);
+			return -1;
+		}
+		if (access(out, F_OK) != 0)
+			return 0;
+	}
+}
+
+static void tui_file_json(struct tui *t, FILE *f, const char *wallpath)
+{
+	const struct tally *ta = &t->run.tally;
+	const struct wall *w = t->w;
+	struct stats_summary s;
+	struct json j;
+
+	tally_summary(ta, &s);
+	json_init(&j, f, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, wallpath);
+	json_key(&j, "source");
+	if (w->path)
+		json_string(&j, w->path);
+	else
+		json_null(&j);
+	json_key(&j, "samples_file");
+	if (t->run.csv[0])
+		json_string(&j, t->run.csv);
+	else
+		json_null(&j);
+	json_key(&j, "seed");
+	json_int(&j, (long long)w->seed);
+	json_key(&j, "threads");
+	json_int(&j, t->threads);
+	json_key(&j, "target");
+	json_int(&j, t->run.target);
+	json_key(&j, "samples");
+	json_int(&j, ta->samples);
+	json_key(&j, "accepted");
+	json_int(&j, ta->accepted);
+	json_key(&j, "rejected");
+	json_object_begin(&j);
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
+		if (k == SAMPLE_ACCEPTED)
+			continue;
+		json_key(&j, sample_status_name(k));
+		json_int(&j, ta->rejected[k]);
+	}
+	json_object_end(&j);
+	json_key(&j, "lambda");
+	json_object_begin(&j);
+	json_key(&j, "min");
+	json_double(&j, s.min);
+	json_key(&j, "p05");
+	json_double(&j, s.p05);
+	json_key(&j, "p50");
+	json_double(&j, s.p50);
+	json_key(&j, "p95");
+	json_double(&j, s.p95);
+	json_key(&j, "max");
+	json_double(&j, s.max);
+	json_key(&j, "mean");
+	json_double(&j, s.mean);
+	json_key(&j, "std");
+	json_double(&j, s.std);
+	json_object_end(&j);
+	json_key(&j, "p05_ci99");
+	if (s.has_ci) {
+		json_array_begin(&j);
+		json_double(&j, s.p05_lo);
+		json_double(&j, s.p05_hi);
+		json_array_end(&j);
+	} else {
+		json_null(&j);
+	}
+	json_key(&j, "samples_per_second");
+	json_double(&j, tui_run_rate(t));
+	json_key(&j, "mechanisms");
+	json_int(&j, ta->nmech);
+	json_key(&j, "standard");
+	if (t->solve_done && t->has_std)
+		json_double(&j, t->lam_std);
+	else
+		json_null(&j);
+	json_key(&j, "gilbert");
+	if (t->solve_done && t->has_gil)
+		json_double(&j, t->lam_gil);
+	else
+		json_null(&j);
+	if (w->ntests > 0) {
+		struct stats_ks ks;
+		json_key(&j, "ks");
+		if (ta->lam.n > 0 &&
+		    stats_ks2(ta->lam.x, ta->lam.n, w->tests, (size_t)w->ntests,
+			      &ks) == 0) {
+			json_object_begin(&j);
+			json_key(&j, "statistic");
+			json_double(&j, ks.d);
+			json_key(&j, "p_two_sided");
+			json_double(&j, ks.p_two_sided);
+			json_key(&j, "p_less");
+			json_double(&j, ks.p_less);
+			json_key(&j, "p_greater");
+			json_double(&j, ks.p_greater);
+			json_object_end(&j);
+		} else {
+			json_null(&j);
+		}
+	}
+	json_object_end(&j);
+	json_end(&j);
+}
+
+/* Write the summary to path.tmp, then rename it over path. */
+static int tui_file_summary(struct tui *t, const char *path,
+			    const char *wallpath, char *err)
+{
+	char tmp[PATH_MAX];
+	if (snprintf(tmp, sizeof tmp, "%s.tmp", path) >= (int)sizeof tmp)
+		return sw_fail(err, SW_EIO, "%s: path too long", path), -1;
+	FILE *f = fopen(tmp, "w");
+	if (!f)
+		return sw_fail(err, SW_EIO, "%s: %s", tmp, strerror(errno)), -1;
+	tui_file_json(t, f, wallpath);
+	int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
+	bad |= fclose(f) != 0;
+	if (bad || rename(tmp, path) != 0) {
+		sw_fail(err, SW_EIO, "%s: cannot write: %s", path, strerror(errno));
+		unlink(tmp);
+		return -1;
+	}
+	return 0;
+}
+
+static void tui_file_save_to(struct tui *t, const char *path)
+{
+	char err[SW_ERRLEN], json[PATH_MAX];
+	if (!path[0]) {
+		tui_message(t, 1, "save: no path given");
+		return;
+	}
+	/* analysis.samples follows the target the user set */
+	struct wall *c = wall_copy(t->w);
+	c->samples = t->run.target > 0x7fffffffL ? 0x7fffffff : (int)t->run.target;
+	enum sw_status st = wallfile_save(c, path, err);
+	wall_free(c);
+	if (st != SW_OK) {
+		tui_message(t, 1, "save: %s", err);
+		return;
+	}
+	snprintf(json, sizeof json, "%s", path);
+	char *dot = strrchr(json, '.');
+	char *slash = strrchr(json, '/');
+	if (dot && (!slash || dot > slash) &&
+	    (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
+		*dot = 0;
+	if (strlen(json) + 6 > sizeof json) {
+		tui_message(t, 1, "save: path too long");
+		return;
+	}
+	strcat(json, ".json");
+	if (tui_file_summary(t, json, path, err)) {
+		tui_message(t, 1, "saved %s; summary: %s", path, err);
+		return;
+	}
+	tui_message(t, 0, "saved %s and %s; samples: %s", path, json,
+		    t->run.csv[0] ? t->run.csv : "(none)");
+}
+
+void tui_file_save(struct tui *t)
+{
+	char def[PATH_MAX];
+	if (t->run.csv[0]) {
+		snprintf(def, sizeof def, "%s", t->run.csv);
+		char *dot = strrchr(def, '.');
+		if (dot && !strcmp(dot, ".csv"))
+			*dot = 0;
+		if (strlen(def) + 6 < sizeof def)
+			strcat(def, ".yaml");
+	} else {
+		char stem[128];
+		tui_file_stem(t->w, stem, sizeof stem);
+		snprintf(def, sizeof def, "%s-edited.yaml", stem);
+	}
+	tui_prompt(t, "save wall as", def, tui_file_save_to);
+}
+
+static void tui_file_open_path(struct tui *t, const char *path)
+{
+	char err[SW_ERRLEN];
+	struct wall *nw;
+	if (!path[0]) {
+		tui_message(t, 1, "open: no path given");
+		return;
+	}
+	if (wallfile_load(path, &nw, err) != SW_OK) {
+		tui_message(t, 1, "%s", err);
+		return;
+	}
+	tui_set_wall(t, nw);
+	tui_message(t, 0, "opened %s: sampling (run %d)", path, t->runno);
+}
+
+void tui_file_open(struct tui *t)
+{
+	tui_prompt(t, "open wall file", "", tui_file_open_path);
+}

@@ -1,0 +1,624 @@
+/*
+ * tui_wall.c - the wall pane: the blocks drawn to fit, the supports, the
+ * live load, and the mechanism on show (the latest accepted one, or one
+ * of the most frequent, chosen with m/M).
+ *
+ * Drawing goes through a canvas of cells.  Block edges are mapped to the
+ * nearest cell centres; an axis-parallel edge sets connection bits
+ * (up/down/left/right) in the cells it crosses, so meeting edges become
+ * the right box-drawing junction (ASCII: - | +); other edges are drawn
+ * with / and \.  The cells between lines belong to the block whose
+ * polygon holds the cell centre: moving blocks are filled, supports
+ * hatched.  Overlays come last: joint states on the interface lines,
+ * one motion arrow per moving block (from u, v of its velocity), the
+ * load arrow, the block cursor.  Cells are about twice as tall as wide,
+ * so x is scaled twice as much as y.
+ *
+ * The load moves between "stations": points spread along the parts of
+ * the free blocks' edges that touch no other body (the wall's outline).
+ * An arrow key picks the nearest station in its direction.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <curses.h>
+
+#include "slipwall/geom.h"
+#include "tui/tui.h"
+
+enum { CU = 1, CD = 2, CL = 4, CR = 8 };
+
+struct tui_canvas {
+	int w, h;
+	unsigned char *conn;	/* connection bits of line cells */
+	int *owner;		/* block under the cell centre, or -1 */
+	const char **glyph;	/* overlay, or NULL */
+	int *attr;		/* attribute of the overlay or the fill */
+	char *text;		/* storage of label glyphs (8 bytes each) */
+	int ntext, captext;
+};
+
+struct tui_map {
+	double x0, y1;		/* world point of canvas cell (c0, r0) */
+	double sx, sy;		/* cells per metre */
+	double c0, r0;
+};
+
+static double tui_wall_col(const struct tui_map *m, double x)
+{
+	return m->c0 + (x - m->x0) * m->sx;
+}
+
+static double tui_wall_row(const struct tui_map *m, double y)
+{
+	return m->r0 + (m->y1 - y) * m->sy;
+}
+
+static int tui_wall_in(const struct tui_canvas *cv, int c, int r)
+{
+	return c >= 0 && r >= 0 && c < cv->w && r < cv->h;
+}
+
+static void tui_wall_conn(struct tui_canvas *cv, int c, int r, int bits)
+{
+	if (tui_wall_in(cv, c, r))
+		cv->conn[r * cv->w + c] |= (unsigned char)bits;
+}
+
+static void tui_wall_glyph(struct tui_canvas *cv, int c, int r,
+			   const char *g, int attr)
+{
+	if (!tui_wall_in(cv, c, r))
+		return;
+	cv->glyph[r * cv->w + c] = g;
+	cv->attr[r * cv->w + c] = attr;
+}
+
+/* A text overlay, one code point per cell. */
+static void tui_wall_label(struct tui_canvas *cv, int c, int r, const char *s,
+			   int attr)
+{
+	while (*s && cv->ntext < cv->captext) {
+		char *g = cv->text + 8 * cv->ntext++;
+		int k = 0;
+		do
+			g[k++] = *s++;
+		while (k < 7 && ((unsigned char)*s & 0xc0) == 0x80);
+		g[k] = 0;
+		tui_wall_glyph(cv, c++, r, g, attr);
+	}
+}
+
+/* The 8 directions, counter-clockwise from east (y up). */
+static const char *const tui_arrow_u[8] = {"→", "↗", "↑", "↖", "←", "↙", "↓", "↘"};
+static const char *const tui_arrow_a[8] = {">", "/", "^", "\\", "<", "/", "v", "\\"};
+static const int tui_oct_dc[8] = {1, 1, 0, -1, -1, -1, 0, 1};
+static const int tui_oct_dr[8] = {0, -1, -1, -1, 0, 1, 1, 1};
+
+static int tui_wall_octant(double u, double v)
+{
+	double a = atan2(v, u);
+	int k = (int)floor((a + M_PI / 8) / (M_PI / 4));
+	return ((k % 8) + 8) % 8;
+}
+
+static const char *tui_wall_shaft(const struct tui *t, int k)
+{
+	if (k == 0 || k == 4)
+		return t->utf8 ? "─" : "-";
+	if (k == 2 || k == 6)
+		return t->utf8 ? "│" : "|";
+	if (k == 1 || k == 5)
+		return t->utf8 ? "╱" : "/";
+	return t->utf8 ? "╲" : "\\";
+}
+
+static const char *tui_wall_box(const struct tui *t, int bits)
+{
+	static const char *const u[16] = {
+		" ", "│", "│", "│", "─", "┘", "┐", "┤",
+		"─", "└", "┌", "├", "─", "┴", "┬", "┼",
+	};
+	if (!t->utf8) {
+		if (bits == CU || bits == CD || bits == (CU | CD))
+			return "|";
+		if (bits == CL || bits == CR || bits == (CL | CR))
+			return "-";
+		return "+";
+	}
+	return u[bits & 15];
+}
+
+/* A segment between two cells: box bits when axis-parallel, else a
+ * diagonal glyph along a Bresenham line. */
+static void tui_wall_segment(const struct tui *t, struct tui_canvas *cv,
+			     int c1, int r1, int c2, int r2)
+{
+	if (r1 == r2) {
+		int a = c1 < c2 ? c1 : c2, b = c1 < c2 ? c2 : c1;
+		for (int c = a; c <= b; c++)
+			tui_wall_conn(cv, c, r1, (c > a ? CL : 0) | (c < b ? CR : 0) |
+					 (a == b ? CL | CR : 0));
+		return;
+	}
+	if (c1 == c2) {
+		int a = r1 < r2 ? r1 : r2, b = r1 < r2 ? r2 : r1;
+		for (int r = a; r <= b; r++)
+			tui_wall_conn(cv, c1, r, (r > a ? CU : 0) | (r < b ? CD : 0));
+		return;
+	}
+	const char *g = ((c2 > c1) == (r2 < r1)) ? (t->utf8 ? "╱" : "/")
+						 : (t->utf8 ? "╲" : "\\");
+	int dc = abs(c2 - c1), dr = -abs(r2 - r1);
+	int sc = c1 < c2 ? 1 : -1, sr = r1 < r2 ? 1 : -1, e = dc + dr;
+	for (int c = c1, r = r1;;) {
+		if (!tui_wall_in(cv, c, r) || !cv->conn[r * cv->w + c])
+			tui_wall_glyph(cv, c, r, g, 0);
+		if (c == c2 && r == r2)
+			break;
+		int e2 = 2 * e;
+		if (e2 >= dr) {
+			e += dr;
+			c += sc;
+		}
+		if (e2 <= dc) {
+			e += dc;
+			r += sr;
+		}
+	}
+}
+
+static int tui_wall_drawn(const struct wall *w, int k)
+{
+	return k != w->ground_block;
+}
+
+/* Fit the wall (every block but the generated ground, the ground line,
+ * the point loads) into a canvas of cw x ch cells. */
+static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
+			 int ch, struct tui_map *m)
+{
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	int vert = 0;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (!tui_wall_drawn(w, k))
+			continue;
+		for (int i = 0; i < b->nv; i++) {
+			x0 = fmin(x0, b->xy[2 * i]);
+			x1 = fmax(x1, b->xy[2 * i]);
+			y0 = fmin(y0, b->xy[2 * i + 1]);
+			y1 = fmax(y1, b->xy[2 * i + 1]);
+		}
+	}
+	for (int l = 0; l < w->nloads; l++)
+		if (w->loads[l].kind == LOAD_POINT &&
+		    fabs(w->loads[l].dir[1]) > 0.38)
+			vert = 1;
+	if (w->has_ground)
+		y0 = fmin(y0, w->ground_y);
+	if (cursor) {
+		x0 = fmin(x0, cursor[0]);
+		x1 = fmax(x1, cursor[0]);
+		y0 = fmin(y0, cursor[1]);
+		y1 = fmax(y1, cursor[1]);
+	}
+	double mx = 4, top = vert ? 4 : 1, bottom = vert ? 4 : 2;
+	double aw = cw - 1 - 2 * mx, ah = ch - 1 - top - bottom;
+	double dx = fmax(x1 - x0, 1e-9), dy = fmax(y1 - y0, 1e-9);
+	double s = fmin(ah / dy, aw / (2 * dx));
+	if (!(s > 0))
+		s = 1;
+	m->sy = s;
+	m->sx = 2 * s;
+	m->x0 = x0;
+	m->y1 = y1;
+	m->c0 = mx + floor((aw - dx * m->sx) / 2);
+	m->r0 = top;
+}
+
+int tui_wall_block_at(const struct wall *w, double x, double y)
+{
+	double tol = 1e-6 * w->mean_size;
+	for (int k = 0; k < w->nblocks; k++)
+		if (tui_wall_drawn(w, k) &&
+		    geom_contains(w->blocks[k].xy, w->blocks[k].nv, x, y, tol))
+			return k;
+	return -1;
+}
+
+static void tui_wall_fill(const struct wall *w, struct tui_canvas *cv,
+			  const struct tui_map *m)
+{
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (!tui_wall_drawn(w, k))
+			continue;
+		double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY, by1 = -INFINITY;
+		for (int i = 0; i < b->nv; i++) {
+			bx0 = fmin(bx0, b->xy[2 * i]);
+			bx1 = fmax(bx1, b->xy[2 * i]);
+			by0 = fmin(by0, b->xy[2 * i + 1]);
+			by1 = fmax(by1, b->xy[2 * i + 1]);
+		}
+		int ca = (int)floor(tui_wall_col(m, bx0)), cb = (int)ceil(tui_wall_col(m, bx1));
+		int ra = (int)floor(tui_wall_row(m, by1)), rb = (int)ceil(tui_wall_row(m, by0));
+		for (int r = ra < 0 ? 0 : ra; r <= rb && r < cv->h; r++)
+			for (int c = ca < 0 ? 0 : ca; c <= cb && c < cv->w; c++) {
+				double x = m->x0 + (c - m->c0) / m->sx;
+				double y = m->y1 - (r - m->r0) / m->sy;
+				if (geom_contains(b->xy, b->nv, x, y, 0))
+					cv->owner[r * cv->w + c] = k;
+			}
+	}
+}
+
+int tui_wall_mechanism(const struct tui *t, const char **joint,
+		       const double **vel, char *label, size_t len)
+{
+	const struct tui_run *r = &t->run;
+	const struct tally *ta = &r->tally;
+	if (t->mech_sel > 0 && ta->nmech > 0) {
+		int *idx = malloc(sizeof(int) * (size_t)ta->nmech);
+		int n = idx ? tally_top(ta, idx, ta->nmech) : 0;
+		int k = t->mech_sel - 1;
+		if (k < n) {
+			const struct tally_mech *mm = &ta->mech[idx[k]];
+			*joint = mm->joint;
+			*vel = mm->vel;
+			snprintf(label, len,
+				 "mechanism %d/%d: %.0f %% of accepted (%s %.4g..%.4g)",
+				 k + 1, n,
+				 ta->accepted ? 100.0 * (double)mm->count /
+							(double)ta->accepted
+					      : 0.0,
+				 tui_lam(t), mm->lam_lo, mm->lam_hi);
+			free(idx);
+			return 1;
+		}
+		free(idx);
+	}
+	if (r->latest_index >= 0) {
+		*joint = r->latest_joint;
+		*vel = r->latest_vel;
+		snprintf(label, len, "latest mechanism (sample %ld), %d distinct",
+			 r->latest_index + 1, ta->nmech);
+		return 1;
+	}
+	snprintf(label, len, "no mechanism yet");
+	return 0;
+}
+
+/* Joint states along the interface lines, arrows on moving blocks. */
+static void tui_wall_mech(const struct tui *t, struct tui_canvas *cv,
+			  const struct tui_map *m, const char *joint,
+			  const double *vel, int *moving)
+{
+	const struct wall *w = t->w;
+	int attr = t->colors ? COLOR_PAIR(1) : A_BOLD;
+
+	for (int k = 0; k < w->nblocks; k++) {
+		const double *v = vel + 3 * k;
+		double speed = hypot(v[0], v[1]) + fabs(v[2]) * w->mean_size;
+		moving[k] = !w->blocks[k].fixed && speed > 1e-3;
+	}
+	for (int i = 0; i < cv->w * cv->h; i++)
+		if (cv->owner[i] >= 0 && moving[cv->owner[i]] && !cv->conn[i]) {
+			cv->glyph[i] = t->utf8 ? "▒" : "#";
+			cv->attr[i] = attr;
+		}
+	for (int i = 0; i < w->nifaces; i++) {
+		char s = joint[i];
+		if (s == JOINT_CLOSED || s == 0)
+			continue;
+		const struct wall_interface *f = &w->ifaces[i];
+		const char *g = (s == JOINT_SLIDES || s == JOINT_HINGE_SLIDES) ? "=" : ":";
+		int c1 = (int)lround(tui_wall_col(m, f->p1[0]));
+		int r1 = (int)lround(tui_wall_row(m, f->p1[1]));
+		int c2 = (int)lround(tui_wall_col(m, f->p2[0]));
+		int r2 = (int)lround(tui_wall_row(m, f->p2[1]));
+		int n = abs(c2 - c1) > abs(r2 - r1) ? abs(c2 - c1) : abs(r2 - r1);
+		/* leave the corners: they belong to more than one joint */
+		for (int j = n > 2 ? 1 : 0; j <= (n > 2 ? n - 1 : n); j++) {
+			int c = n ? c1 + (c2 - c1) * j / n : c1;
+			int r = n ? r1 + (r2 - r1) * j / n : r1;
+			tui_wall_glyph(cv, c, r, g, A_BOLD);
+		}
+		if (s == JOINT_HINGES || s == JOINT_HINGE_SLIDES)
+			tui_wall_glyph(cv, (c1 + c2) / 2, (r1 + r2) / 2, "*", A_BOLD);
+	}
+	for (int k = 0; k < w->nblocks; k++) {
+		if (!moving[k])
+			continue;
+		const double *v = vel + 3 * k;
+		const struct wall_block *b = &w->blocks[k];
+		int c = (int)lround(tui_wall_col(m, b->cx));
+		int r = (int)lround(tui_wall_row(m, b->cy));
+		const char *g;
+		if (hypot(v[0], v[1]) < 0.2 * fabs(v[2]) * w->mean_size)
+			g = v[2] > 0 ? (t->utf8 ? "↺" : "@") : (t->utf8 ? "↻" : "@");
+		else {
+			int o = tui_wall_octant(v[0], v[1]);
+			g = t->utf8 ? tui_arrow_u[o] : tui_arrow_a[o];
+		}
+		tui_wall_glyph(cv, c, r, g, attr | A_BOLD);
+	}
+}
+
+static void tui_wall_loads(const struct tui *t, struct tui_canvas *cv,
+			   const struct tui_map *m)
+{
+	const struct wall *w = t->w;
+	int attr = (t->colors ? COLOR_PAIR(2) : 0) | A_BOLD;
+	for (int l = 0; l < w->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		int k = tui_wall_octant(ld->dir[0], ld->dir[1]);
+		const char *head = t->utf8 ? tui_arrow_u[k] : tui_arrow_a[k];
+		if (ld->kind == LOAD_BODY) {
+			char buf[64];
+			snprintf(buf, sizeof buf, "body load %s%s W on every block %s",
+				 tui_lam(t), t->utf8 ? "·" : "*", head);
+			tui_wall_label(cv, 0, l, buf, attr);
+			continue;
+		}
+		int pc = (int)lround(tui_wall_col(m, ld->at[0]));
+		int pr = (int)lround(tui_wall_row(m, ld->at[1]));
+		double e = 0.01 * w->mean_size;
+		int push = 0;	/* the force points into a free block */
+		for (int b = 0; b < w->nblocks && !push; b++)
+			push = !w->blocks[b].fixed &&
+			       geom_contains(w->blocks[b].xy, w->blocks[b].nv,
+					     ld->at[0] + e * ld->dir[0],
+					     ld->at[1] + e * ld->dir[1],
+					     -1e-3 * e);
+		int dc = tui_oct_dc[k], dr = tui_oct_dr[k];
+		const char *shaft = tui_wall_shaft(t, k);
+		tui_wall_glyph(cv, pc, pr, t->utf8 ? "●" : "o", attr);
+		for (int j = 1; j <= 3; j++) {
+			int s = push ? -j : j;
+			int ishead = push ? j == 1 : j == 3;
+			tui_wall_glyph(cv, pc + s * dc, pr + s * dr,
+				       ishead ? head : shaft, attr);
+		}
+	}
+}
+
+void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
+{
+	const struct wall *wall = t->w;
+	struct tui_canvas cv;
+	struct tui_map m;
+	char label[256];
+	const char *joint = NULL;
+	const double *vel = NULL;
+
+	int has = tui_wall_mechanism(t, &joint, &vel, label, sizeof label);
+	if (t->cursor_mode) {
+		int k = tui_wall_block_at(wall, t->cur_x, t->cur_y);
+		snprintf(label, sizeof label, "cursor (%.3g, %.3g): %s  a add  x remove",
+			 t->cur_x, t->cur_y,
+			 k < 0 ? "no block" : wall->blocks[k].id);
+	}
+	attron(A_BOLD);
+	tui_text(y0, x0, w, label);
+	attroff(A_BOLD);
+
+	cv.w = w;
+	cv.h = h - 2;
+	if (cv.h < 3)
+		return;
+	size_t n = (size_t)cv.w * (size_t)cv.h;
+	cv.conn = calloc(n, 1);
+	cv.owner = malloc(sizeof(int) * n);
+	cv.glyph = calloc(n, sizeof *cv.glyph);
+	cv.attr = calloc(n, sizeof(int));
+	cv.captext = 2 * cv.w;
+	cv.ntext = 0;
+	cv.text = malloc(8 * (size_t)cv.captext);
+	int *moving = calloc((size_t)wall->nblocks + 1, sizeof(int));
+	if (!cv.conn || !cv.owner || !cv.glyph || !cv.attr || !cv.text || !moving)
+		goto out;
+	for (size_t i = 0; i < n; i++)
+		cv.owner[i] = -1;
+
+	double cur[2] = {t->cur_x, t->cur_y};
+	tui_wall_fit(wall, t->cursor_mode ? cur : NULL, cv.w, cv.h, &m);
+	tui_wall_fill(wall, &cv, &m);
+	double cmin = INFINITY, cmax = -INFINITY;
+	for (int k = 0; k < wall->nblocks; k++) {
+		const struct wall_block *b = &wall->blocks[k];
+		if (!tui_wall_drawn(wall, k))
+			continue;
+		for (int i = 0; i < b->nv; i++) {
+			int j = (i + 1) % b->nv;
+			int c1 = (int)lround(tui_wall_col(&m, b->xy[2 * i]));
+			int r1 = (int)lround(tui_wall_row(&m, b->xy[2 * i + 1]));
+			int c2 = (int)lround(tui_wall_col(&m, b->xy[2 * j]));
+			int r2 = (int)lround(tui_wall_row(&m, b->xy[2 * j + 1]));
+			tui_wall_segment(t, &cv, c1, r1, c2, r2);
+			cmin = fmin(cmin, c1);
+			cmax = fmax(cmax, c1);
+		}
+	}
+	for (size_t i = 0; i < n; i++) {
+		int k = cv.owner[i];
+		if (k >= 0 && wall->blocks[k].fixed && !cv.conn[i])
+			cv.glyph[i] = t->utf8 ? "░" : "/";
+	}
+	if (wall->has_ground && isfinite(cmin)) {
+		int gr = (int)lround(tui_wall_row(&m, wall->ground_y));
+		int a = (int)cmin - 3, b = (int)cmax + 3;
+		tui_wall_segment(t, &cv, a, gr, b, gr);
+		for (int c = a; c <= b; c++)
+			tui_wall_glyph(&cv, c, gr + 1, t->utf8 ? "░" : "/", 0);
+	}
+	if (has && !t->cursor_mode)
+		tui_wall_mech(t, &cv, &m, joint, vel, moving);
+	tui_wall_loads(t, &cv, &m);
+	if (t->cursor_mode)
+		tui_wall_glyph(&cv, (int)lround(tui_wall_col(&m, t->cur_x)),
+			       (int)lround(tui_wall_row(&m, t->cur_y)), "X",
+			       A_REVERSE | A_BOLD);
+
+	for (int r = 0; r < cv.h; r++)
+		for (int c = 0; c < cv.w; c++) {
+			size_t i = (size_t)r * cv.w + c;
+			const char *g = cv.glyph[i];
+			if (!g && cv.conn[i])
+				g = tui_wall_box(t, cv.conn[i]);
+			if (!g)
+				continue;
+			if (cv.attr[i])
+				attron(cv.attr[i]);
+			mvaddstr(y0 + 1 + r, x0 + c, g);
+			if (cv.attr[i])
+				attroff(cv.attr[i]);
+		}
+	tui_text(y0 + h - 1, x0, w,
+		 t->utf8 ? "▒ moving  = slides  * hinge  : opens  ● load"
+			 : "# moving  = slides  * hinge  : opens  o load");
+out:
+	free(cv.conn);
+	free(cv.owner);
+	free(cv.glyph);
+	free(cv.attr);
+	free(cv.text);
+	free(moving);
+}
+
+/* Load stations: points on the parts of free-block edges that touch no
+ * other body, about one per mean block size; x, y and the outward normal
+ * of the edge (4 numbers each). */
+static int tui_wall_stations(const struct wall *w, double **out)
+{
+	double tol = 1e-6 * w->mean_size;
+	int n = 0, cap = 64;
+	double *st = malloc(sizeof(double) * 4 * (size_t)cap);
+	double (*iv)[2] = malloc(sizeof *iv * (size_t)(w->nifaces + 1));
+	if (!st || !iv) {
+		free(st);
+		free(iv);
+		*out = NULL;
+		return 0;
+	}
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (b->fixed)
+			continue;
+		for (int i = 0; i < b->nv; i++) {
+			int j = (i + 1) % b->nv;
+			double px = b->xy[2 * i], py = b->xy[2 * i + 1];
+			double L = hypot(b->xy[2 * j] - px, b->xy[2 * j + 1] - py);
+			if (L <= tol)
+				continue;
+			double tx = (b->xy[2 * j] - px) / L, ty = (b->xy[2 * j + 1] - py) / L;
+			int ni = 0;
+			for (int f = 0; f < w->nifaces; f++) {
+				const struct wall_interface *fi = &w->ifaces[f];
+				if (fi->a != k && fi->b != k)
+					continue;
+				double d1 = fabs((fi->p1[0] - px) * ty - (fi->p1[1] - py) * tx);
+				double d2 = fabs((fi->p2[0] - px) * ty - (fi->p2[1] - py) * tx);
+				if (d1 > 1e3 * tol || d2 > 1e3 * tol)
+					continue;
+				double s1 = (fi->p1[0] - px) * tx + (fi->p1[1] - py) * ty;
+				double s2 = (fi->p2[0] - px) * tx + (fi->p2[1] - py) * ty;
+				iv[ni][0] = fmin(s1, s2);
+				iv[ni][1] = fmax(s1, s2);
+				ni++;
+			}
+			/* walk [0, L] and take the uncovered pieces */
+			double s = 0;
+			while (s < L - tol) {
+				double next = L;
+				int moved = 0;
+				for (int q = 0; q < ni; q++)
+					if (iv[q][0] <= s + tol && iv[q][1] > s + tol) {
+						s = iv[q][1];
+						moved = 1;
+					}
+				if (moved)
+					continue;
+				for (int q = 0; q < ni; q++)
+					if (iv[q][0] > s + tol && iv[q][0] < next)
+						next = iv[q][0];
+				double len = next - s;
+				int cnt = (int)floor(len / w->mean_size + 0.5);
+				if (cnt < 1)
+					cnt = 1;
+				for (int c = 0; c < cnt; c++) {
+					if (n == cap) {
+						cap *= 2;
+						double *ns = realloc(st, sizeof(double) * 4 * (size_t)cap);
+						if (!ns)
+							goto done;
+						st = ns;
+					}
+					double u = s + len * (c + 0.5) / cnt;
+					st[4 * n] = px + tx * u;
+					st[4 * n + 1] = py + ty * u;
+					st[4 * n + 2] = ty;	/* outward normal */
+					st[4 * n + 3] = -tx;
+					n++;
+				}
+				s = next;
+			}
+		}
+	}
+done:
+	free(iv);
+	*out = st;
+	return n;
+}
+
+int tui_wall_load_step(const struct wall *w, int dx, int dy, double at[2])
+{
+	double *st;
+	int n = tui_wall_stations(w, &st);
+	double tol = 1e-6 * w->mean_size, best = INFINITY;
+	int bi = -1;
+	for (int i = 0; i < n; i++) {
+		double ex = st[4 * i] - at[0], ey = st[4 * i + 1] - at[1];
+		double along = ex * dx + ey * dy;
+		double perp = fabs(ex * dy - ey * dx);
+		if (along <= tol)
+			continue;
+		double score = along + 3 * perp;
+		if (score < best) {
+			best = score;
+			bi = i;
+		}
+	}
+	if (bi >= 0) {
+		at[0] = st[4 * bi];
+		at[1] = st[4 * bi + 1];
+	}
+	free(st);
+	return bi >= 0;
+}
+
+int tui_wall_load_nearest(const struct wall *w, const double dir[2],
+			  double at[2])
+{
+	double *st;
+	int n = tui_wall_stations(w, &st), bi = -1;
+	double best = INFINITY;
+	for (int i = 0; i < n; i++) {
+		/* prefer faces the load acts across (normal along dir) */
+		double d = hypot(st[4 * i] - at[0], st[4 * i + 1] - at[1]) +
+			   w->mean_size * (1 - fabs(st[4 * i + 2] * dir[0] +
+						    st[4 * i + 3] * dir[1]));
+		if (d < best) {
+			best = d;
+			bi = i;
+		}
+	}
+	if (bi >= 0) {
+		at[0] = st[4 * bi];
+		at[1] = st[4 * bi + 1];
+	}
+	free(st);
+	return bi >= 0;
+}

@@ -1,0 +1,273 @@
+/*
+ * test_faults.c - faults cost what they must and nothing more
+ * (docs/reliability.md).
+ *
+ * GLPK: with lp_fault_set() the n-th LP of a sample fails, for every n
+ * (every LP role of the five steps), both as LP_FAILED and as a real GLPK
+ * error (glp_error, the hook, the longjmp): the sample is a `numerical`
+ * rejection, the workspace recovers, and the same sample solved again
+ * gives the clean result bit for bit.
+ *
+ * Saving (wallfile_save, temporary file + rename): a save that fails -
+ * a file size limit standing in for a full disk, a directory in the way,
+ * a missing directory - reports the path and leaves the old file byte
+ * for byte and no temporary file; a process killed at random instants
+ * while saving leaves the old wall or the new one, never a mixture.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "slipwall/lp.h"
+#include "slipwall/sample.h"
+#include "slipwall/wallfile.h"
+#include "tap.h"
+#include "walls.h"
+
+/* ---- GLPK faults ------------------------------------------------------- */
+
+static void test_lp_error(void)
+{
+	/* max x + y, x + y <= 1 */
+	struct lp *p = lp_new(1, 2);
+	int cols[2] = {0, 1};
+	double one[2] = {1, 1};
+	lp_set_row(p, 0, 2, cols, one);
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 1);
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	lp_set_col_bounds(p, 1, 0, HUGE_VAL);
+	lp_set_obj(p, 0, 1);
+	lp_set_obj(p, 1, 1);
+	lp_set_maximize(p, 1);
+
+	lp_fault_set(1, LP_ERROR);
+	enum lp_status s = lp_solve(p, LP_PRIMAL);
+	tap_ok(s == LP_ERROR, "an injected GLPK error returns LP_ERROR (got %d)",
+	       s);
+	tap_ok(strstr(lp_last_message(), "Error detected") != NULL,
+	       "GLPK's own error text is kept, not printed: '%s'",
+	       lp_last_message());
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
+	       "a problem of the dead environment stays dead");
+	lp_free(p);	/* safe after LP_ERROR */
+	lp_fault_set(0, LP_FAILED);
+
+	p = lp_new(1, 2);
+	lp_set_row(p, 0, 2, cols, one);
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 1);
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	lp_set_col_bounds(p, 1, 0, HUGE_VAL);
+	lp_set_obj(p, 0, 1);
+	lp_set_obj(p, 1, 1);
+	lp_set_maximize(p, 1);
+	s = lp_solve(p, LP_PRIMAL);
+	tap_ok(s == LP_OPTIMAL && lp_obj(p) == 1,
+	       "a new problem after the error solves (status %d, obj %g)", s,
+	       lp_obj(p));
+	lp_fault_set(2, LP_FAILED);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_OPTIMAL &&
+	       lp_solve(p, LP_PRIMAL) == LP_FAILED &&
+	       lp_solve(p, LP_PRIMAL) == LP_OPTIMAL,
+	       "failed:2 fails every second solve, and the problem lives on");
+	lp_fault_set(0, LP_FAILED);
+	lp_free(p);
+}
+
+/* The n-th LP of one sample fails, for every n: numerical, then the
+ * clean sample again, bit for bit. */
+static void test_sample_faults(const struct wall *w, enum lp_status as)
+{
+	const char *kind = as == LP_ERROR ? "GLPK error" : "LP failure";
+	struct sample_opts o;
+	struct sample_result r0, r;
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	sample_opts_default(&o);
+	sample_result_init(&r0, w);
+	sample_result_init(&r, w);
+	sample_positions(w, 1, 0, -1, xi);
+
+	struct sample_ws *ws = sample_ws_new(w);
+	sample_run(ws, xi, &o, &r0);
+	if (!tap_ok(r0.status == SAMPLE_ACCEPTED && r0.lps > 5,
+		    "%s: the clean sample is accepted (%d LPs)", kind, r0.lps))
+		goto out;
+	int numerical = 0, recovered = 0;
+	for (int n = 1; n <= r0.lps; n++) {
+		lp_fault_set(n, as);
+		sample_run(ws, xi, &o, &r);
+		numerical += r.status == SAMPLE_NUMERICAL;
+		lp_fault_set(0, LP_FAILED);
+		sample_run(ws, xi, &o, &r);
+		recovered += r.status == SAMPLE_ACCEPTED &&
+			     r.lambda_min == r0.lambda_min &&
+			     r.lambda_max == r0.lambda_max &&
+			     r.iterations == r0.iterations &&
+			     !strcmp(r.joint, r0.joint);
+	}
+	tap_ok(numerical == r0.lps,
+	       "%s in LP n of the sample, n = 1..%d (every step): a "
+	       "'numerical' rejection each time (%d)", kind, r0.lps,
+	       numerical);
+	tap_ok(recovered == r0.lps,
+	       "%s: the same workspace then gives the clean sample bit for "
+	       "bit (%d of %d)", kind, recovered, r0.lps);
+out:
+	sample_ws_free(ws);
+	sample_result_free(&r0);
+	sample_result_free(&r);
+	free(xi);
+}
+
+/* ---- saving ------------------------------------------------------------ */
+
+static char *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	if (!f)
+		return NULL;
+	size_t cap = 1 << 16, n = 0;
+	char *b = malloc(cap);
+	size_t got;
+	while ((got = fread(b + n, 1, cap - n, f)) > 0) {
+		n += got;
+		if (n == cap)
+			b = realloc(b, cap *= 2);
+	}
+	fclose(f);
+	*len = n;
+	return b;
+}
+
+static int same_file(const char *a, const char *b)
+{
+	size_t la, lb;
+	char *x = slurp(a, &la), *y = slurp(b, &lb);
+	int same = x && y && la == lb && !memcmp(x, y, la);
+	free(x);
+	free(y);
+	return same;
+}
+
+static int exists(const char *path)
+{
+	struct stat st;
+	return stat(path, &st) == 0;
+}
+
+static void test_save(const struct wall *a, const struct wall *b)
+{
+	char dir[] = "/tmp/slipwall-faults-XXXXXX", path[256], tmp[512];
+	char refa[256], refb[256], err[SW_ERRLEN];
+	if (!mkdtemp(dir)) {
+		tap_ok(0, "mkdtemp: %s", strerror(errno));
+		return;
+	}
+	snprintf(path, sizeof path, "%s/wall.yaml", dir);
+	snprintf(tmp, sizeof tmp, "%s.tmp", path);
+	snprintf(refa, sizeof refa, "%s/a.yaml", dir);
+	snprintf(refb, sizeof refb, "%s/b.yaml", dir);
+	tap_ok(wallfile_save(a, refa, err) == SW_OK &&
+	       wallfile_save(b, refb, err) == SW_OK &&
+	       wallfile_save(a, path, err) == SW_OK && same_file(path, refa) &&
+	       !exists(tmp),
+	       "a save writes the file and leaves no temporary file");
+
+	/* a full disk: a file size limit makes write(2) fail with EFBIG */
+	pid_t pid = fork();
+	if (pid == 0) {
+		struct rlimit rl = {2048, 2048};
+		signal(SIGXFSZ, SIG_IGN);
+		setrlimit(RLIMIT_FSIZE, &rl);
+		enum sw_status st = wallfile_save(b, path, err);
+		_exit(st == SW_EIO && strstr(err, path) ? 0 : 1);
+	}
+	int status;
+	waitpid(pid, &status, 0);
+	tap_ok(WIFEXITED(status) && WEXITSTATUS(status) == 0,
+	       "a save that runs out of space fails with SW_EIO naming the "
+	       "file");
+	tap_ok(same_file(path, refa) && !exists(tmp),
+	       "... and leaves the old file byte for byte, no temporary file");
+
+	/* a directory where the temporary file goes */
+	mkdir(tmp, 0700);
+	enum sw_status st = wallfile_save(b, path, err);
+	tap_ok(st == SW_EIO && strstr(err, "cannot write") &&
+	       same_file(path, refa),
+	       "the temporary file cannot be created: SW_EIO, old file "
+	       "intact (%s)", err);
+	rmdir(tmp);
+
+	/* a directory where the file goes: the rename fails */
+	char dpath[256];
+	snprintf(dpath, sizeof dpath, "%s/adir", dir);
+	mkdir(dpath, 0700);
+	st = wallfile_save(b, dpath, err);
+	snprintf(tmp, sizeof tmp, "%s.tmp", dpath);
+	tap_ok(st == SW_EIO && strstr(err, dpath) && !exists(tmp),
+	       "the rename fails (a directory in the way): SW_EIO, the "
+	       "temporary file removed (%s)", err);
+	rmdir(dpath);
+
+	char npath[256];
+	snprintf(npath, sizeof npath, "%s/no/such/dir/wall.yaml", dir);
+	st = wallfile_save(b, npath, err);
+	tap_ok(st == SW_EIO && strstr(err, "No such file"),
+	       "a missing directory: SW_EIO and why (%s)", err);
+
+	/* SIGKILL at random instants while saving a, b, a, b, ...: the file
+	 * is always one of the two, whole */
+	snprintf(tmp, sizeof tmp, "%s.tmp", path);
+	int whole = 0, rounds = 30;
+	srand(7);
+	for (int i = 0; i < rounds; i++) {
+		pid = fork();
+		if (pid == 0) {
+			for (int k = 0;; k++)
+				wallfile_save(k % 2 ? a : b, path, err);
+		}
+		struct timespec d = {0, (rand() % 20000) * 1000L};
+		nanosleep(&d, NULL);
+		kill(pid, SIGKILL);
+		waitpid(pid, &status, 0);
+		whole += same_file(path, refa) || same_file(path, refb);
+		unlink(tmp);	/* a kill between create and rename leaves it */
+	}
+	tap_ok(whole == rounds,
+	       "SIGKILL during saves, %d times: the file is always a whole "
+	       "wall, old or new (%d)", rounds, whole);
+
+	struct wall *back;
+	st = wallfile_load(path, &back, err);
+	tap_ok(st == SW_OK, "the file left by the last kill loads%s%s",
+	       st == SW_OK ? "" : ": ", st == SW_OK ? "" : err);
+	wall_free(back);
+	unlink(path);
+	unlink(refa);
+	unlink(refb);
+	rmdir(dir);
+}
+
+int main(void)
+{
+	struct wall *demo = tw_load_file(SRCDIR "/walls/demo.yaml");
+	struct wall *ft = tw_load_file(SRCDIR "/walls/ferris-tinloi-1.yaml");
+
+	test_lp_error();
+	test_sample_faults(ft, LP_ERROR);
+	test_sample_faults(demo, LP_FAILED);
+	test_save(demo, ft);
+
+	wall_free(demo);
+	wall_free(ft);
+	lp_thread_done();
+	return tap_done();
+}

@@ -1,0 +1,221 @@
+/*
+ * test_mc.c - the worker pool: every index 0..n-1 comes out exactly once
+ * and in order; 1 and 3 threads give the same samples bit for bit; a
+ * replay of the drawn positions recomputes the same samples; a stop
+ * ends the stream with a gap-free prefix; the counters add up; and the
+ * positions scale with the depth (the common random numbers of
+ * compare --fit-depth).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/mc.h"
+#include "slipwall/wallfile.h"
+#include "tap.h"
+
+#define N 48
+
+struct run {
+	long n;
+	long index[N];
+	int status[N];
+	double lam[N], lmax[N];
+	int iters[N], lps[N];
+	double *xi;		/* N * 2 * nifaces */
+	char *joint;		/* N * (nifaces + 1) */
+	struct mc_counters c;
+};
+
+static void run(const struct wall *w, int threads, const double *replay,
+		struct run *r)
+{
+	char err[SW_ERRLEN];
+	size_t nxi = 2 * (size_t)w->nifaces, nj = (size_t)w->nifaces + 1;
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = N;
+	cfg.seed = 12345;
+	cfg.threads = threads;
+	cfg.positions = replay;
+	memset(r, 0, sizeof *r);
+	r->xi = calloc(N * nxi, sizeof(double));
+	r->joint = calloc(N * nj, 1);
+	struct mc *m = mc_start(&cfg, err);
+	if (!m) {
+		tap_ok(0, "mc_start: %s", err);
+		return;
+	}
+	struct mc_item it;
+	mc_item_init(&it, w);
+	int got;
+	/* short waits on purpose: a timeout must not lose a sample */
+	while ((got = mc_pop(m, &it, 1)) >= 0) {
+		if (got == 0)
+			continue;
+		if (r->n < N) {
+			long k = r->n;
+			r->index[k] = it.index;
+			r->status[k] = it.status;
+			r->lam[k] = it.lambda_min;
+			r->lmax[k] = it.lambda_max;
+			r->iters[k] = it.iterations;
+			r->lps[k] = it.lps;
+			memcpy(r->xi + k * nxi, it.xi, nxi * sizeof(double));
+			memcpy(r->joint + k * nj, it.joint, nj);
+		}
+		r->n++;
+	}
+	tap_ok(mc_pop(m, &it, 0) == -1, "%d thread(s): mc_pop keeps saying "
+	       "-1 at the end", threads);
+	mc_wait(m);
+	mc_counters(m, &r->c);
+	mc_item_free(&it);
+	mc_free(m);
+}
+
+static int same(const struct run *a, const struct run *b, size_t nxi,
+		size_t nj)
+{
+	for (long k = 0; k < N; k++) {
+		if (a->status[k] != b->status[k] ||
+		    memcmp(&a->lam[k], &b->lam[k], sizeof(double)) ||
+		    memcmp(&a->lmax[k], &b->lmax[k], sizeof(double)) ||
+		    a->iters[k] != b->iters[k] || a->lps[k] != b->lps[k] ||
+		    memcmp(a->joint + k * nj, b->joint + k * nj, nj)) {
+			tap_diag("sample %ld differs: status %d/%d, lambda_min "
+				 "%.17g/%.17g", k, a->status[k], b->status[k],
+				 a->lam[k], b->lam[k]);
+			return 0;
+		}
+	}
+	return !memcmp(a->xi, b->xi, N * nxi * sizeof(double));
+}
+
+static void free_run(struct run *r)
+{
+	free(r->xi);
+	free(r->joint);
+}
+
+static void test_order(const struct wall *w)
+{
+	size_t nxi = 2 * (size_t)w->nifaces, nj = (size_t)w->nifaces + 1;
+	struct run r1, r3, rr;
+	run(w, 1, NULL, &r1);
+	run(w, 3, NULL, &r3);
+	for (int t = 0; t < 2; t++) {
+		const struct run *r = t ? &r3 : &r1;
+		int ok = r->n == N;
+		for (long k = 0; k < N && ok; k++)
+			ok = r->index[k] == k;
+		tap_ok(ok, "%d thread(s): indices 0..%d, each once, in order "
+		       "(got %ld samples)", t ? 3 : 1, N - 1, r->n);
+		long lps = 0, acc = 0;
+		for (long k = 0; k < N; k++) {
+			lps += r->lps[k];
+			acc += r->status[k] == SAMPLE_ACCEPTED;
+		}
+		tap_ok(r->c.solves >= lps && r->c.iterations >= r->c.solves &&
+		       r->c.lp_seconds > 0,
+		       "%d thread(s): counters after mc_wait: %ld LP solves >= "
+		       "sum of the samples' LPs %ld; %ld simplex iterations",
+		       t ? 3 : 1, r->c.solves, lps, r->c.iterations);
+		tap_ok(acc > N / 2, "%d thread(s): most demo samples accepted "
+		       "(%ld of %d)", t ? 3 : 1, acc, N);
+	}
+	tap_ok(same(&r1, &r3, nxi, nj), "1 and 3 threads: the same samples "
+	       "bit for bit (positions, loads, iterations, mechanisms)");
+
+	/* replay the drawn positions: the same samples again */
+	run(w, 2, r1.xi, &rr);
+	tap_ok(rr.n == N && same(&r1, &rr, nxi, nj),
+	       "a replay of the positions recomputes the same samples");
+
+	/* positions depend on (seed, index) only */
+	double *xi = malloc(nxi * sizeof(double));
+	sample_positions(w, 12345, 17, -1, xi);
+	tap_ok(!memcmp(xi, r3.xi + 17 * nxi, nxi * sizeof(double)),
+	       "sample 17's positions are sample_positions(seed, 17)");
+	free(xi);
+	free_run(&r1);
+	free_run(&r3);
+	free_run(&rr);
+}
+
+static void test_stop(const struct wall *w)
+{
+	char err[SW_ERRLEN];
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = 1000000;
+	cfg.threads = 2;
+	struct mc *m = mc_start(&cfg, err);
+	struct mc_item it;
+	mc_item_init(&it, w);
+	long n = 0;
+	int ok = 1, got;
+	while (n < 5 && (got = mc_pop(m, &it, -1)) > 0)
+		ok &= it.index == n++;
+	mc_stop(m);
+	while ((got = mc_pop(m, &it, -1)) > 0)
+		ok &= it.index == n++;
+	tap_ok(ok && got == -1 && n >= 5 && n < 5 + 16 * 6,
+	       "after mc_stop: the finished samples in order, then -1 "
+	       "(%ld popped, at most the window ahead)", n);
+	mc_wait(m);
+	struct mc_counters c;
+	mc_counters(m, &c);
+	tap_ok(c.solves > 0, "counters after a stop: %ld LP solves", c.solves);
+	mc_item_free(&it);
+	mc_free(m);
+
+	/* freeing a pool nobody popped from must not hang */
+	m = mc_start(&cfg, err);
+	mc_free(m);
+	tap_ok(1, "mc_free of a running pool returns");
+
+	cfg.threads = 0;
+	m = mc_start(&cfg, err);
+	tap_ok(m == NULL && strstr(err, "threads"), "threads = 0 refused");
+}
+
+static void test_depth(const struct wall *w)
+{
+	size_t nxi = 2 * (size_t)w->nifaces;
+	double *a = malloc(nxi * sizeof(double));
+	double *b = malloc(nxi * sizeof(double));
+	double *z = malloc(nxi * sizeof(double));
+	int ok = 1;
+	for (unsigned long i = 0; i < 20; i++) {
+		sample_positions(w, 3, i, 0.1, a);
+		sample_positions(w, 3, i, 0.4, b);
+		sample_positions(w, 3, i, 0.0, z);
+		for (size_t k = 0; k < nxi; k += 2) {
+			/* xa = d u1, xb = 1 - d u2 with the same u for every d */
+			ok &= fabs(4 * a[k] - b[k]) < 1e-15;
+			ok &= fabs(4 * (1 - a[k + 1]) - (1 - b[k + 1])) < 1e-15;
+			ok &= a[k] <= 0.1 && a[k + 1] >= 0.9;
+			ok &= z[k] == 0 && z[k + 1] == 1;
+		}
+	}
+	tap_ok(ok, "positions scale with the depth (common random numbers); "
+	       "depth 0 puts the points at the ends");
+	free(a);
+	free(b);
+	free(z);
+}
+
+int main(void)
+{
+	char err[SW_ERRLEN];
+	struct wall *w;
+	if (wallfile_load(SRCDIR "/walls/demo.yaml", &w, err) != SW_OK) {
+		printf("Bail out! %s\n", err);
+		return 1;
+	}
+	test_order(w);
+	test_stop(w);
+	test_depth(w);
+	wall_free(w);
+	return tap_done();
+}

@@ -1,0 +1,246 @@
+/*
+ * test_runlog.c - the samples file: the exact text of the header and of
+ * a row, a round trip of awkward positions bit for bit (17 significant
+ * digits), the accepted loads read back, and every kind of bad file
+ * refused at its FILE:LINE:COLUMN.
+ */
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "slipwall/runlog.h"
+#include "tap.h"
+
+#define M 2		/* interfaces of the fake wall */
+
+static struct wall fake;	/* the runlog reads nifaces (and nblocks) */
+static char dir[] = "/tmp/test_runlog.XXXXXX";
+
+static char *path_of(const char *name)
+{
+	static char buf[4][256];
+	static int k;
+	k = (k + 1) % 4;
+	snprintf(buf[k], sizeof buf[k], "%s/%s", dir, name);
+	return buf[k];
+}
+
+static char *slurp(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return NULL;
+	static char buf[1 << 16];
+	size_t n = fread(buf, 1, sizeof buf - 1, f);
+	buf[n] = 0;
+	fclose(f);
+	return buf;
+}
+
+static void spit(const char *path, const char *text)
+{
+	FILE *f = fopen(path, "w");
+	fputs(text, f);
+	fclose(f);
+}
+
+static void test_format(void)
+{
+	char err[SW_ERRLEN];
+	const char *p = path_of("fmt.csv");
+	struct runlog *l = runlog_open(p, &fake, err);
+	tap_ok(l != NULL, "runlog_open creates the file");
+	if (!l)
+		return;
+	tap_ok(!strcmp(runlog_path(l), p), "runlog_path");
+	struct mc_item it;
+	mc_item_init(&it, &fake);
+	it.index = 0;
+	it.status = SAMPLE_ACCEPTED;
+	it.lambda_max = 1.5;
+	it.lambda_min = 0.1;
+	it.iterations = 12;
+	it.xi[0] = 0.25;
+	it.xi[1] = 0.75;
+	it.xi[2] = 0;
+	it.xi[3] = 1;
+	runlog_write(l, &it, err);
+	it.index = 1;
+	it.status = SAMPLE_NO_MECHANISM;
+	it.lambda_max = 2;
+	it.lambda_min = 1;	/* not the result of a rejected sample */
+	it.iterations = 200;
+	runlog_write(l, &it, err);
+	it.index = 2;
+	it.status = SAMPLE_UNBOUNDED;
+	it.lambda_max = NAN;
+	it.lambda_min = NAN;
+	it.iterations = 0;
+	runlog_write(l, &it, err);
+	tap_ok(runlog_close(l, err) == SW_OK, "runlog_close");
+	const char *want =
+		"sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1,xa_2,xb_2\n"
+		"0,accepted,1.5,0.10000000000000001,12,0.25,0.75,0,1\n"
+		"1,no_mechanism,2,,200,0.25,0.75,0,1\n"
+		"2,unbounded,,,0,0.25,0.75,0,1\n";
+	const char *got = slurp(p);
+	tap_ok(got && !strcmp(got, want), "header and rows as SPEC section 4 "
+	       "says (17 digits; empty when not computed or rejected)");
+	if (got && strcmp(got, want))
+		printf("# got:\n%s", got);
+	mc_item_free(&it);
+}
+
+static void test_round_trip(void)
+{
+	char err[SW_ERRLEN];
+	const char *p = path_of("rt.csv");
+	struct runlog *l = runlog_open(p, &fake, err);
+	struct mc_item it;
+	mc_item_init(&it, &fake);
+	/* values whose shortest decimal needs all 17 digits, the smallest
+	 * subnormal, the double just below 1, thirds and tenths */
+	double awkward[] = {
+		0.1, 1.0 / 3, 2.0 / 3, 0x1.fffffffffffffp-1, 4.9406564584124654e-324,
+		DBL_MIN, 0.30000000000000004, 1e-17, 0.5, 0.123456789012345678,
+		0.99999999999999989, 0.7,
+	};
+	int na = (int)(sizeof awkward / sizeof *awkward);
+	long rows = 50;
+	double *want = malloc(sizeof(double) * 2 * M * (size_t)rows);
+	srand(7);
+	for (long i = 0; i < rows; i++) {
+		it.index = i;
+		it.status = i % 5 ? SAMPLE_ACCEPTED : SAMPLE_NOT_CONVERGED;
+		it.lambda_max = 1000.0 / (double)(i + 3);
+		it.lambda_min = 100.0 / (double)(i + 7);
+		for (int k = 0; k < 2 * M; k += 2) {
+			double a = awkward[(i + k) % na];
+			double b = (double)rand() / RAND_MAX;
+			it.xi[k] = a < b ? a : b;
+			it.xi[k + 1] = a < b ? b : a;
+		}
+		memcpy(want + 2 * M * i, it.xi, sizeof(double) * 2 * M);
+		runlog_write(l, &it, err);
+	}
+	runlog_close(l, err);
+
+	double *xi = NULL;
+	long n = 0;
+	enum sw_status st = runlog_read_positions(p, &fake, &xi, &n, err);
+	tap_ok(st == SW_OK && n == rows, "positions read back: 50 rows");
+	tap_ok(st == SW_OK && !memcmp(xi, want, sizeof(double) * 2 * M *
+				      (size_t)rows),
+	       "every position identical bit for bit");
+	free(xi);
+
+	double *lam = NULL;
+	st = runlog_read_loads(p, &lam, &n, err);
+	int ok = st == SW_OK && n == 40;
+	for (long i = 0, k = 0; ok && i < rows; i++)
+		if (i % 5)
+			ok = lam[k++] == 100.0 / (double)(i + 7);
+	tap_ok(ok, "accepted loads read back exactly, rejected skipped (40)");
+	free(lam);
+	mc_item_free(&it);
+}
+
+/* A bad file must be refused with this "LINE:COL: substring". */
+static void refused(const char *name, const char *text, int loads,
+		    const char *where, const char *sub)
+{
+	char err[SW_ERRLEN] = "";
+	const char *p = path_of(name);
+	spit(p, text);
+	double *x = NULL;
+	long n = -1;
+	enum sw_status st = loads ? runlog_read_loads(p, &x, &n, err) :
+			    runlog_read_positions(p, &fake, &x, &n, err);
+	char prefix[300];
+	snprintf(prefix, sizeof prefix, "%s:%s: ", p, where);
+	int ok = st == SW_EINPUT && !strncmp(err, prefix, strlen(prefix)) &&
+		 strstr(err, sub) && x == NULL && n == -1;
+	tap_ok(ok, "%s refused at %s (%s)", name, where, sub);
+	if (!ok)
+		printf("#   status %d, message: %s\n", st, err);
+	free(x);
+}
+
+#define HDR "sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1,xa_2,xb_2\n"
+
+static void test_errors(void)
+{
+	refused("empty.csv", "", 0, "1:1", "empty file");
+	refused("nothdr.csv", "a,b,c\n", 0, "1:1", "expected column 'sample'");
+	refused("hdr3.csv", "sample,status,lambda_max,lambda_x,iterations\n",
+		0, "1:26", "expected column 'lambda_min'");
+	refused("odd.csv", "sample,status,lambda_max,lambda_min,iterations,"
+		"xa_1\n", 0, "1:48", "pairs");
+	refused("pairname.csv", "sample,status,lambda_max,lambda_min,"
+		"iterations,xa_1,xa_2\n", 0, "1:53", "expected column 'xb_1'");
+	refused("otherwall.csv", "sample,status,lambda_max,lambda_min,"
+		"iterations,xa_1,xb_1\n0,accepted,1,1,1,0,1\n", 0, "1:48",
+		"of 1 interfaces, the wall has 2");
+	refused("norows.csv", HDR, 0, "2:1", "no samples");
+	refused("short.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2\n", 0, "2:29",
+		"8 fields, the header has 9");
+	refused("long.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,0.8,7\n", 0,
+		"2:34", "10 fields");
+	refused("status.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
+		"1,exploded,1,1,3,0.1,0.9,0.2,0.8\n", 0, "3:3",
+		"unknown status");
+	refused("nan.csv", HDR "0,accepted,1,1,3,0.1,nan,0.2,0.8\n", 0,
+		"2:22", "must be a number");
+	refused("junk.csv", HDR "0,accepted,1,1,3,0.1,0.9x,0.2,0.8\n", 0,
+		"2:22", "must be a number");
+	refused("emptypos.csv", HDR "0,accepted,1,1,3,0.1,0.9,,0.8\n", 0,
+		"2:26", "must be a number");
+	refused("range.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,1.5\n", 0,
+		"2:30", "between 0 and 1");
+	refused("order.csv", HDR "0,accepted,1,1,3,0.6,0.4,0.2,0.8\n", 0,
+		"2:22", "xb must not be less than xa");
+	refused("loadmissing.csv", HDR "0,accepted,1,,3,0.1,0.9,0.2,0.8\n", 1,
+		"2:14", "lambda_min");
+	refused("loadneg.csv", HDR "0,accepted,1,-2,3,0.1,0.9,0.2,0.8\n", 1,
+		"2:14", "lambda_min");
+	refused("loadstatus.csv", HDR "0,accepte,1,1,3,0.1,0.9,0.2,0.8\n", 1,
+		"2:3", "unknown status");
+
+	char err[SW_ERRLEN];
+	double *x = NULL;
+	long n;
+	enum sw_status st = runlog_read_positions(path_of("missing.csv"),
+						  &fake, &x, &n, err);
+	tap_ok(st == SW_EINPUT && strstr(err, "missing.csv: cannot open"),
+	       "a missing file is refused with its name");
+
+	/* CRLF line ends and a last line without a newline are read */
+	const char *p = path_of("crlf.csv");
+	spit(p, "sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1,"
+	     "xa_2,xb_2\r\n0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\r\n"
+	     "1,accepted,1,0.25,3,0,1,0.5,0.5");
+	st = runlog_read_positions(p, &fake, &x, &n, err);
+	tap_ok(st == SW_OK && n == 2 && x[0] == 0.1 && x[7] == 0.5,
+	       "CRLF and a missing final newline are accepted");
+	free(x);
+}
+
+int main(void)
+{
+	fake.nifaces = M;
+	fake.nblocks = 2;
+	if (!mkdtemp(dir)) {
+		perror("mkdtemp");
+		return 1;
+	}
+	test_format();
+	test_round_trip();
+	test_errors();
+	char cmd[300];
+	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+	if (system(cmd) != 0)
+		tap_diag("could not remove %s", dir);
+	return tap_done();
+}
