@@ -405,6 +405,18 @@ static void rctx_free(struct rctx *c)
 	free(c->chi);
 }
 
+/* The spread to give an axis over data in [lo, hi]: hi - lo, unless the
+ * data are (to round-off) one value - a sliding block gives the same
+ * load in every sample - when a range of 20 % of the value is shown.  A
+ * range of 1e-13 at 204 N would make tick steps smaller than one ulp. */
+static double data_span(double lo, double hi)
+{
+	double span = hi - lo;
+	if (!(span > 1e-9 * fmax(fabs(lo), fabs(hi))))
+		span = fmax(fabs(hi) * 0.2, 1e-9);
+	return span;
+}
+
 static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 				const struct report_opts *o, char *err)
 {
@@ -445,9 +457,7 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 		lo = fmin(lo, c->tst[0]);
 		hi = fmax(hi, c->tst[c->m - 1]);
 	}
-	double span = hi - lo;
-	if (!(span > 0))
-		span = fmax(fabs(hi) * 0.2, 1e-9);
+	double span = data_span(lo, hi);
 	/* the KDE tails need about 3 bandwidths */
 	double marg = fmax(0.12 * span, isfinite(c->bw) ? 3 * c->bw : 0);
 	c->x0 = fmax(0, lo - marg);
@@ -529,8 +539,12 @@ static void axes_draw(struct fig *f, const struct axes *a, const char *xlabel,
 	if (xticks_int && sx < 1)
 		sx = 1;
 	cairo_set_line_width(cr, 0.5);
-	for (double v = ceil(a->x0 / sx - 1e-9) * sx; v <= a->x1 + 1e-9 * sx;
-	     v += sx) {
+	/* counted loops: a step below the ulp of the values cannot hang */
+	double x_first = ceil(a->x0 / sx - 1e-9) * sx;
+	for (int i = 0; i < 100; i++) {
+		double v = x_first + i * sx;
+		if (v > a->x1 + 1e-9 * sx)
+			break;
 		double x = ax_x(a, v);
 		set_rgb(cr, C_GREY, 0.35);
 		cairo_move_to(cr, x, a->y);
@@ -543,8 +557,11 @@ static void axes_draw(struct fig *f, const struct axes *a, const char *xlabel,
 		tick_label(b, sizeof b, v, sx);
 		fig_text(f, x, a->y + a->h + 6, 10, 0, 0.5, 0, 0, "%s", b);
 	}
-	for (double v = ceil(a->y0 / sy - 1e-9) * sy; v <= a->y1 + 1e-9 * sy;
-	     v += sy) {
+	double y_first = ceil(a->y0 / sy - 1e-9) * sy;
+	for (int i = 0; i < 100; i++) {
+		double v = y_first + i * sy;
+		if (v > a->y1 + 1e-9 * sy)
+			break;
 		double y = ax_y(a, v);
 		set_rgb(cr, C_GREY, 0.35);
 		cairo_move_to(cr, a->x, y);
@@ -1156,9 +1173,7 @@ static void draw_convergence(struct fig *f, const struct rctx *c)
 		lo = fmin(lo, isfinite(c->clo[k]) ? c->clo[k] : c->cp[k]);
 		hi = fmax(hi, isfinite(c->chi[k]) ? c->chi[k] : c->cp[k]);
 	}
-	double span = hi - lo;
-	if (!(span > 0))
-		span = fmax(fabs(hi) * 0.2, 1e-9);
+	double span = data_span(lo, hi);
 	a.y0 = fmax(0, lo - 0.1 * span);
 	a.y1 = hi + 0.1 * span;
 	axes_clip(cr, &a);

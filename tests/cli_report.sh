@@ -118,5 +118,21 @@ check "a missing wall: exit 2" test $? -eq 2
 "$bin" report --help | grep -q "usage: slipwall report"
 check "--help" test $? -eq 0
 
+# A slab that slides at mu W in every sample: all loads are equal to
+# round-off.  Axis ranges of 1e-13 once made tick steps below one ulp
+# and the drawing never ended.
+cat >"$tmp/slab.yaml" <<'Y'
+material: {friction: 0.6, unit_weight: 19620, thickness: 0.10}
+blocks:
+  - vertices: [[0, 0], [0.8, 0], [0.8, 0.2], [0, 0.2]]
+supports:
+  - ground: {y: 0}
+loads:
+  - point: {at: [0, 0.1], direction: [1, 0]}
+Y
+timeout 120 "$bin" report "$tmp/slab.yaml" -n 300 --out "$tmp/slab" >/dev/null 2>&1
+check "equal loads (a sliding slab): the report is written" \
+	bash -c "test -s '$tmp/slab/report.md' && test -s '$tmp/slab/convergence.png'"
+
 echo "1..$n"
 [ $failed -eq 0 ]

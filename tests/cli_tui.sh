@@ -219,6 +219,21 @@ if wait_for w 'mechanism 1/[0-9]+: [0-9]+ % of accepted' 5; then
 else
 	not_ok "m shows the most frequent mechanism" "$(screen w)"
 fi
+T send-keys -t t:w R
+if wait_for w 'write report to directory:' 5; then
+	T send-keys -t t:w C-u
+	T send-keys -t t:w -l "$tmp/wb-report"
+	T send-keys -t t:w Enter
+	if wait_for w 'report of [0-9]+ accepted samples in' 30 &&
+	   [ -s "$tmp/wb-report/report.md" ] && [ -s "$tmp/wb-report/frequencies.svg" ] &&
+	   head -c 4 "$tmp/wb-report/frequencies.pdf" | grep -q '%PDF'; then
+		ok "R writes the report of the current run (report.md, SVG, PDF)"
+	else
+		not_ok "R writes the report" "$(screen w)"
+	fi
+else
+	not_ok "R asks for a report directory" "$(screen w)"
+fi
 T send-keys -t t:w ' '
 if wait_for w 'run [0-9]+ paused' 5; then
 	p0=$(samples w)

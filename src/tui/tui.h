@@ -182,6 +182,7 @@ int tui_edit_apply(struct tui *t, struct wall *nw);
 /* tui_file.c */
 void tui_file_save(struct tui *t);	/* asks for a path */
 void tui_file_open(struct tui *t);	/* asks for a path */
+void tui_file_report(struct tui *t);	/* asks for a directory */
 /* The directory and name of the next samples file. */
 int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err);
 

@@ -618,6 +618,9 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	case 'o':
 		tui_file_open(t);
 		break;
+	case 'R':
+		tui_file_report(t);
+		break;
 	case 12:	/* Ctrl-L */
 		clearok(curscr, TRUE);
 		break;

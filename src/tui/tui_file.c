@@ -26,6 +26,7 @@
 
 #include "slipwall/json.h"
 #include "slipwall/stats.h"
+#include "slipwall/report.h"
 #include "slipwall/wallfile.h"
 #include "tui/tui.h"
 
@@ -306,4 +307,87 @@ static void tui_file_open_path(struct tui *t, const char *path)
 void tui_file_open(struct tui *t)
 {
 	tui_prompt(t, "open wall file", "", tui_file_open_path);
+}
+
+/* R: the figures and summary of `slipwall report` for the current run,
+ * written by the library (report_write) from the run's samples file (its
+ * accepted loads in sample order) and tally (its mechanisms). */
+static void tui_file_report_to(struct tui *t, const char *dir)
+{
+	char err[SW_ERRLEN];
+	double *lam = NULL;
+	long n = 0;
+	if (!dir[0]) {
+		tui_message(t, 1, "report: no directory given");
+		return;
+	}
+	if (!t->run.csv[0] ||
+	    runlog_read_loads(t->run.csv, &lam, &n, err) != SW_OK) {
+		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
+		return;
+	}
+	if (n < 1) {
+		free(lam);
+		tui_message(t, 1, "report: no accepted sample yet");
+		return;
+	}
+	struct report_solution sol[2];
+	memset(sol, 0, sizeof sol);
+	sol[0].method = "standard";
+	sol[0].ran = sol[0].found = t->has_std;
+	sol[0].lambda = t->lam_std;
+	sol[1].method = "gilbert";
+	sol[1].ran = sol[1].found = t->has_gil;
+	sol[1].lambda = t->lam_gil;
+	for (int i = 0; i < 2; i++)
+		if (!sol[i].ran)
+			snprintf(sol[i].note, sizeof sol[i].note,
+				 "not computed yet");
+	struct report_input in;
+	memset(&in, 0, sizeof in);
+	in.w = t->w;
+	in.lam = lam;
+	in.nlam = n;
+	in.mech = &t->run.tally;
+	in.tests = t->w->ntests ? t->w->tests : NULL;
+	in.ntests = t->w->ntests;
+	in.sol = sol;
+	in.nsol = 2;
+	in.run.wall_path = t->w->path ? t->w->path : "(edited wall)";
+	in.run.version = SLIPWALL_VERSION;
+	in.run.samples_file = t->run.csv;
+	in.run.seed_known = 1;
+	in.run.seed = t->run.cfg.seed;
+	in.run.requested = t->run.target;
+	in.run.threads = t->threads;
+	in.run.depth = t->w->depth;
+	in.run.anywhere = t->w->anywhere;
+	in.run.has_counts = 1;
+	in.run.samples = t->run.tally.samples;
+	in.run.accepted = t->run.tally.accepted;
+	memcpy(in.run.rejected, t->run.tally.rejected, sizeof in.run.rejected);
+	in.run.note = "written from the workbench (key R) while sampling";
+	enum sw_status st = report_write(&in, dir, NULL, err);
+	free(lam);
+	if (st != SW_OK)
+		tui_message(t, 1, "report: %s", err);
+	else
+		tui_message(t, 0, "report of %ld accepted samples in %s/report.md",
+			    n, dir);
+}
+
+void tui_file_report(struct tui *t)
+{
+	char def[PATH_MAX];
+	if (!t->run.csv[0]) {
+		tui_message(t, 1, "report: no samples file");
+		return;
+	}
+	snprintf(def, sizeof def, "%s", t->run.csv);
+	char *dot = strrchr(def, '.');
+	if (dot && !strcmp(dot, ".csv"))
+		*dot = 0;
+	if (strlen(def) + 8 < sizeof def)
+		strcat(def, "-report");
+	tui_prompt(t, "write report to directory", def, tui_file_report_to);
 }

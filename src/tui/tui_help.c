@@ -34,6 +34,7 @@ static const char *const tui_help_lines[] = {
 	"  a / x        add a block at / remove the block under the cursor",
 	"",
 	"  s            save the wall (YAML) and a summary (JSON)",
+	"  R            write the report of this run (figures, report.md)",
 	"  o            open another wall file",
 	"  Ctrl-L       redraw",
 	"",
