@@ -283,7 +283,8 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	parm.presolve = GLP_OFF;
 	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
 	parm.it_lim = 50000 + 50 * (p->nrows + p->ncols);
-	parm.tm_lim = 60000;
+	/* no time limit: a result must not depend on the machine's speed
+	 * or load; the iteration limit above is the (deterministic) bound */
 	enum lp_status st;
 	if (setjmp(tl_jump)) {
 		/* GLPK's error hook jumped here: the environment is broken */
