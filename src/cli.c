@@ -77,6 +77,24 @@ int cli_parse_double(const char *s, double *out)
 	return 0;
 }
 
+const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
+			  int *missing)
+{
+	const char *a = argv[*i];
+	size_t len = strlen(name);
+	if (strncmp(a, name, len))
+		return NULL;
+	if (a[len] == '=')
+		return a + len + 1;
+	if (a[len])
+		return NULL;
+	if (*i + 1 >= argc) {
+		*missing = 1;
+		return NULL;
+	}
+	return argv[++*i];
+}
+
 int cli_ncpu(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);

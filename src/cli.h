@@ -34,6 +34,12 @@ int cli_usage_error(const char *cmd, const char *fmt, ...)
 /* Parse a whole number / a finite double; 0 on success. */
 int cli_parse_long(const char *s, long lo, long hi, long *out);
 int cli_parse_double(const char *s, double *out);
+/* Option scanning for the commands' own loops: if argv[*i] is the
+ * option `name` ("-n", "--seed"), its value ("--seed=5", or the next
+ * argument, advancing *i); NULL if argv[*i] is another option, or with
+ * *missing = 1 if the value is missing. */
+const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
+			  int *missing);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

@@ -67,24 +67,6 @@ static void usage(FILE *f)
 		GLOBAL_TIME);
 }
 
-static const char *opt_value(int argc, char **argv, int *i, const char *name,
-			     int *missing)
-{
-	const char *a = argv[*i];
-	size_t len = strlen(name);
-	if (strncmp(a, name, len))
-		return NULL;
-	if (a[len] == '=')
-		return a + len + 1;
-	if (a[len])
-		return NULL;
-	if (*i + 1 >= argc) {
-		*missing = 1;
-		return NULL;
-	}
-	return argv[++*i];
-}
-
 static int parse_args(int argc, char **argv, struct report_args *a)
 {
 	memset(a, 0, sizeof *a);
@@ -97,43 +79,43 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
 			usage(stdout);
 			return -1;
-		} else if ((v = opt_value(argc, argv, &i, "-n", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "-n", &missing))) {
 			if (cli_parse_long(v, 1, 1000000000L, &a->n))
 				return cli_usage_error(CMD, "-n: '%s' is not a "
 						       "sample count (1 to 10^9)", v);
 			a->n_set = 1;
-		} else if ((v = opt_value(argc, argv, &i, "--seed", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--seed", &missing))) {
 			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
 				return cli_usage_error(CMD, "--seed: '%s' is not a "
 						       "whole number from 0 to 2^31-1", v);
 			a->seed = (unsigned long)l;
 			a->seed_set = 1;
-		} else if ((v = opt_value(argc, argv, &i, "--threads", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--threads", &missing))) {
 			if (cli_parse_long(v, 1, 1024, &l))
 				return cli_usage_error(CMD, "--threads: '%s' is not "
 						       "a thread count (1 to 1024)", v);
 			a->threads = (int)l;
-		} else if ((v = opt_value(argc, argv, &i, "--depth", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
 			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
 			    a->depth > 0.5)
 				return cli_usage_error(CMD, "--depth: '%s' is not a "
 						       "depth between 0 and 0.5", v);
-		} else if ((v = opt_value(argc, argv, &i, "--time-limit",
+		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
 					  &missing))) {
 			if (cli_parse_double(v, &a->time_limit) ||
 			    !(a->time_limit > 0))
 				return cli_usage_error(CMD, "--time-limit: '%s' is "
 						       "not a positive number of "
 						       "seconds", v);
-		} else if ((v = opt_value(argc, argv, &i, "--samples", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--samples: empty file name");
 			a->samples = v;
-		} else if ((v = opt_value(argc, argv, &i, "--tests", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--tests: empty file name");
 			a->tests = v;
-		} else if ((v = opt_value(argc, argv, &i, "--out", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--out", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--out: empty directory name");
 			a->out = v;

@@ -108,24 +108,6 @@ static void usage(FILE *f)
 
 /* "--opt VALUE" or "--opt=VALUE": the value, advancing *i; NULL if this
  * is not the option.  *missing is set when the value is absent. */
-static const char *opt_value(int argc, char **argv, int *i, const char *name,
-			     int *missing)
-{
-	const char *a = argv[*i];
-	size_t len = strlen(name);
-	if (strncmp(a, name, len))
-		return NULL;
-	if (a[len] == '=')
-		return a + len + 1;
-	if (a[len])
-		return NULL;
-	if (*i + 1 >= argc) {
-		*missing = 1;
-		return NULL;
-	}
-	return argv[++*i];
-}
-
 static int parse_args(int argc, char **argv, struct run_args *a)
 {
 	memset(a, 0, sizeof *a);
@@ -139,36 +121,36 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 			return -1;
 		} else if (!strcmp(s, "--json")) {
 			a->json = 1;
-		} else if ((v = opt_value(argc, argv, &i, "-n", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "-n", &missing))) {
 			if (cli_parse_long(v, 1, 1000000000L, &a->n))
 				return cli_usage_error(CMD, "-n: '%s' is not a "
 						       "sample count (1 to 10^9)", v);
 			a->n_set = 1;
-		} else if ((v = opt_value(argc, argv, &i, "--seed", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--seed", &missing))) {
 			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
 				return cli_usage_error(CMD, "--seed: '%s' is not a "
 						       "whole number from 0 to 2^31-1", v);
 			a->seed = (unsigned long)l;
 			a->seed_set = 1;
-		} else if ((v = opt_value(argc, argv, &i, "--threads", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--threads", &missing))) {
 			if (cli_parse_long(v, 1, 1024, &l))
 				return cli_usage_error(CMD, "--threads: '%s' is not "
 						       "a thread count (1 to 1024)", v);
 			a->threads = (int)l;
-		} else if ((v = opt_value(argc, argv, &i, "--samples", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--samples: empty file name");
 			a->samples = v;
-		} else if ((v = opt_value(argc, argv, &i, "--positions", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--positions", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--positions: empty file name");
 			a->positions = v;
-		} else if ((v = opt_value(argc, argv, &i, "--depth", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
 			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
 			    a->depth > 0.5)
 				return cli_usage_error(CMD, "--depth: '%s' is not a "
 						       "depth between 0 and 0.5", v);
-		} else if ((v = opt_value(argc, argv, &i, "--until-ci", &missing))) {
+		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
 			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
 				return cli_usage_error(CMD, "--until-ci: '%s' is not "
 						       "a relative width > 0", v);
@@ -427,45 +409,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_int(&j, r->requested);
 	json_key(&j, "stopped");
 	json_string(&j, stop_name(r->stop));
-	json_key(&j, "samples");
-	json_int(&j, t->samples);
-	json_key(&j, "accepted");
-	json_int(&j, t->accepted);
-	json_key(&j, "rejected");
-	json_object_begin(&j);
-	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
-		if (k == SAMPLE_ACCEPTED)
-			continue;
-		json_key(&j, sample_status_name(k));
-		json_int(&j, t->rejected[k]);
-	}
-	json_object_end(&j);
-	json_key(&j, "lambda");
-	json_object_begin(&j);
-	json_key(&j, "min");
-	json_double(&j, s.min);
-	json_key(&j, "p05");
-	json_double(&j, s.p05);
-	json_key(&j, "p50");
-	json_double(&j, s.p50);
-	json_key(&j, "p95");
-	json_double(&j, s.p95);
-	json_key(&j, "max");
-	json_double(&j, s.max);
-	json_key(&j, "mean");
-	json_double(&j, s.mean);
-	json_key(&j, "std");
-	json_double(&j, s.std);
-	json_object_end(&j);
-	json_key(&j, "p05_ci99");
-	if (s.has_ci) {
-		json_array_begin(&j);
-		json_double(&j, s.p05_lo);
-		json_double(&j, s.p05_hi);
-		json_array_end(&j);
-	} else {
-		json_null(&j);
-	}
+	tally_json(t, &j);
 	json_key(&j, "iterations_per_sample");
 	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
 	json_key(&j, "lps_per_sample");

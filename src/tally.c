@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "slipwall/json.h"
 #include "slipwall/tally.h"
 
 void tally_init(struct tally *t, const struct wall *w)
@@ -160,4 +161,41 @@ int tally_top(const struct tally *t, int *idx, int max)
 void tally_summary(const struct tally *t, struct stats_summary *s)
 {
 	stats_summarise(t->lam.x, t->lam.n, s);
+}
+
+void tally_json(const struct tally *t, struct json *j)
+{
+	struct stats_summary s;
+	tally_summary(t, &s);
+	json_key(j, "samples");
+	json_int(j, t->samples);
+	json_key(j, "accepted");
+	json_int(j, t->accepted);
+	json_key(j, "rejected");
+	json_object_begin(j);
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
+		if (k == SAMPLE_ACCEPTED)
+			continue;
+		json_key(j, sample_status_name(k));
+		json_int(j, t->rejected[k]);
+	}
+	json_object_end(j);
+	json_key(j, "lambda");
+	json_object_begin(j);
+	const char *names[7] = {"min", "p05", "p50", "p95", "max", "mean", "std"};
+	const double vals[7] = {s.min, s.p05, s.p50, s.p95, s.max, s.mean, s.std};
+	for (int k = 0; k < 7; k++) {
+		json_key(j, names[k]);
+		json_double(j, vals[k]);
+	}
+	json_object_end(j);
+	json_key(j, "p05_ci99");
+	if (s.has_ci) {
+		json_array_begin(j);
+		json_double(j, s.p05_lo);
+		json_double(j, s.p05_hi);
+		json_array_end(j);
+	} else {
+		json_null(j);
+	}
 }

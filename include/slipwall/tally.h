@@ -48,4 +48,11 @@ int tally_top(const struct tally *t, int *idx, int max);
 /* Summary statistics of the accepted loads (stats_summarise). */
 void tally_summary(const struct tally *t, struct stats_summary *s);
 
+/* The keys every run summary shares (SPEC section 4), into an open JSON
+ * object: "samples", "accepted", "rejected" (an object by reason name),
+ * "lambda" {min, p05, p50, p95, max, mean, std} and "p05_ci99" [lo, hi]
+ * (null below 90 accepted samples). */
+struct json;
+void tally_json(const struct tally *t, struct json *j);
+
 #endif

@@ -137,45 +137,7 @@ static void tui_file_json(struct tui *t, FILE *f, const char *wallpath)
 	json_int(&j, t->threads);
 	json_key(&j, "target");
 	json_int(&j, t->run.target);
-	json_key(&j, "samples");
-	json_int(&j, ta->samples);
-	json_key(&j, "accepted");
-	json_int(&j, ta->accepted);
-	json_key(&j, "rejected");
-	json_object_begin(&j);
-	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
-		if (k == SAMPLE_ACCEPTED)
-			continue;
-		json_key(&j, sample_status_name(k));
-		json_int(&j, ta->rejected[k]);
-	}
-	json_object_end(&j);
-	json_key(&j, "lambda");
-	json_object_begin(&j);
-	json_key(&j, "min");
-	json_double(&j, s.min);
-	json_key(&j, "p05");
-	json_double(&j, s.p05);
-	json_key(&j, "p50");
-	json_double(&j, s.p50);
-	json_key(&j, "p95");
-	json_double(&j, s.p95);
-	json_key(&j, "max");
-	json_double(&j, s.max);
-	json_key(&j, "mean");
-	json_double(&j, s.mean);
-	json_key(&j, "std");
-	json_double(&j, s.std);
-	json_object_end(&j);
-	json_key(&j, "p05_ci99");
-	if (s.has_ci) {
-		json_array_begin(&j);
-		json_double(&j, s.p05_lo);
-		json_double(&j, s.p05_hi);
-		json_array_end(&j);
-	} else {
-		json_null(&j);
-	}
+	tally_json(ta, &j);
 	json_key(&j, "samples_per_second");
 	json_double(&j, tui_run_rate(t));
 	json_key(&j, "mechanisms");
