@@ -129,7 +129,7 @@ static void global_below(void)
 	int n = 0, bad = 0, unproven = 0;
 	struct sample_opts so;
 	sample_opts_default(&so);
-	for (int c = 0; c < 40; c++) {
+	for (int c = 0; c < 200; c++) {
 		double bw = 0.15 + 0.3 * gsl_rng_uniform(g);
 		double bh = bw * (0.25 + 0.75 * gsl_rng_uniform(g));
 		int courses = 1 + (int)gsl_rng_uniform_int(g, 3);
@@ -167,7 +167,7 @@ static void global_below(void)
 		wall_free(w);
 	}
 	gsl_rng_free(g);
-	tap_ok(n >= 35, "global and gilbert solved on %d of 40 random walls", n);
+	tap_ok(n >= 190, "global and gilbert solved on %d of 200 random walls", n);
 	tap_ok(unproven == 0, "global optimality proven on every wall (%d not)", unproven);
 	tap_ok(bad == 0, "global <= gilbert and <= the depth-0 sample (%d violations)", bad);
 }
