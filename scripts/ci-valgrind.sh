@@ -2,7 +2,7 @@
 # ci-valgrind.sh - valgrind memcheck on the batch commands
 # (docs/reliability.md), with the plain build (build/, scripts/setup.sh).
 #
-#   sh scripts/ci-valgrind.sh
+#   sh scripts/ci-valgrind.sh          [SLIPWALL_BIN=path/to/slipwall]
 #
 # Each command runs under memcheck with --leak-check=full; any memory
 # error or a definite leak fails it (--error-exitcode), and so does the
@@ -10,8 +10,12 @@
 # then "tests: N passed, M failed".
 set -e
 cd "$(dirname "$0")/.."
-sh scripts/setup.sh >/dev/null
-bin=./build/slipwall
+# SLIPWALL_BIN: another build's binary (default: build/, set up here)
+bin=${SLIPWALL_BIN:-}
+if [ -z "$bin" ]; then
+	sh scripts/setup.sh >/dev/null
+	bin=./build/slipwall
+fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 

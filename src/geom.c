@@ -154,7 +154,7 @@ struct box {
 /* Items in cells, compressed rows: the items of cell c are
  * item[start[c] .. start[c+1]-1]. */
 struct grid {
-	double ox, oy, h;
+	double ox, oy, hx, hy;	/* origin, cell width and height */
 	int nx, ny;
 	int *start, *item;
 };
@@ -162,10 +162,10 @@ struct grid {
 static void cell_range(const struct grid *g, const struct box *b, int *i0,
 		       int *j0, int *i1, int *j1)
 {
-	*i0 = (int)floor((b->x0 - g->ox) / g->h);
-	*j0 = (int)floor((b->y0 - g->oy) / g->h);
-	*i1 = (int)floor((b->x1 - g->ox) / g->h);
-	*j1 = (int)floor((b->y1 - g->oy) / g->h);
+	*i0 = (int)floor((b->x0 - g->ox) / g->hx);
+	*j0 = (int)floor((b->y0 - g->oy) / g->hy);
+	*i1 = (int)floor((b->x1 - g->ox) / g->hx);
+	*j1 = (int)floor((b->y1 - g->oy) / g->hy);
 	if (*i0 < 0) *i0 = 0;
 	if (*j0 < 0) *j0 = 0;
 	if (*i1 >= g->nx) *i1 = g->nx - 1;
@@ -175,26 +175,36 @@ static void cell_range(const struct grid *g, const struct box *b, int *i0,
 static void grid_build(struct grid *g, const struct box *bx, int n)
 {
 	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-	double size = 0;
+	double sx = 0, sy = 0;
 	for (int k = 0; k < n; k++) {
 		x0 = fmin(x0, bx[k].x0);
 		y0 = fmin(y0, bx[k].y0);
 		x1 = fmax(x1, bx[k].x1);
 		y1 = fmax(y1, bx[k].y1);
-		size += fmax(bx[k].x1 - bx[k].x0, bx[k].y1 - bx[k].y0);
+		sx += bx[k].x1 - bx[k].x0;
+		sy += bx[k].y1 - bx[k].y0;
 	}
 	double w = fmax(x1 - x0, 1e-300), hgt = fmax(y1 - y0, 1e-300);
-	double h = n ? size / n : 1;
-	if (!(h > 0))
-		h = fmax(w, hgt);
+	/* Cells as wide and as tall as the mean box, separately: square
+	 * cells of the mean size put a stack of long thin slabs (a 1.6 MB
+	 * file of 20,000 of them: 11 s; fuzzing, docs/reliability.md) into
+	 * one cell, and pairs in a cell are quadratic. */
+	double hx = n ? sx / n : w, hy = n ? sy / n : hgt;
+	if (!(hx > 0))
+		hx = fmax(hy, w);
+	if (!(hy > 0))
+		hy = fmax(hx, hgt);
 	/* no more than about 4 cells per item */
-	while ((w / h + 1) * (hgt / h + 1) > 4.0 * n + 16)
-		h *= 1.5;
+	while ((w / hx + 1) * (hgt / hy + 1) > 4.0 * n + 16) {
+		hx *= 1.5;
+		hy *= 1.5;
+	}
 	g->ox = x0;
 	g->oy = y0;
-	g->h = h;
-	g->nx = (int)(w / h) + 1;
-	g->ny = (int)(hgt / h) + 1;
+	g->hx = hx;
+	g->hy = hy;
+	g->nx = (int)(w / hx) + 1;
+	g->ny = (int)(hgt / hy) + 1;
 	int ncell = g->nx * g->ny;
 	g->start = sw_xcalloc((size_t)ncell + 1, sizeof(int));
 	/* count, prefix-sum, fill */
