@@ -4,6 +4,7 @@
  *   slipwall [WALL.yaml]        the workbench (default: the demo wall)
  *   slipwall COMMAND ...        run, solve, check, compare, report
  */
+#include <errno.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -39,6 +40,17 @@ static void usage(FILE *f)
 		"Exit status: 0 success, 1 analysis failure, 2 bad input or usage.\n");
 }
 
+/* A result that did not reach standard output (a full disk, a closed
+ * pipe) is a failure, not a silent success. */
+static int finish(int rc)
+{
+	if (fflush(stdout) != 0 || ferror(stdout)) {
+		fprintf(stderr, "slipwall: standard output: %s\n", strerror(errno));
+		return rc ? rc : 1;
+	}
+	return rc;
+}
+
 int main(int argc, char **argv)
 {
 	if (argc >= 2) {
@@ -53,7 +65,7 @@ int main(int argc, char **argv)
 		}
 		for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
 			if (!strcmp(a, commands[i].name))
-				return commands[i].fn(argc - 1, argv + 1);
+				return finish(commands[i].fn(argc - 1, argv + 1));
 		if (a[0] == '-') {
 			fprintf(stderr, "slipwall: unknown option '%s'\n", a);
 			usage(stderr);

@@ -32,6 +32,7 @@ struct runlog {
 	int failed;		/* a write failed: close reports it */
 	char *buf;		/* the row being formatted */
 	size_t len, cap;
+	off_t good;		/* file size after the last whole row */
 };
 
 /* ---- writing ----------------------------------------------------------- */
@@ -73,6 +74,10 @@ static enum sw_status flush_row(struct runlog *l, char *err)
 		if (n < 0 && errno == EINTR)
 			continue;
 		if (n <= 0) {
+			/* a full disk can take part of a row: cut the file
+			 * back to the last whole row */
+			if (off > 0 && ftruncate(l->fd, l->good) == 0)
+				lseek(l->fd, l->good, SEEK_SET);
 			l->failed = 1;
 			l->len = 0;
 			return sw_fail(err, SW_EIO, "%s: cannot write: %s",
@@ -81,6 +86,7 @@ static enum sw_status flush_row(struct runlog *l, char *err)
 		}
 		off += (size_t)n;
 	}
+	l->good += (off_t)l->len;
 	l->len = 0;
 	return SW_OK;
 }
