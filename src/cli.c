@@ -95,6 +95,39 @@ const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
 	return argv[++*i];
 }
 
+int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
+			int *missing, long *n, int *n_set, unsigned long *seed,
+			int *seed_set, int *threads, double *depth)
+{
+	const char *v;
+	long l;
+	if ((v = cli_opt_value(argc, argv, i, "-n", missing))) {
+		if (cli_parse_long(v, 1, 1000000000L, n))
+			return cli_usage_error(cmd, "-n: '%s' is not a "
+					       "sample count (1 to 10^9)", v);
+		*n_set = 1;
+	} else if ((v = cli_opt_value(argc, argv, i, "--seed", missing))) {
+		if (cli_parse_long(v, 0, 0x7fffffffL, &l))
+			return cli_usage_error(cmd, "--seed: '%s' is not a "
+					       "whole number from 0 to 2^31-1", v);
+		*seed = (unsigned long)l;
+		*seed_set = 1;
+	} else if ((v = cli_opt_value(argc, argv, i, "--threads", missing))) {
+		if (cli_parse_long(v, 1, 1024, &l))
+			return cli_usage_error(cmd, "--threads: '%s' is not "
+					       "a thread count (1 to 1024)", v);
+		*threads = (int)l;
+	} else if (depth &&
+		   (v = cli_opt_value(argc, argv, i, "--depth", missing))) {
+		if (cli_parse_double(v, depth) || *depth < 0 || *depth > 0.5)
+			return cli_usage_error(cmd, "--depth: '%s' is not a "
+					       "depth between 0 and 0.5", v);
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
 int cli_ncpu(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);

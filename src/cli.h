@@ -40,6 +40,14 @@ int cli_parse_double(const char *s, double *out);
  * *missing = 1 if the value is missing. */
 const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
 			  int *missing);
+/* The sampling options that run, compare and report share: -n N,
+ * --seed S, --threads T and (when depth is not NULL) --depth D, checked
+ * against their ranges.  Returns 1 if argv[*i] was one of them (stored,
+ * *n_set / *seed_set raised), 0 if not, 2 after printing a usage error
+ * for a bad value. */
+int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
+			int *missing, long *n, int *n_set, unsigned long *seed,
+			int *seed_set, int *threads, double *depth);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

@@ -85,8 +85,7 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 	a->depth = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *s = argv[i], *v;
-		int missing = 0;
-		long l;
+		int missing = 0, sr;
 		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
 			usage(stdout);
 			return -1;
@@ -94,27 +93,12 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 			a->json = 1;
 		} else if (!strcmp(s, "--fit-depth")) {
 			a->fit_depth = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "-n", &missing))) {
-			if (cli_parse_long(v, 1, 1000000000L, &a->n))
-				return cli_usage_error(CMD, "-n: '%s' is not a "
-						       "sample count (1 to 10^9)", v);
-			a->n_set = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--seed", &missing))) {
-			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
-				return cli_usage_error(CMD, "--seed: '%s' is not a "
-						       "whole number from 0 to 2^31-1", v);
-			a->seed = (unsigned long)l;
-			a->seed_set = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--threads", &missing))) {
-			if (cli_parse_long(v, 1, 1024, &l))
-				return cli_usage_error(CMD, "--threads: '%s' is not "
-						       "a thread count (1 to 1024)", v);
-			a->threads = (int)l;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
-			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
-			    a->depth > 0.5)
-				return cli_usage_error(CMD, "--depth: '%s' is not a "
-						       "depth between 0 and 0.5", v);
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     &a->depth))) {
+			if (sr == 2)
+				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--tests: empty file name");

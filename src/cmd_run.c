@@ -114,29 +114,18 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 	a->depth = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *s = argv[i], *v;
-		int missing = 0;
-		long l;
+		int missing = 0, sr;
 		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
 			usage(stdout);
 			return -1;
 		} else if (!strcmp(s, "--json")) {
 			a->json = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "-n", &missing))) {
-			if (cli_parse_long(v, 1, 1000000000L, &a->n))
-				return cli_usage_error(CMD, "-n: '%s' is not a "
-						       "sample count (1 to 10^9)", v);
-			a->n_set = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--seed", &missing))) {
-			if (cli_parse_long(v, 0, 0x7fffffffL, &l))
-				return cli_usage_error(CMD, "--seed: '%s' is not a "
-						       "whole number from 0 to 2^31-1", v);
-			a->seed = (unsigned long)l;
-			a->seed_set = 1;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--threads", &missing))) {
-			if (cli_parse_long(v, 1, 1024, &l))
-				return cli_usage_error(CMD, "--threads: '%s' is not "
-						       "a thread count (1 to 1024)", v);
-			a->threads = (int)l;
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     &a->depth))) {
+			if (sr == 2)
+				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--samples: empty file name");
@@ -145,11 +134,6 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 			if (!*v)
 				return cli_usage_error(CMD, "--positions: empty file name");
 			a->positions = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
-			if (cli_parse_double(v, &a->depth) || a->depth < 0 ||
-			    a->depth > 0.5)
-				return cli_usage_error(CMD, "--depth: '%s' is not a "
-						       "depth between 0 and 0.5", v);
 		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
 			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
 				return cli_usage_error(CMD, "--until-ci: '%s' is not "
