@@ -7,7 +7,8 @@
 #       -Db_sanitize=address,undefined in build-asan/; leaks are errors
 #       (LeakSanitizer), except those listed in scripts/sanitizers/lsan.supp.
 # tsan: the threaded tests - the sampler's pool (test_mc), `run` with 1
-#       and 2 threads (cli_run, cli_faults) - built with -Db_sanitize=thread
+#       and 2 threads (cli_run, cli_faults), the workbench with its solver
+#       thread (cli_tui) - built with -Db_sanitize=thread
 #       in build-tsan/; scripts/sanitizers/tsan.supp says what is
 #       suppressed and why.
 # Environment: ASAN_DIR, TSAN_DIR (build directories).  Prints each
@@ -85,7 +86,7 @@ for job in $jobs; do
 		set +e
 		TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp:log_path=$log \
 		meson test -C "$dir" --print-errorlogs --num-processes 1 \
-			--timeout-multiplier 4 ${wrap:+"$wrap"} mc run faults_cli \
+			--timeout-multiplier 4 ${wrap:+"$wrap"} mc run faults_cli tui \
 			>"$dir/test-output.txt" 2>&1
 		rc=$?
 		set -e

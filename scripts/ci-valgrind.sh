@@ -57,6 +57,13 @@ vg 0 "run -n 20 --threads 2 demo" run walls/demo.yaml -n 20 --threads 2 \
 vg 0 "run --positions (replay of 20 rows)" run walls/demo.yaml \
 	--positions "$tmp/demo.csv" --samples "$tmp/replay.csv"
 vg 0 "run -n 10 ferris-tinloi-1" run walls/ferris-tinloi-1.yaml -n 10
+printf '0.5\n0.55\n0.6\n0.62\n' >"$tmp/tests.txt"
+vg 0 "compare --json ferris-tinloi-1 against 4 loads" compare \
+	walls/ferris-tinloi-1.yaml --tests "$tmp/tests.txt" -n 10 --json
+vg 0 "compare --samples (the demo run's file)" compare walls/demo.yaml \
+	--samples "$tmp/demo.csv" --tests "$tmp/tests.txt"
+vg 0 "report of the demo run (figures with cairo)" report walls/demo.yaml \
+	--samples "$tmp/demo.csv" --tests "$tmp/tests.txt" --out "$tmp/report"
 vg 1 "run -n 5 --samples /dev/full" run walls/demo.yaml -n 5 --samples /dev/full
 # GLPK errors inside the solves (src/lp.c): the recovery frees everything
 export SLIPWALL_LP_FAULT=error:40

@@ -5,6 +5,8 @@
 set -e
 cd "$(dirname "$0")/.."
 pkgs="build-essential meson ninja-build pkg-config libglpk-dev libgsl-dev libyaml-dev libncurses-dev libcairo2-dev tmux python3 valgrind"
+# mpirun -n P slipwall run (docs/cluster.md): Open MPI, found by meson -Dmpi=auto
+pkgs="$pkgs libopenmpi-dev openmpi-bin"
 missing=""
 for p in $pkgs; do
 	dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

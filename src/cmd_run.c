@@ -27,7 +27,13 @@
  * ceil(n/1000)-th: a stop at most 0.1 % late, at a constant cost per
  * sample.  The progress line refreshes its interval at most once a
  * second beyond 20000 accepted samples, for the same reason.
+ *
+ * Under mpirun (an MPI build, docs/cluster.md) every rank sets up the
+ * same run and computes its share of the samples (cluster.c); rank 0
+ * reads the merged stream instead of its own pool - the `struct source`
+ * below - and does all of the above; the other ranks only send.
  */
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -37,6 +43,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cluster.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
@@ -60,19 +67,106 @@ struct run_args {
 	int json;
 };
 
-enum stop_reason { STOP_NONE, STOP_SIGNAL, STOP_UNTIL_CI, STOP_WRITE };
+enum stop_reason {
+	STOP_NONE, STOP_SIGNAL, STOP_UNTIL_CI, STOP_WRITE, STOP_LOST
+};
 
-/* The pool and the signal that stopped it.  Globals because a signal
+/* ---- where the samples come from ------------------------------------- */
+
+/* The samples in index order: this process's pool (mc.c), or on rank 0
+ * of an MPI job the merged stream of every rank's pool (cluster.c).
+ * stop() is async-signal-safe (the signal handler calls it); status()
+ * says, after pop() returned -1, whether another rank cut the stream
+ * short: SW_EINTR (a signal there) or SW_EIO (a rank lost), with a
+ * message. */
+struct source {
+	void *ctx;
+	int (*pop)(void *ctx, struct mc_item *it, int wait_ms);
+	void (*stop)(void *ctx, int sig);
+	enum sw_status (*status)(void *ctx, char *err);
+};
+
+static int pool_pop(void *m, struct mc_item *it, int wait_ms)
+{
+	return mc_pop(m, it, wait_ms);
+}
+
+static void pool_stop(void *m, int sig)
+{
+	(void)sig;
+	mc_stop(m);
+}
+
+static enum sw_status pool_status(void *m, char *err)
+{
+	(void)m;
+	(void)err;
+	return SW_OK;
+}
+
+static int job_pop(void *c, struct mc_item *it, int wait_ms)
+{
+	return cluster_pop(c, it, wait_ms);
+}
+
+static void job_stop(void *c, int sig)
+{
+	cluster_stop(c, sig);
+}
+
+static enum sw_status job_status(void *c, char *err)
+{
+	return cluster_status(c, err);
+}
+
+/* ---- signals ----------------------------------------------------------- */
+
+/* The source and the signal that stopped it.  Globals because a signal
  * handler has no other way to reach them; set before the handlers are
  * installed, cleared after they are removed. */
-static struct mc *volatile run_mc;
+static const struct source *volatile run_src;
 static volatile sig_atomic_t run_signal;
 
 static void on_signal(int sig)
 {
 	run_signal = sig;
-	if (run_mc)
-		mc_stop(run_mc);
+	if (run_src)
+		run_src->stop(run_src->ctx, sig);
+}
+
+static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* The handlers that were there before. */
+struct caught {
+	struct sigaction old[3];
+	int on[3];
+};
+
+static void signals_catch(const struct source *src, struct caught *c)
+{
+	struct sigaction sa;
+	run_signal = 0;
+	run_src = src;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART | SA_RESETHAND;
+	/* a signal ignored at start stays ignored (nohup, a background job
+	 * of a shell without job control) */
+	for (int k = 0; k < 3; k++) {
+		sigaction(catch_sigs[k], NULL, &c->old[k]);
+		c->on[k] = c->old[k].sa_handler != SIG_IGN;
+		if (c->on[k])
+			sigaction(catch_sigs[k], &sa, NULL);
+	}
+}
+
+static void signals_restore(struct caught *c)
+{
+	for (int k = 0; k < 3; k++)
+		if (c->on[k])
+			sigaction(catch_sigs[k], &c->old[k], NULL);
+	run_src = NULL;
 }
 
 static double now(void)
@@ -277,6 +371,7 @@ struct run_info {
 	long requested;
 	enum stop_reason stop;
 	double elapsed;
+	int ranks;		/* of an MPI job; 0: no job */
 };
 
 static double depth_used(const struct run_info *r)
@@ -293,6 +388,8 @@ static const char *stop_name(enum stop_reason s)
 		return "until_ci";
 	case STOP_WRITE:
 		return "write_error";
+	case STOP_LOST:
+		return "rank_lost";
 	default:
 		return "complete";
 	}
@@ -315,7 +412,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf("seed %lu, positions anywhere", r->cfg->seed);
 	else
 		printf("seed %lu, depth %g", r->cfg->seed, depth_used(r));
-	printf(", %d thread%s)\n", r->cfg->threads, r->cfg->threads > 1 ? "s" : "");
+	if (r->ranks)
+		printf(", %d rank%s x", r->ranks, r->ranks > 1 ? "s" : "");
+	printf("%s%d thread%s)\n", r->ranks ? " " : ", ", r->cfg->threads,
+	       r->cfg->threads > 1 ? "s" : "");
 	printf("accepted     %ld (%.1f %%)\n", t->accepted,
 	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
 	printf("rejected     %ld\n", t->samples - t->accepted);
@@ -389,6 +489,10 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_double(&j, depth_used(r));
 	json_key(&j, "threads");
 	json_int(&j, r->cfg->threads);
+	if (r->ranks) {
+		json_key(&j, "ranks");
+		json_int(&j, r->ranks);
+	}
 	json_key(&j, "requested");
 	json_int(&j, r->requested);
 	json_key(&j, "stopped");
@@ -433,145 +537,179 @@ static void print_json(const struct run_info *r, const struct tally *t)
 
 /* ---- the command -------------------------------------------------------- */
 
-int cmd_run(int argc, char **argv)
-{
+/* Everything `run` sets up before it samples. */
+struct run_setup {
 	struct run_args a;
-	int rc = parse_args(argc, argv, &a);
-	if (rc)
-		return rc < 0 ? 0 : rc;
-
 	struct wall *w;
-	if ((rc = cli_load_wall(a.wall, &w)))
+	struct mc_config cfg;
+	double *replay;		/* --positions */
+	struct runlog *log;	/* --samples, rank 0 only */
+};
+
+static void setup_free(struct run_setup *s)
+{
+	char err[SW_ERRLEN];
+	runlog_close(s->log, err);
+	free(s->replay);
+	wall_free(s->w);
+	memset(s, 0, sizeof *s);
+}
+
+/* Send stderr to /dev/null; the saved descriptor (or -1) for
+ * unmute_stderr. */
+static int mute_stderr(void)
+{
+	int saved = dup(STDERR_FILENO);
+	int fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
+	if (saved >= 0 && fd >= 0)
+		dup2(fd, STDERR_FILENO);
+	if (fd >= 0)
+		close(fd);
+	return saved;
+}
+
+static void unmute_stderr(int saved)
+{
+	if (saved < 0)
+		return;
+	dup2(saved, STDERR_FILENO);
+	close(saved);
+}
+
+/* Parse the options, load the wall and fill the config (every rank of a
+ * job does the same); the samples file is created by rank 0 only.
+ * Returns 0, -1 when there is nothing to do (--help) or the exit
+ * status, with a message printed. */
+static int setup(int argc, char **argv, const struct cluster *cl,
+		 struct run_setup *s)
+{
+	struct run_args *a = &s->a;
+	memset(s, 0, sizeof *s);
+	/* the options are the same on every rank, and so would be their
+	 * messages: rank 0's are enough */
+	int saved = -1;
+	if (cluster_rank(cl) > 0)
+		saved = mute_stderr();
+	int rc = parse_args(argc, argv, a);
+	unmute_stderr(saved);
+	if (rc)
 		return rc;
-	if (a.depth >= 0 && w->anywhere) {
-		wall_free(w);
+	if ((rc = cli_load_wall(a->wall, &s->w)))
+		return rc;
+	struct wall *w = s->w;
+	if (a->depth >= 0 && w->anywhere)
 		return cli_usage_error(CMD, "--depth: %s draws its contact "
 				       "points anywhere (contacts.positions), "
-				       "there is no depth", a.wall);
-	}
+				       "there is no depth", a->wall);
 
 	char err[SW_ERRLEN];
-	struct mc_config cfg;
-	mc_config_default(&cfg, w);
-	double *replay = NULL;
-	if (a.positions) {
+	struct mc_config *cfg = &s->cfg;
+	mc_config_default(cfg, w);
+	if (a->positions) {
 		long rows;
-		if (runlog_read_positions(a.positions, w, &replay, &rows,
+		if (runlog_read_positions(a->positions, w, &s->replay, &rows,
 					  err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
-			wall_free(w);
 			return 2;
 		}
-		if (a.n_set && a.n > rows) {
-			free(replay);
-			wall_free(w);
+		if (a->n_set && a->n > rows)
 			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
-					       "samples", a.n, a.positions, rows);
-		}
-		cfg.positions = replay;
-		cfg.n = a.n_set ? a.n : rows;
+					       "samples", a->n, a->positions, rows);
+		cfg->positions = s->replay;
+		cfg->n = a->n_set ? a->n : rows;
 	} else {
-		cfg.n = a.n_set ? a.n : w->samples;
+		cfg->n = a->n_set ? a->n : w->samples;
 	}
-	if (cfg.n < 1) {
-		free(replay);
-		wall_free(w);
+	if (cfg->n < 1)
 		return cli_usage_error(CMD, "no samples to compute (-n)");
-	}
-	if (a.seed_set)
-		cfg.seed = a.seed;
-	cfg.depth = a.depth;
-	cfg.threads = a.threads ? a.threads : cli_ncpu();
+	if (a->seed_set)
+		cfg->seed = a->seed;
+	cfg->depth = a->depth;
+	cfg->threads = a->threads ? a->threads :
+		       cl ? cluster_threads(cl) : cli_ncpu();
 
-	struct runlog *log = NULL;
-	if (a.samples && !(log = runlog_open(a.samples, w, err))) {
+	if (a->samples && cluster_rank(cl) == 0 &&
+	    !(s->log = runlog_open(a->samples, w, err))) {
 		fprintf(stderr, "slipwall run: %s\n", err);
-		free(replay);
-		wall_free(w);
 		return 1;
 	}
+	return 0;
+}
 
-	double t0 = now();
-	struct mc *m = mc_start(&cfg, err);
-	if (!m) {
-		fprintf(stderr, "slipwall run: %s\n", err);
-		runlog_close(log, err);
-		free(replay);
-		wall_free(w);
-		return 1;
-	}
-	run_signal = 0;
-	run_mc = m;
-	struct sigaction sa, old[3];
-	static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sa.sa_flags = SA_RESTART | SA_RESETHAND;
-	/* a signal ignored at start stays ignored (nohup, a background job
-	 * of a shell without job control) */
-	int caught[3];
-	for (int k = 0; k < 3; k++) {
-		sigaction(sigs[k], NULL, &old[k]);
-		caught[k] = old[k].sa_handler != SIG_IGN;
-		if (caught[k])
-			sigaction(sigs[k], &sa, NULL);
-	}
+/* Rank 0 (or the only process): take the samples in order, write and
+ * count them, print the summary.  Returns the exit status. */
+static int sample(struct run_setup *s, const struct source *src,
+		  const struct cluster *cl, double t0)
+{
+	const struct run_args *a = &s->a;
+	const struct mc_config *cfg = &s->cfg;
+	struct runlog *log = s->log;
+	struct caught caught;
+	signals_catch(src, &caught);
 
 	int tty = isatty(STDERR_FILENO);
 	struct tally t;
 	struct mc_item it;
 	struct ci_state ci = {0};
 	struct progress_ci pci = {0};
-	tally_init(&t, w);
-	mc_item_init(&it, w);
+	tally_init(&t, s->w);
+	mc_item_init(&it, s->w);
 	enum stop_reason stop = STOP_NONE;
 	double last_draw = 0;
 	enum sw_status wst = SW_OK;
-	char werr[SW_ERRLEN] = "";
+	char werr[SW_ERRLEN] = "", err[SW_ERRLEN], serr[SW_ERRLEN] = "";
 	for (;;) {
-		int got = mc_pop(m, &it, tty ? 100 : -1);
+		int got = src->pop(src->ctx, &it, tty ? 100 : -1);
 		if (got < 0)
 			break;
 		if (got > 0 && stop != STOP_UNTIL_CI && stop != STOP_WRITE) {
 			if (log && (wst = runlog_write(log, &it, werr)) != SW_OK) {
 				/* the row is lost: count nothing more */
 				stop = STOP_WRITE;
-				mc_stop(m);
+				src->stop(src->ctx, 0);
 				continue;
 			}
 			tally_add(&t, &it);
 			double p05, lo, hi;
-			if (a.until_ci > 0 && it.status == SAMPLE_ACCEPTED &&
+			if (a->until_ci > 0 && it.status == SAMPLE_ACCEPTED &&
 			    ci_due(t.lam.n) &&
 			    p05_interval(&t, &ci, &p05, &lo, &hi) && p05 > 0 &&
-			    hi - lo < a.until_ci * p05) {
+			    hi - lo < a->until_ci * p05) {
 				stop = STOP_UNTIL_CI;
-				mc_stop(m);
+				src->stop(src->ctx, 0);
 			}
 		}
 		if (tty && now() - last_draw >= 0.1) {
 			last_draw = now();
-			progress(&t, &pci, cfg.n, last_draw - t0);
+			progress(&t, &pci, cfg->n, last_draw - t0);
 		}
 	}
 	double elapsed = now() - t0;
 	if (tty)
 		fprintf(stderr, "\r\033[K");
 	int sig = run_signal;
-	if (sig && stop == STOP_NONE)
-		stop = STOP_SIGNAL;
-	for (int k = 0; k < 3; k++)
-		if (caught[k])
-			sigaction(sigs[k], &old[k], NULL);
-	run_mc = NULL;
-	mc_free(m);
+	signals_restore(&caught);
 	mc_item_free(&it);
 
-	enum sw_status cst = runlog_close(log, err);
+	/* why: the signal here, or what another rank says */
+	char why[SW_ERRLEN] = "";
+	enum sw_status sst = src->status(src->ctx, serr);
+	if (sig && stop == STOP_NONE) {
+		stop = STOP_SIGNAL;
+		snprintf(why, sizeof why, "%s", strsignal(sig));
+	} else if (sst == SW_EINTR && stop == STOP_NONE) {
+		stop = STOP_SIGNAL;
+		snprintf(why, sizeof why, "%s", serr);
+	} else if (sst != SW_OK && sst != SW_EINTR && stop == STOP_NONE) {
+		stop = STOP_LOST;
+	}
 
-	struct run_info info = {&a, w, &cfg, cfg.n, stop, elapsed};
-	if (a.json)
+	enum sw_status cst = runlog_close(log, err);
+	s->log = NULL;
+
+	struct run_info info = {a, s->w, cfg, cfg->n, stop, elapsed,
+				cl ? cluster_size(cl) : 0};
+	if (a->json)
 		print_json(&info, &t);
 	else
 		print_text(&info, &t);
@@ -587,8 +725,16 @@ int cmd_run(int argc, char **argv)
 	}
 	if (stop == STOP_SIGNAL) {
 		fprintf(stderr, "slipwall run: interrupted (%s) after %ld of %ld "
-			"samples\n", strsignal(sig), t.samples, cfg.n);
+			"samples\n", why, t.samples, cfg->n);
 		status = sw_status_exit(SW_EINTR);
+	}
+	if (stop == STOP_LOST) {
+		fprintf(stderr, "slipwall run: %s: stopped after %ld of %ld "
+			"samples\n", serr, t.samples, cfg->n);
+		status = 1;
+	} else if (sst != SW_OK && sst != SW_EINTR) {
+		fprintf(stderr, "slipwall run: %s\n", serr);
+		status = 1;
 	}
 	if (t.accepted == 0 && t.samples > 0) {
 		fprintf(stderr, "slipwall run: no sample was accepted: the "
@@ -596,7 +742,60 @@ int cmd_run(int argc, char **argv)
 		status = 1;
 	}
 	tally_free(&t);
-	free(replay);
-	wall_free(w);
 	return status;
+}
+
+/* A rank > 0 of a job: compute and send.  Rank 0 reports a signal. */
+static int serve(struct cluster *cl, const struct source *src)
+{
+	char err[SW_ERRLEN];
+	struct caught caught;
+	signals_catch(src, &caught);
+	enum sw_status st = cluster_serve(cl, err);
+	signals_restore(&caught);
+	if (st != SW_OK && st != SW_EINTR)
+		fprintf(stderr, "slipwall run: %s\n", err);
+	return sw_status_exit(st);
+}
+
+/* Set up, start the pool (this rank's share in a job), agree with the
+ * other ranks, then sample or serve. */
+static int run_job(struct cluster *cl, int argc, char **argv)
+{
+	struct run_setup s;
+	char err[SW_ERRLEN];
+	struct mc *pool = NULL;
+	int rc = setup(argc, argv, cl, &s);
+	double t0 = now();
+	if (rc == 0 && cl && cluster_open(cl, &s.cfg, err) != SW_OK) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		rc = 1;
+	} else if (rc == 0 && !cl && !(pool = mc_start(&s.cfg, err))) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		rc = 1;
+	}
+	rc = cluster_agree(cl, rc, rc == 0 ? &s.cfg : NULL);
+	if (rc == 0) {
+		struct source src = {pool, pool_pop, pool_stop, pool_status};
+		if (cl)
+			src = (struct source){cl, job_pop, job_stop, job_status};
+		rc = cluster_rank(cl) > 0 ? serve(cl, &src) :
+		     sample(&s, &src, cl, t0);
+	}
+	mc_free(pool);
+	cluster_close(cl);	/* its workers read the wall */
+	setup_free(&s);
+	return rc < 0 ? 0 : rc;
+}
+
+int cmd_run(int argc, char **argv)
+{
+	struct cluster *cl;
+	char err[SW_ERRLEN];
+	enum sw_status st = cluster_start(&cl, err);
+	if (st != SW_OK) {
+		fprintf(stderr, "slipwall run: %s\n", err);
+		return sw_status_exit(st);
+	}
+	return cluster_end(cl, run_job(cl, argc, argv));
 }

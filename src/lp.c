@@ -13,11 +13,23 @@
  * costs one sample and nothing else (tests/test_faults.c,
  * tests/cli_faults.sh).  An injected LP_ERROR goes through GLPK's own
  * error path (glp_error, the hook, the longjmp), not around it.
+ *
+ * Interruption (lp_thread_stop_flag): GLPK's simplex has no callback,
+ * and one LP of a very large wall runs for minutes, so a stop request
+ * (Ctrl-C, a new edit in the workbench) could not reach a worker inside
+ * it.  The simplex runs with messages on but delayed (out_dly): GLPK
+ * prints nothing during the first half second of a solve, then a
+ * progress line every half second - to the terminal hook, which looks
+ * at the thread's stop flag and, if it is set, leaves the solve by the
+ * same longjmp and recovery as an error.  Only whether a sample is
+ * abandoned depends on the clock, never a value: an interrupted sample
+ * is discarded, not reported (lp_thread_interrupted).
  */
 #include <glpk.h>
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +54,14 @@ static _Thread_local int tl_in_call;
 static _Thread_local char tl_message[256];
 static _Thread_local long tl_solves, tl_iterations;
 static _Thread_local double tl_seconds;
+static _Thread_local const atomic_int *tl_stop;	/* lp_thread_stop_flag */
+static _Thread_local int tl_in_simplex;	/* inside lp_solve's simplex */
+static _Thread_local int tl_interrupted;
+
+static int stop_requested(void)
+{
+	return tl_stop && atomic_load(tl_stop);
+}
 
 /* Fault injection: set once (lp_fault_set before any thread solves, or
  * the environment at the first solve), then only read. */
@@ -72,6 +92,8 @@ static void mip_callback(glp_tree *T, void *info)
 static int term_hook(void *info, const char *s)
 {
 	(void)info;
+	if (tl_in_simplex && stop_requested())
+		longjmp(tl_jump, 2);	/* see "Interruption" above */
 	size_t n = strlen(s);
 	if (n >= sizeof tl_message)
 		n = sizeof tl_message - 1;
@@ -269,6 +291,10 @@ static int fault_now(void)
 
 enum lp_status lp_solve(struct lp *p, enum lp_method m)
 {
+	if (stop_requested()) {	/* before anything else: no rebuilding */
+		tl_interrupted = 1;
+		return LP_STOPPED;
+	}
 	if (!alive(p))
 		return LP_ERROR;
 	int fault = fault_now();
@@ -279,23 +305,35 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	}
 	glp_smcp parm;
 	glp_init_smcp(&parm);
-	parm.msg_lev = GLP_MSG_OFF;
+	/* messages on, but none before half a second, then one every half
+	 * second: the terminal hook's chance to see a stop request */
+	parm.msg_lev = GLP_MSG_ON;
+	parm.out_dly = 500;
+	parm.out_frq = 500;
 	parm.presolve = GLP_OFF;
 	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
 	parm.it_lim = 50000 + 50 * (p->nrows + p->ncols);
 	/* no time limit: a result must not depend on the machine's speed
 	 * or load; the iteration limit above is the (deterministic) bound */
 	enum lp_status st;
-	if (setjmp(tl_jump)) {
-		/* GLPK's error hook jumped here: the environment is broken */
+	int jumped = setjmp(tl_jump);
+	if (jumped) {
+		/* a hook jumped here (an error, or a stop request): GLPK's
+		 * environment is mid-solve, the only way back is to free it */
 		tl_in_call = 0;
+		tl_in_simplex = 0;
 		glp_free_env();
 		tl_hooked = 0;
 		tl_generation++;
 		hook();
+		if (jumped == 2) {
+			tl_interrupted = 1;
+			return LP_STOPPED;
+		}
 		return LP_ERROR;
 	}
 	tl_in_call = 1;
+	tl_in_simplex = 1;
 	if (fault)	/* an injected error, through GLPK's error path */
 		glp_error("slipwall: injected fault (SLIPWALL_LP_FAULT)\n");
 	double t0 = now();
@@ -308,6 +346,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 		rc = glp_simplex(p->P, &parm);
 	}
 	tl_in_call = 0;
+	tl_in_simplex = 0;
 	tl_seconds += now() - t0;
 	p->last_iters = glp_get_it_cnt(p->P) - it0;
 	tl_solves++;
@@ -324,6 +363,8 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 
 void lp_basis_save(const struct lp *p, struct lp_basis *b)
 {
+	if (!alive(p))	/* after LP_ERROR or LP_STOPPED: nothing to save */
+		return;
 	int n = p->nrows + p->ncols;
 	if (b->n != n) {
 		free(b->stat);
@@ -338,6 +379,8 @@ void lp_basis_save(const struct lp *p, struct lp_basis *b)
 
 void lp_basis_load(struct lp *p, const struct lp_basis *b)
 {
+	if (!alive(p))
+		return;
 	if (b->n != p->nrows + p->ncols)
 		return;
 	for (int i = 0; i < p->nrows; i++)
@@ -400,6 +443,17 @@ void lp_thread_done(void)
 	glp_free_env();
 	tl_hooked = 0;
 	tl_generation++;
+}
+
+void lp_thread_stop_flag(const atomic_int *flag)
+{
+	tl_stop = flag;
+	tl_interrupted = 0;
+}
+
+int lp_thread_interrupted(void)
+{
+	return tl_interrupted;
 }
 
 const char *lp_last_message(void)

@@ -3,7 +3,10 @@
  *
  * Shared state is guarded by one mutex: the next index to hand out, the
  * next index the consumer expects, and a ring of `window` slots in which
- * sample i lives at i % window until it is popped.  A worker never runs
+ * sample i lives at i % window until it is popped.  Counters and slots
+ * are ordinals k within the pool's share (first + k * stride is the
+ * sample's index), so a pool that computes one MPI rank's share works
+ * exactly like one that computes every sample.  A worker never runs
  * more than `window` samples ahead of the consumer, so a slot is free
  * when its sample arrives.  The stop flag is a C11 atomic so that a
  * signal handler may set it; waits are timed (100 ms) so that a stop is
@@ -33,7 +36,8 @@ struct mc {
 	int nth, started;
 	pthread_mutex_t mu;
 	pthread_cond_t cv_space, cv_ready;
-	long next_index, next_out, window;
+	long count;		/* samples in this pool's share */
+	long next_index, next_out, window;	/* ordinals in the share */
 	int running;
 	struct slot *ring;
 	atomic_int stop;
@@ -47,6 +51,8 @@ void mc_config_default(struct mc_config *c, const struct wall *w)
 	c->w = w;
 	c->seed = w->seed;
 	c->n = w->samples;
+	c->first = 0;
+	c->stride = 1;
 	c->threads = 1;
 	c->depth = -1;
 	sample_opts_default(&c->opts);
@@ -112,6 +118,9 @@ static void *worker(void *arg)
 {
 	struct mc *m = arg;
 	const struct wall *w = m->cfg.w;
+	/* a stop reaches the LPs too: a sample in progress is abandoned
+	 * (on a large wall one LP can take minutes) */
+	lp_thread_stop_flag(&m->stop);
 	struct sample_ws *ws = sample_ws_new(w);
 	struct sample_result r;
 	struct mc_item it;
@@ -121,18 +130,19 @@ static void *worker(void *arg)
 
 	for (;;) {
 		pthread_mutex_lock(&m->mu);
-		while (!atomic_load(&m->stop) && m->next_index < m->cfg.n &&
+		while (!atomic_load(&m->stop) && m->next_index < m->count &&
 		       m->next_index >= m->next_out + m->window) {
 			struct timespec ts;
 			deadline(&ts, 100);
 			pthread_cond_timedwait(&m->cv_space, &m->mu, &ts);
 		}
-		if (atomic_load(&m->stop) || m->next_index >= m->cfg.n) {
+		if (atomic_load(&m->stop) || m->next_index >= m->count) {
 			pthread_mutex_unlock(&m->mu);
 			break;
 		}
-		long i = m->next_index++;
+		long k = m->next_index++;
 		pthread_mutex_unlock(&m->mu);
+		long i = m->cfg.first + k * m->cfg.stride;
 
 		if (m->cfg.positions)
 			memcpy(it.xi, m->cfg.positions + (size_t)i * nxi,
@@ -142,6 +152,9 @@ static void *worker(void *arg)
 					 m->cfg.depth, it.xi);
 		double t0 = now();
 		sample_run(ws, it.xi, &m->cfg.opts, &r);
+		if (lp_thread_interrupted())
+			break;	/* incomplete: never reported (mc_pop ends
+				 * at its index once the workers are gone) */
 		it.seconds = now() - t0;
 		it.index = i;
 		it.status = r.status;
@@ -160,10 +173,10 @@ static void *worker(void *arg)
 		}
 
 		pthread_mutex_lock(&m->mu);
-		struct slot *s = &m->ring[i % m->window];
+		struct slot *s = &m->ring[k % m->window];
 		item_copy(&s->item, &it, w);
 		s->full = 1;
-		if (i == m->next_out) {
+		if (k == m->next_out) {
 			pthread_cond_broadcast(&m->cv_ready);
 			notify(m);
 		}
@@ -176,6 +189,7 @@ static void *worker(void *arg)
 	sample_result_free(&r);
 	mc_item_free(&it);
 	sample_ws_free(ws);
+	lp_thread_stop_flag(NULL);
 	lp_thread_done();
 	pthread_mutex_lock(&m->mu);
 	m->counters.solves += solves;
@@ -194,8 +208,17 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 		sw_fail(err, SW_EUSAGE, "threads must be between 1 and 1024");
 		return NULL;
 	}
+	if (c->first < 0 || c->stride < 0) {
+		sw_fail(err, SW_EUSAGE, "a pool's share needs first >= 0 and "
+			"stride >= 0");
+		return NULL;
+	}
 	struct mc *m = sw_xcalloc(1, sizeof *m);
 	m->cfg = *c;
+	if (m->cfg.stride == 0)
+		m->cfg.stride = 1;
+	m->count = c->n > c->first ? (c->n - c->first - 1) / m->cfg.stride + 1
+				   : 0;
 	m->nth = c->threads;
 	m->window = 64 + 16L * c->threads;
 	m->ring = sw_xcalloc((size_t)m->window, sizeof *m->ring);
@@ -253,7 +276,7 @@ int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
 	if (wait_ms > 0)
 		deadline(&ts, wait_ms);
 	for (;;) {
-		if (m->next_out >= m->cfg.n) {
+		if (m->next_out >= m->count) {
 			pthread_mutex_unlock(&m->mu);
 			return -1;
 		}

@@ -351,6 +351,8 @@ static void canonical_bases(struct sample_ws *ws)
 		xi[2 * k + 1] = 1;
 	}
 	sample_run(ws, xi, &o, &r);
+	/* interrupted (lp_thread_stop_flag): the problems are dead and the
+	 * workspace is only fit to be freed; lp_basis_save skips them */
 	struct lp *all[6] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2,
 			     ws->kin};
 	for (int p = 0; p < 6; p++)

@@ -2,9 +2,10 @@
  * test_mc.c - the worker pool: every index 0..n-1 comes out exactly once
  * and in order; 1 and 3 threads give the same samples bit for bit; a
  * replay of the drawn positions recomputes the same samples; a stop
- * ends the stream with a gap-free prefix; the counters add up; and the
- * positions scale with the depth (the common random numbers of
- * compare --fit-depth).
+ * ends the stream with a gap-free prefix; the counters add up; a pool
+ * that computes a share (first, first + stride, ...: an MPI rank's)
+ * gives exactly those samples of the whole run; and the positions scale
+ * with the depth (the common random numbers of compare --fit-depth).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -179,6 +180,74 @@ static void test_stop(const struct wall *w)
 	tap_ok(m == NULL && strstr(err, "threads"), "threads = 0 refused");
 }
 
+/* The shares first = 0, 1, 2 of stride 3 (three MPI ranks) computed by
+ * pools of 2 threads: each gives its indices in order, and the samples
+ * are those of the whole run bit for bit. */
+static void test_share(const struct wall *w)
+{
+	char err[SW_ERRLEN];
+	size_t nxi = 2 * (size_t)w->nifaces;
+	struct run all;
+	run(w, 1, NULL, &all);
+	int ok = all.n == N, seen = 0;
+	for (long first = 0; first < 3; first++) {
+		struct mc_config cfg;
+		mc_config_default(&cfg, w);
+		cfg.n = N - 1;	/* not a multiple of the stride */
+		cfg.seed = 12345;
+		cfg.threads = 2;
+		cfg.first = first;
+		cfg.stride = 3;
+		struct mc *m = mc_start(&cfg, err);
+		if (!m) {
+			tap_ok(0, "mc_start of a share: %s", err);
+			free_run(&all);
+			return;
+		}
+		struct mc_item it;
+		mc_item_init(&it, w);
+		long k = 0;
+		int got;
+		while ((got = mc_pop(m, &it, 1)) >= 0) {
+			if (got == 0)
+				continue;
+			long i = first + 3 * k++;
+			ok &= it.index == i && i < N - 1;
+			if (i < N && ok)
+				ok &= (int)it.status == all.status[i] &&
+				      !memcmp(&it.lambda_min, &all.lam[i],
+					      sizeof(double)) &&
+				      it.iterations == all.iters[i] &&
+				      !memcmp(it.xi, all.xi + (size_t)i * nxi,
+					      nxi * sizeof(double));
+			seen++;
+		}
+		ok &= k == (N - 1 - first + 2) / 3;
+		mc_item_free(&it);
+		mc_free(m);
+	}
+	tap_ok(ok && seen == N - 1, "3 shares of stride 3 over %d samples: "
+	       "each its indices in order, %d samples in all, the same as "
+	       "one pool's bit for bit", N - 1, seen);
+
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = 2;
+	cfg.first = 5;
+	cfg.stride = 3;
+	struct mc *m = mc_start(&cfg, err);
+	struct mc_item it;
+	mc_item_init(&it, w);
+	tap_ok(m && mc_pop(m, &it, -1) == -1, "a share with no index below n "
+	       "(first 5 of 2 samples) ends at once");
+	mc_item_free(&it);
+	mc_free(m);
+	cfg.first = -1;
+	m = mc_start(&cfg, err);
+	tap_ok(m == NULL && strstr(err, "first"), "first < 0 refused");
+	free_run(&all);
+}
+
 static void test_depth(const struct wall *w)
 {
 	size_t nxi = 2 * (size_t)w->nifaces;
@@ -215,6 +284,7 @@ int main(void)
 	}
 	test_order(w);
 	test_stop(w);
+	test_share(w);
 	test_depth(w);
 	wall_free(w);
 	return tap_done();

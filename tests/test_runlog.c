@@ -135,6 +135,7 @@ static void test_round_trip(void)
 				      (size_t)rows),
 	       "every position identical bit for bit");
 	free(xi);
+	free(want);
 
 	double *lam = NULL;
 	st = runlog_read_loads(p, &lam, &n, err);

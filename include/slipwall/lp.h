@@ -18,12 +18,16 @@
 #ifndef SLIPWALL_LP_H
 #define SLIPWALL_LP_H
 
+#include <stdatomic.h>
+
 enum lp_status {
 	LP_OPTIMAL,
 	LP_INFEASIBLE,	/* no primal feasible point */
 	LP_UNBOUNDED,	/* feasible, objective unbounded */
 	LP_FAILED,	/* the simplex gave up (singular basis, limit) */
 	LP_ERROR,	/* GLPK reported an internal error; problems dead */
+	LP_STOPPED,	/* interrupted by the thread's stop flag; the
+			 * thread's problems are dead (as after LP_ERROR) */
 };
 
 enum lp_method { LP_PRIMAL, LP_DUAL };
@@ -84,6 +88,14 @@ void lp_thread_counters(long *solves, long *iterations);
  * monotonic clock, since start (for the benchmark). */
 double lp_thread_seconds(void);
 void lp_thread_done(void);
+/* Interruption: while *flag is non-zero, lp_solve on this thread returns
+ * LP_STOPPED at once, and a solve already running stops within about a
+ * second (src/lp.c, "Interruption").  NULL: never.  Also clears the
+ * thread's interrupted mark. */
+void lp_thread_stop_flag(const atomic_int *flag);
+/* Did an lp_solve of this thread return LP_STOPPED since the flag was
+ * set?  The sample it belonged to is incomplete: discard it. */
+int lp_thread_interrupted(void);
 const char *lp_last_message(void);
 
 /* Fault injection, for tests: from now on every `every`-th lp_solve()

@@ -8,8 +8,10 @@
  * Workers take indices from a shared counter and put finished samples
  * into a reorder window; the consumer (one thread: the `run` command, or
  * the workbench's UI thread) takes them out strictly in index order with
- * mc_pop().  Workers wait when they are more than the window ahead of the
- * consumer, so memory stays bounded.
+ * mc_pop().  A pool may compute a share of the indices only (first,
+ * first + stride, ...: one MPI rank's, src/cluster.c); "in order" is
+ * then the order of that share.  Workers wait when they are more than
+ * the window ahead of the consumer, so memory stays bounded.
  *
  * Signals: mc_start() blocks every asynchronous signal in the workers
  * (they inherit a full mask), so SIGINT, SIGTERM, SIGHUP and SIGWINCH go
@@ -25,7 +27,10 @@
 struct mc_config {
 	const struct wall *w;	/* finished; read by every worker */
 	unsigned long seed;
-	long n;			/* samples to compute (indices 0..n-1) */
+	long n;			/* samples of the run (indices 0..n-1) */
+	/* this pool's share: indices first, first + stride, ... < n (an MPI
+	 * rank's; 0 and 1 = every index; stride 0 counts as 1) */
+	long first, stride;
 	int threads;		/* >= 1 */
 	double depth;		/* < 0: the wall's contacts.depth */
 	struct sample_opts opts;
@@ -64,8 +69,11 @@ int mc_pop(struct mc *m, struct mc_item *it, int wait_ms);
  * (one byte per notification; mc_pop drains it).  For poll() loops. */
 int mc_wake_fd(const struct mc *m);
 
-/* Ask the workers to stop after their current sample.  Samples already
- * finished in order can still be popped.  Async-signal-safe. */
+/* Ask the workers to stop: each abandons the sample it is computing
+ * (within about a second, even inside a long LP: lp_thread_stop_flag)
+ * and takes no other.  Samples already finished in order can still be
+ * popped; an abandoned one is never reported, so the popped samples are
+ * always a prefix of the run.  Async-signal-safe. */
 void mc_stop(struct mc *m);
 
 /* Join the workers and free everything.  Stops first if needed. */

@@ -12,7 +12,7 @@
  *
  * Signals: SIGINT, SIGTERM and SIGHUP set a flag and stop the current
  * pool (mc_stop is async-signal-safe); the loop sees the flag, drains
- * the samples that were being computed into the CSV, closes it, restores
+ * the samples finished in order into the CSV, closes it, restores
  * the terminal and returns 0.  The handlers are installed before curses
  * starts, so ncurses keeps its hands off them; SIGWINCH stays with
  * ncurses, which turns it into KEY_RESIZE.  Workers block every signal

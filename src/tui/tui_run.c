@@ -66,7 +66,8 @@ static void tui_run_take(struct tui *t)
 	r->done++;
 }
 
-/* Stop the pool, take every sample it finished or was computing. */
+/* Stop the pool and take every sample it finished in order (those in
+ * progress are abandoned: mc_stop). */
 static void tui_run_drain(struct tui *t)
 {
 	struct tui_run *r = &t->run;
