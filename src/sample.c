@@ -27,9 +27,10 @@
  *               interface, Na + Nb - p + q = c
  *               cols: Na, Nb, T | lambda | lp2 only: p, q per interface
  *               lp1: max lambda with |T| <= mu c (column bounds: a fixed
- *               capacity, no dilatancy).  lp2: min sum (p + q) with lambda
- *               held at lp1's optimum - the optimal stress field closest
- *               in L1 to c.
+ *               capacity, no dilatancy).  lp2: min sum (p + q) over lp1's
+ *               optimal face (lp1's columns with a non-zero reduced cost
+ *               fixed where lp1 left them) - the optimal stress field
+ *               closest in L1 to c.
  *   kin         rows: one per column of A (opening rates at q_a, q_b,
  *               slip rate) | f_L . v = 1
  *               cols: block velocities | s+, s- per interface (slip =
@@ -54,6 +55,7 @@
 #define TOL_MOTION 1e-9
 #define VW_TOL 1e-8
 #define TOL_LIMIT 1e-5
+#define TOL_FACE 1e-9
 
 static const struct {
 	const char *name, *text;
@@ -557,6 +559,40 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 	return SAMPLE_ACCEPTED;
 }
 
+/* The shear capacity mu_k c_k of interface k in the SLP. */
+static double capacity(const struct sample_ws *ws, int k)
+{
+	return ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+}
+
+/* LP2's feasible set: LP1's optimal face.  A column that is non-basic in
+ * LP1's optimum with a non-zero reduced cost stays where LP1 left it, the
+ * others keep LP1's bounds (complementary slackness: every optimal field
+ * has those columns there, and every admissible field that has them
+ * there is optimal).  LP1's own field lies on this face, so LP2 cannot be
+ * infeasible; holding lambda >= lambda_LP1 exactly instead left no point
+ * within GLPK's tolerances for 9 % of the samples of Ferris & Tin-Loi
+ * wall 2, and any slack on lambda lets LP2 trade load for closeness
+ * through columns that are far from optimal (docs/method.md). */
+static void face_bounds(struct sample_ws *ws)
+{
+	struct lp *P = ws->lp1, *Q = ws->lp2;
+	for (int j = 0; j <= 3 * ws->m; j++) {
+		double lo = 0, hi = HUGE_VAL;	/* normal forces */
+		if (j == COL_LAMBDA(ws)) {
+			lo = -HUGE_VAL;
+		} else if (j % 3 == 2) {
+			hi = capacity(ws, j / 3);
+			lo = -hi;
+		}
+		if (!lp_col_basic(P, j) && fabs(lp_col_dual(P, j)) > TOL_FACE)
+			lo = hi = lp_col(P, j);
+		lp_set_col_bounds(Q, j, lo, hi);
+	}
+	for (int k = 0; k < ws->m; k++)
+		lp_set_row_bounds(Q, ws->R + k, ws->c[k], ws->c[k]);
+}
+
 /* Step 2b: the stabilised SLP from the capacities in ws->c.  Leaves the
  * converged stress field in ws->x and the load factor in r->lambda_max. */
 static enum sample_status slp(struct sample_ws *ws,
@@ -568,10 +604,9 @@ static enum sample_status slp(struct sample_ws *ws,
 	struct lp *P = ws->lp1, *Q = ws->lp2;
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
-		for (int k = 0; k < m; k++) {
-			double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
-			lp_set_col_bounds(P, 3 * k + 2, -cap, cap);
-		}
+		for (int k = 0; k < m; k++)
+			lp_set_col_bounds(P, 3 * k + 2, -capacity(ws, k),
+					  capacity(ws, k));
 		/* LP1: the maximum load with fixed capacities (only bounds
 		 * changed since the last LP1: a few dual simplex pivots) */
 		enum lp_status s = solve(ws, P, LP_DUAL, r);
@@ -584,26 +619,22 @@ static enum sample_status slp(struct sample_ws *ws,
 		double lam = lp_obj(P);
 		struct lp *X = P;	/* where the stress field is read */
 		/* LP2: of the optimal stress fields, the one whose normal
-		 * forces are closest (L1) to c; skipped when LP1's optimum
-		 * is already unique */
-		if (o->stabilise && !lp_unique(P, 1e-12)) {
-			for (int k = 0; k < m; k++) {
-				double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
-				lp_set_col_bounds(Q, 3 * k + 2, -cap, cap);
-				lp_set_row_bounds(Q, ws->R + k, ws->c[k], ws->c[k]);
-			}
-			/* lambda held at exactly LP1's optimum: the result must
-			 * be optimal for LP1, or its small forces are not
-			 * complementary to LP1's mechanisms.  Only bounds
-			 * change between two LP2s, so the dual simplex from
-			 * LP2's own last basis is short (the primal simplex
-			 * from LP1's optimum walks a degenerate face for
-			 * hundreds of pivots). */
-			lp_set_col_bounds(Q, COL_LAMBDA(ws), lam, HUGE_VAL);
+		 * forces are closest (L1) to c; skipped when LP1's optimal
+		 * face is a single point.  Only bounds change between two
+		 * LP2s, so the dual simplex from LP2's own last basis is
+		 * short (the primal simplex from LP1's optimum walks the
+		 * degenerate face for hundreds of pivots). */
+		if (o->stabilise && !lp_unique(P, TOL_FACE)) {
+			face_bounds(ws);
 			s = solve(ws, Q, LP_DUAL, r);
 			if (s != LP_OPTIMAL)
 				return SAMPLE_NUMERICAL;
-			lam = lp_col(Q, COL_LAMBDA(ws));
+			/* on the face the load is LP1's but for the columns
+			 * whose reduced costs count as zero (measured: 2e-9) */
+			double lam2 = lp_col(Q, COL_LAMBDA(ws));
+			if (!(fabs(lam2 - lam) <= o->tol * fmax(1, fabs(lam))))
+				return SAMPLE_NUMERICAL;
+			lam = lam2;
 			X = Q;
 		}
 		double diff = 0;
@@ -647,7 +678,7 @@ static enum sample_status onset(struct sample_ws *ws,
 			else
 				lp_set_row_bounds(K, 3 * k + e, 0, HUGE_VAL);
 		}
-		double cap = ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+		double cap = capacity(ws, k);
 		/* at the limit: GLPK leaves a basic shear up to ~1e-6
 		 * (relative) inside its bound */
 		double t = ws->x[3 * k + 2], tol = fzero + TOL_LIMIT * cap;

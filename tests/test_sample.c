@@ -111,32 +111,43 @@ static void ferris_tinloi(void)
 	}
 }
 
-/* Wall 1 at the default depth: at least 90 % of 200 samples accepted. */
+/* The published walls at the default depth: an independent implementation
+ * accepts nearly all samples (SPEC section 2).  At least 195 of 200, and
+ * at most 2 rejected as numerical: when LP2 held lambda >= lambda_LP1
+ * exactly instead of keeping to LP1's optimal face, GLPK found LP2
+ * infeasible for 17 of these 200 samples of wall 2. */
 static void acceptance(void)
 {
-	struct wall *w = tw_load_file("walls/ferris-tinloi-1.yaml");
-	struct sample_ws *ws = sample_ws_new(w);
-	struct sample_result r;
-	struct sample_opts o;
-	sample_opts_default(&o);
-	sample_result_init(&r, w);
-	double *xi = malloc(sizeof(double) * 2 * (size_t)w->nifaces);
-	int count[SAMPLE_STATUS_COUNT] = {0};
-	for (int i = 0; i < 200; i++) {
-		sample_positions(w, 1, (unsigned long)i, -1, xi);
-		sample_run(ws, xi, &o, &r);
-		count[r.status]++;
+	const char *files[] = {"walls/ferris-tinloi-1.yaml",
+			       "walls/ferris-tinloi-2.yaml"};
+	for (int f = 0; f < 2; f++) {
+		struct wall *w = tw_load_file(files[f]);
+		struct sample_ws *ws = sample_ws_new(w);
+		struct sample_result r;
+		struct sample_opts o;
+		sample_opts_default(&o);
+		sample_result_init(&r, w);
+		double *xi = malloc(sizeof(double) * 2 * (size_t)w->nifaces);
+		int count[SAMPLE_STATUS_COUNT] = {0};
+		for (int i = 0; i < 200; i++) {
+			sample_positions(w, 1, (unsigned long)i, -1, xi);
+			sample_run(ws, xi, &o, &r);
+			count[r.status]++;
+		}
+		for (int s = 0; s < SAMPLE_STATUS_COUNT; s++)
+			if (count[s])
+				tap_diag("%s: %s: %d", files[f],
+					 sample_status_name(s), count[s]);
+		tap_ok(count[SAMPLE_ACCEPTED] >= 195 &&
+		       count[SAMPLE_NUMERICAL] <= 2,
+		       "%s, depth 0.25: %d of 200 accepted (>= 195), %d "
+		       "numerical (<= 2)", files[f], count[SAMPLE_ACCEPTED],
+		       count[SAMPLE_NUMERICAL]);
+		free(xi);
+		sample_result_free(&r);
+		sample_ws_free(ws);
+		wall_free(w);
 	}
-	for (int s = 0; s < SAMPLE_STATUS_COUNT; s++)
-		if (count[s])
-			tap_diag("%s: %d", sample_status_name(s), count[s]);
-	tap_ok(count[SAMPLE_ACCEPTED] >= 180,
-	       "Ferris & Tin-Loi wall 1, depth 0.25: %d of 200 accepted (>= 180)",
-	       count[SAMPLE_ACCEPTED]);
-	free(xi);
-	sample_result_free(&r);
-	sample_ws_free(ws);
-	wall_free(w);
 }
 
 /* Positions depend on (seed, index) only and respect the depth. */
