@@ -183,8 +183,8 @@ static void *worker(void *arg)
 		pthread_mutex_unlock(&m->mu);
 	}
 
-	long solves, iters;
-	lp_thread_counters(&solves, &iters);
+	long solves, iters, held;
+	lp_thread_counters(&solves, &iters, &held);
 	double lp_seconds = lp_thread_seconds();
 	sample_result_free(&r);
 	mc_item_free(&it);
@@ -194,6 +194,7 @@ static void *worker(void *arg)
 	pthread_mutex_lock(&m->mu);
 	m->counters.solves += solves;
 	m->counters.iterations += iters;
+	m->counters.held += held;
 	m->counters.lp_seconds += lp_seconds;
 	m->running--;
 	pthread_cond_broadcast(&m->cv_ready);

@@ -49,7 +49,9 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 		const double *vals);
 
 /* Solve from the current basis.  If the simplex fails (singular basis,
- * iteration limit) it is retried once from an advanced basis. */
+ * iteration limit) it is retried once from an advanced basis.  A dual
+ * simplex solve after bound changes only first tries the basis of the
+ * last solve as it is (src/lp.c, "Held bases"). */
 enum lp_status lp_solve(struct lp *p, enum lp_method m);
 /* Forget the basis (next solve starts from the standard basis). */
 void lp_reset_basis(struct lp *p);
@@ -82,8 +84,10 @@ int lp_unique(const struct lp *p, double tol);
 /* Simplex iterations of the last solve. */
 int lp_last_iterations(const struct lp *p);
 
-/* Counters of this thread: solves and simplex iterations since start. */
-void lp_thread_counters(long *solves, long *iterations);
+/* Counters of this thread since start: solves, simplex iterations, and
+ * solves answered by the basis GLPK held, without the simplex (src/lp.c,
+ * "Held bases"). */
+void lp_thread_counters(long *solves, long *iterations, long *held);
 /* Seconds this thread spent inside lp_solve (GLPK's simplex), by the
  * monotonic clock, since start (for the benchmark). */
 double lp_thread_seconds(void);

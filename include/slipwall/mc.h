@@ -79,11 +79,12 @@ void mc_stop(struct mc *m);
 /* Join the workers and free everything.  Stops first if needed. */
 void mc_free(struct mc *m);
 
-/* Worker-side counters, for the benchmark: LP solves and simplex
- * iterations summed over the workers that have exited, and the seconds
- * they spent inside GLPK's simplex (approximate). */
+/* Worker-side counters, for the benchmark: LP solves, simplex
+ * iterations and solves answered by the held basis (lp.h), summed over
+ * the workers that have exited, and the seconds they spent inside GLPK
+ * (approximate). */
 struct mc_counters {
-	long solves, iterations;
+	long solves, iterations, held;
 	double lp_seconds;	/* inside lp_solve, summed over workers */
 };
 void mc_counters(const struct mc *m, struct mc_counters *c);
