@@ -9,7 +9,7 @@
  * is rewritten per sample.  All quantities are in the scaled units of
  * statics.h; results are converted at the end.
  *
- *   amax, amin, stand  rows: equilibrium (3 per free block) only
+ *   AMAX, AMIN  rows: equilibrium (3 per free block) only
  *               cols: the force at each contact point in the edge
  *               directions of its friction cone, F = alpha (n + mu t) +
  *               beta (n - mu t), alpha, beta >= 0 (so N = alpha + beta,
@@ -19,19 +19,20 @@
  *               every yield condition LP-min holds at its limit is a
  *               column bound: N_j = 0 is alpha_j = beta_j = 0, T = +mu N
  *               is beta = 0, T = -mu N is alpha = 0.
- *               amax: LP-max (max lambda).  amin: min lambda >= 0
- *               with the mechanism's yield conditions held at their
- *               limits (LP-min).  stand: the same with lambda = 0 and no
- *               objective: can the wall stand under its own weight?
- *   lp1, lp2    rows: equilibrium | lp2 only: 1 closeness row per
+ *               AMAX: LP-max (max lambda), then the standing check
+ *               (the same problem with lambda = 0: can the wall stand
+ *               under its own weight?).  AMIN: min lambda >= 0 with the
+ *               mechanism's yield conditions held at their limits
+ *               (LP-min).
+ *   LP1, LP2    rows: equilibrium | LP2 only: 1 closeness row per
  *               interface, Na + Nb - p + q = c
- *               cols: Na, Nb, T | lambda | lp2 only: p, q per interface
- *               lp1: max lambda with |T| <= mu c (column bounds: a fixed
- *               capacity, no dilatancy).  lp2: min sum (p + q) over lp1's
- *               optimal face (lp1's columns with a non-zero reduced cost
- *               fixed where lp1 left them) - the optimal stress field
+ *               cols: Na, Nb, T | lambda | LP2 only: p, q per interface
+ *               LP1: max lambda with |T| <= mu c (column bounds: a fixed
+ *               capacity, no dilatancy).  LP2: min sum (p + q) over LP1's
+ *               optimal face (LP1's columns with a non-zero reduced cost
+ *               fixed where LP1 left them) - the optimal stress field
  *               closest in L1 to c.
- *   kin         rows: one per column of A (opening rates at q_a, q_b,
+ *   KIN         rows: one per column of A (opening rates at q_a, q_b,
  *               slip rate) | f_L . v = 1
  *               cols: block velocities | s+, s- per interface (slip =
  *               s+ - s-); min sum of opening rates + sum |slip|: the
@@ -116,15 +117,16 @@ void sample_result_free(struct sample_result *r)
 	memset(r, 0, sizeof *r);
 }
 
+/* The LP roles of a sample, one GLPK problem each (see the top). */
+enum role { AMAX, AMIN, LP1, LP2, KIN, ROLES };
+
 struct sample_ws {
 	const struct wall *w;
 	struct statics st;
 	int m, R;		/* interfaces, equilibrium rows */
-	/* one GLPK problem per LP role, so that between two solves of a
-	 * role only bounds change and GLPK keeps its factorisation:
-	 * amax (LP-max), stand (standing check), amin (LP-min), lp1, lp2 (the SLP),
-	 * kin (the onset check) */
-	struct lp *amax, *amin, *stand, *lp1, *lp2, *kin;
+	/* one GLPK problem per LP role (see the top), so that between two
+	 * solves of a role only bounds change and GLPK keeps its basis */
+	struct lp *lp[ROLES];
 	double *c;		/* m: SLP capacities (sum of normal forces) */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */
@@ -132,7 +134,7 @@ struct sample_ws {
 	int *ind;		/* scratch */
 	double *val;
 	gsl_rng *rng;
-	struct lp_basis canon[6];	/* see set_points() */
+	struct lp_basis canon[ROLES];	/* see set_points() */
 };
 
 /* Column indices. */
@@ -169,9 +171,9 @@ static void put_column(struct sample_ws *ws, int j)
 		kcols[kn] = KCOL_SM(ws, k);
 		kvals[kn++] = 1;
 	}
-	lp_set_row(ws->kin, j, kn, kcols, kvals);
+	lp_set_row(ws->lp[KIN], j, kn, kcols, kvals);
 
-	/* amax, amin, stand: the cone edges n +- mu t at this point; the
+	/* AMAX, AMIN: the cone edges n +- mu t at this point; the
 	 * shear's part of a column does not depend on the point */
 	if (kind != 2) {
 		int trows[6];
@@ -196,9 +198,8 @@ static void put_column(struct sample_ws *ws, int j)
 				ev[q] += (sgn ? -mu : mu) * tvals[i];
 			}
 			int col = sgn ? ACOL_BETA(k, kind) : ACOL_ALPHA(k, kind);
-			lp_set_col(ws->amax, col, en, er, ev);
-			lp_set_col(ws->amin, col, en, er, ev);
-			lp_set_col(ws->stand, col, en, er, ev);
+			lp_set_col(ws->lp[AMAX], col, en, er, ev);
+			lp_set_col(ws->lp[AMIN], col, en, er, ev);
 		}
 	}
 
@@ -208,8 +209,8 @@ static void put_column(struct sample_ws *ws, int j)
 		rows[sn] = ws->R + k;
 		vals[sn++] = 1;
 	}
-	lp_set_col(ws->lp1, j, n, rows, vals);	/* no closeness row */
-	lp_set_col(ws->lp2, j, sn, rows, vals);
+	lp_set_col(ws->lp[LP1], j, n, rows, vals);	/* no closeness row */
+	lp_set_col(ws->lp[LP2], j, sn, rows, vals);
 }
 
 /* The objective of the kinematic LP on the velocities: the sum of the
@@ -228,7 +229,7 @@ static void put_kin_objective(struct sample_ws *ws)
 			g[rows[i]] += vals[i];
 	}
 	for (int i = 0; i < ws->R; i++)
-		lp_set_obj(ws->kin, i, g[i]);
+		lp_set_obj(ws->lp[KIN], i, g[i]);
 }
 
 /* The rows, bounds and fixed columns of an associative problem (amax,
@@ -272,17 +273,15 @@ static void build_slp(struct sample_ws *ws, struct lp *P)
 static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	ws->amax = lp_new(R, 4 * m + 1);
-	ws->amin = lp_new(R, 4 * m + 1);
-	ws->stand = lp_new(R, 4 * m + 1);
-	ws->lp1 = lp_new(R, 3 * m + 1);
-	ws->lp2 = lp_new(R + m, 3 * m + 1 + 2 * m);
-	ws->kin = lp_new(3 * m + 1, R + 2 * m);
-	build_assoc(ws, ws->amax);
-	build_assoc(ws, ws->amin);
-	build_assoc(ws, ws->stand);
-	build_lp1(ws, ws->lp1);
-	build_slp(ws, ws->lp2);
+	ws->lp[AMAX] = lp_new(R, 4 * m + 1);
+	ws->lp[AMIN] = lp_new(R, 4 * m + 1);
+	ws->lp[LP1] = lp_new(R, 3 * m + 1);
+	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
+	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
+	build_assoc(ws, ws->lp[AMAX]);
+	build_assoc(ws, ws->lp[AMIN]);
+	build_lp1(ws, ws->lp[LP1]);
+	build_slp(ws, ws->lp[LP2]);
 	for (int j = 0; j < 3 * m; j++)
 		put_column(ws, j);
 
@@ -293,46 +292,41 @@ static void build(struct sample_ws *ws)
 			ws->ind[nl] = i;
 			ws->val[nl++] = ws->st.fL[i];
 		}
-	struct lp *all[5] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2};
-	for (int p = 0; p < 5; p++)
-		lp_set_col(all[p], p < 3 ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws), nl,
-			   ws->ind, ws->val);
+	for (int p = AMAX; p <= LP2; p++)
+		lp_set_col(ws->lp[p], p == AMAX || p == AMIN ? ACOL_LAMBDA(ws)
+							    : COL_LAMBDA(ws),
+			   nl, ws->ind, ws->val);
 	/* the objectives never change: max lambda (free) for LP-max and
-	 * LP1, min lambda >= 0 for the standing check and LP-min, min
-	 * sum (p + q) for LP2 (its lambda bound is set per iteration) */
-	lp_set_col_bounds(ws->amax, ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-	lp_set_obj(ws->amax, ACOL_LAMBDA(ws), 1);
-	lp_set_maximize(ws->amax, 1);
-	lp_set_col_bounds(ws->amin, ACOL_LAMBDA(ws), 0, HUGE_VAL);
-	lp_set_obj(ws->amin, ACOL_LAMBDA(ws), 1);
-	lp_set_maximize(ws->amin, 0);
-	/* standing: is there an admissible field at lambda = 0?  No
-	 * objective: the simplex stops at the first feasible basis (a
-	 * minimum over the degenerate face costs hundreds of pivots) */
-	lp_set_col_bounds(ws->stand, ACOL_LAMBDA(ws), 0, 0);
-	lp_set_col_bounds(ws->lp1, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
-	lp_set_obj(ws->lp1, COL_LAMBDA(ws), 1);
-	lp_set_maximize(ws->lp1, 1);
+	 * LP1, min lambda >= 0 for LP-min, min sum (p + q) for LP2 */
+	lp_set_col_bounds(ws->lp[AMAX], ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->lp[AMAX], ACOL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[AMAX], 1);
+	lp_set_col_bounds(ws->lp[AMIN], ACOL_LAMBDA(ws), 0, HUGE_VAL);
+	lp_set_obj(ws->lp[AMIN], ACOL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[AMIN], 0);
+	lp_set_col_bounds(ws->lp[LP1], COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->lp[LP1], COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[LP1], 1);
 	for (int k = 0; k < m; k++) {
-		lp_set_obj(ws->lp2, COL_P(ws, k), 1);
-		lp_set_obj(ws->lp2, COL_Q(ws, k), 1);
+		lp_set_obj(ws->lp[LP2], COL_P(ws, k), 1);
+		lp_set_obj(ws->lp[LP2], COL_Q(ws, k), 1);
 	}
-	lp_set_maximize(ws->lp2, 0);
+	lp_set_maximize(ws->lp[LP2], 0);
 
 	/* kin normalisation row: f_L . v = 1 */
-	lp_set_row(ws->kin, 3 * m, nl, ws->ind, ws->val);
-	lp_set_row_bounds(ws->kin, 3 * m, 1, 1);
+	lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
+	lp_set_row_bounds(ws->lp[KIN], 3 * m, 1, 1);
 	/* kin: velocities free, slips >= 0, slip rows = 0 */
 	for (int i = 0; i < R; i++)
-		lp_set_col_bounds(ws->kin, i, -HUGE_VAL, HUGE_VAL);
+		lp_set_col_bounds(ws->lp[KIN], i, -HUGE_VAL, HUGE_VAL);
 	for (int k = 0; k < m; k++) {
-		lp_set_col_bounds(ws->kin, KCOL_SP(ws, k), 0, HUGE_VAL);
-		lp_set_col_bounds(ws->kin, KCOL_SM(ws, k), 0, HUGE_VAL);
-		lp_set_obj(ws->kin, KCOL_SP(ws, k), 1);
-		lp_set_obj(ws->kin, KCOL_SM(ws, k), 1);
-		lp_set_row_bounds(ws->kin, 3 * k + 2, 0, 0);
+		lp_set_col_bounds(ws->lp[KIN], KCOL_SP(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(ws->lp[KIN], KCOL_SM(ws, k), 0, HUGE_VAL);
+		lp_set_obj(ws->lp[KIN], KCOL_SP(ws, k), 1);
+		lp_set_obj(ws->lp[KIN], KCOL_SM(ws, k), 1);
+		lp_set_row_bounds(ws->lp[KIN], 3 * k + 2, 0, 0);
 	}
-	lp_set_maximize(ws->kin, 0);
+	lp_set_maximize(ws->lp[KIN], 0);
 	put_kin_objective(ws);
 }
 
@@ -355,10 +349,8 @@ static void canonical_bases(struct sample_ws *ws)
 	sample_run(ws, xi, &o, &r);
 	/* interrupted (lp_thread_stop_flag): the problems are dead and the
 	 * workspace is only fit to be freed; lp_basis_save skips them */
-	struct lp *all[6] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2,
-			     ws->kin};
-	for (int p = 0; p < 6; p++)
-		lp_basis_save(all[p], &ws->canon[p]);
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_save(ws->lp[p], &ws->canon[p]);
 	free(xi);
 	sample_result_free(&r);
 }
@@ -388,12 +380,8 @@ void sample_ws_free(struct sample_ws *ws)
 {
 	if (!ws)
 		return;
-	lp_free(ws->amax);
-	lp_free(ws->amin);
-	lp_free(ws->stand);
-	lp_free(ws->lp1);
-	lp_free(ws->lp2);
-	lp_free(ws->kin);
+	for (int p = 0; p < ROLES; p++)
+		lp_free(ws->lp[p]);
 	statics_free(&ws->st);
 	free(ws->c);
 	free(ws->x);
@@ -403,20 +391,17 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->ind);
 	free(ws->val);
 	gsl_rng_free(ws->rng);
-	for (int p = 0; p < 6; p++)
+	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
 	free(ws);
 }
 
-/* After a GLPK error the problems are dead: build them again. */
+/* Fresh problems, built at the current contact points (after a GLPK
+ * error the old ones are dead). */
 static void rebuild(struct sample_ws *ws)
 {
-	lp_free(ws->amax);
-	lp_free(ws->amin);
-	lp_free(ws->stand);
-	lp_free(ws->lp1);
-	lp_free(ws->lp2);
-	lp_free(ws->kin);
+	for (int p = 0; p < ROLES; p++)
+		lp_free(ws->lp[p]);
 	build(ws);
 }
 
@@ -461,28 +446,21 @@ void sample_positions(const struct wall *w, unsigned long seed,
  * which stress field the SLP follows; they start from GLPK's standard
  * (slack) basis, a neutral start: starting them from the classical
  * solution's bases instead steers nearly every sample of the demo wall
- * to the classical mechanism (p95/p05 = 1.0 instead of 2.2).  The other
+ * to the classical mechanism (p95/p05 = 1.0 instead of 6.7).  The other
  * roles start from the canonical bases of sample_ws_new.  Warm starts
  * then carry every LP of the SLP from one iteration to the next. */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
+	statics_set_points(&ws->st, xi);
 	/* fresh GLPK problems: GLPK's factorisation storage keeps history
 	 * that shows in the last digit of a solution */
 	rebuild(ws);
-	struct lp *all[6] = {ws->amax, ws->amin, ws->stand, ws->lp1, ws->lp2,
-			     ws->kin};
-	for (int p = 0; p < 6; p++) {
-		if (all[p] == ws->amax || all[p] == ws->lp1)
-			lp_reset_basis(all[p]);
+	for (int p = 0; p < ROLES; p++) {
+		if (p == AMAX || p == LP1)
+			lp_reset_basis(ws->lp[p]);
 		else
-			lp_basis_load(all[p], &ws->canon[p]);
+			lp_basis_load(ws->lp[p], &ws->canon[p]);
 	}
-	statics_set_points(&ws->st, xi);
-	for (int k = 0; k < ws->m; k++) {
-		put_column(ws, 3 * k);
-		put_column(ws, 3 * k + 1);
-	}
-	put_kin_objective(ws);
 }
 
 /* Release LP-min's fixings in amin: back to the plain associative
@@ -490,7 +468,7 @@ static void set_points(struct sample_ws *ws, const double *xi)
 static void amin_reset(struct sample_ws *ws)
 {
 	for (int j = 0; j < 4 * ws->m; j++)
-		lp_set_col_bounds(ws->amin, j, 0, HUGE_VAL);
+		lp_set_col_bounds(ws->lp[AMIN], j, 0, HUGE_VAL);
 }
 
 /* The stress field (N_a, N_b, T per interface, ws->x's layout) of the
@@ -531,7 +509,8 @@ static enum lp_status solve(struct sample_ws *ws, struct lp *p,
 	return s;
 }
 
-/* Step 2a: LP-max, and can the wall stand at lambda = 0? */
+/* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
+ * starting capacities in ws->c. */
 static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 {
 	/* The primal simplex from the slack basis: LP-max is degenerate,
@@ -540,23 +519,34 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 	 * 5 on the demo wall (p95/p05 6.7, 7 mechanisms); the dual simplex
 	 * lands on other vertices (p95/p05 2.2) and, on the 1,000-block
 	 * wall, does not finish within GLPK's time limit. */
-	enum lp_status s = solve(ws, ws->amax, LP_PRIMAL, r);
+	enum lp_status s = solve(ws, ws->lp[AMAX], LP_PRIMAL, r);
 	if (s != LP_OPTIMAL)
 		return lp_to_sample(s);
-	double lam = lp_obj(ws->amax);
+	double lam = lp_obj(ws->lp[AMAX]);
 	r->lambda_lpmax = lam;
 	if (!(lam > TOL_FORCE))
 		return SAMPLE_NONPOSITIVE;
-	assoc_field(ws, ws->amax, ws->x);
+	assoc_field(ws, ws->lp[AMAX], ws->x);
 	for (int k = 0; k < ws->m; k++)
 		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
-	/* the wall must stand under its own weight on these points */
-	s = solve(ws, ws->stand, LP_PRIMAL, r);
-	if (s == LP_ERROR || s == LP_FAILED)
-		return SAMPLE_NUMERICAL;
-	if (s != LP_OPTIMAL)
-		return SAMPLE_UNSTABLE;
 	return SAMPLE_ACCEPTED;
+}
+
+/* Step 2a, after LP-max: can the wall stand under its own weight on
+ * these contact points, is there an admissible field at lambda = 0?  The
+ * admissible load factors form an interval that ends at LP-max's, so
+ * this is a question of feasibility alone, whose answer does not depend
+ * on how it is found: LP-max's own problem with lambda fixed at 0, by
+ * the dual simplex from LP-max's optimal basis (still dual feasible:
+ * only lambda's bound changed).  LP-max's solution is gone after it. */
+static enum sample_status standing(struct sample_ws *ws,
+				   struct sample_result *r)
+{
+	lp_set_col_bounds(ws->lp[AMAX], ACOL_LAMBDA(ws), 0, 0);
+	enum lp_status s = solve(ws, ws->lp[AMAX], LP_DUAL, r);
+	if (s == LP_OPTIMAL)
+		return SAMPLE_ACCEPTED;
+	return s == LP_INFEASIBLE ? SAMPLE_UNSTABLE : SAMPLE_NUMERICAL;
 }
 
 /* The shear capacity mu_k c_k of interface k in the SLP. */
@@ -576,7 +566,7 @@ static double capacity(const struct sample_ws *ws, int k)
  * through columns that are far from optimal (docs/method.md). */
 static void face_bounds(struct sample_ws *ws)
 {
-	struct lp *P = ws->lp1, *Q = ws->lp2;
+	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
 	for (int j = 0; j <= 3 * ws->m; j++) {
 		double lo = 0, hi = HUGE_VAL;	/* normal forces */
 		if (j == COL_LAMBDA(ws)) {
@@ -601,7 +591,7 @@ static enum sample_status slp(struct sample_ws *ws,
 {
 	int m = ws->m;
 	double lam_prev = NAN;
-	struct lp *P = ws->lp1, *Q = ws->lp2;
+	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
 		for (int k = 0; k < m; k++)
@@ -669,7 +659,7 @@ static enum sample_status onset(struct sample_ws *ws,
 	 * carries ~ tol when the SLP stops */
 	double fzero = fmax(TOL_FORCE, 100 * o->tol);
 	int m = ws->m;
-	struct lp *K = ws->kin;
+	struct lp *K = ws->lp[KIN];
 	for (int k = 0; k < m; k++) {
 		for (int e = 0; e < 2; e++) {
 			double nj = ws->x[3 * k + e];
@@ -723,7 +713,7 @@ static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
 {
 	int m = ws->m;
 	double thr = TOL_MOTION * motion_scale(ws);
-	struct lp *P = ws->amin;
+	struct lp *P = ws->lp[AMIN];
 	amin_reset(ws);
 	for (int k = 0; k < m; k++) {
 		for (int e = 0; e < 2; e++) {
@@ -815,6 +805,8 @@ void sample_run(struct sample_ws *ws, const double *xi,
 
 	enum sample_status st = lp_max(ws, r);
 	if (st == SAMPLE_ACCEPTED)
+		st = standing(ws, r);
+	if (st == SAMPLE_ACCEPTED)
 		st = slp(ws, o, r);
 	if (st == SAMPLE_ACCEPTED)
 		st = onset(ws, o, r);
@@ -858,26 +850,29 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
 	set_points(ws, xi);
 	enum sample_status st = lp_max(ws, r);
-	r->status = st;
 	if (st != SAMPLE_ACCEPTED) {
 		r->lambda_lpmax *= ws->st.S;
-		return st;
+		return r->status = st;
 	}
-	/* the mechanism: the duals of LP-max's equilibrium rows (amax still
-	 * holds its optimum), scaled so that f_L . v = 1 */
-	double lam = lp_obj(ws->amax), fl = 0;
+	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
+	 * that f_L . v = 1; read before the standing check reuses AMAX */
+	double lam = lp_obj(ws->lp[AMAX]), fl = 0;
 	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
 	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
 	for (int i = 0; i < ws->R; i++) {
-		v[i] = lp_row_dual(ws->amax, i);
+		v[i] = lp_row_dual(ws->lp[AMAX], i);
 		fl += ws->st.fL[i] * v[i];
 	}
 	for (int i = 0; i < ws->R && fl != 0; i++)
 		v[i] /= fl;
-	assoc_field(ws, ws->amax, x);
-	sample_export(ws, v, x, r);
+	assoc_field(ws, ws->lp[AMAX], x);
+	r->lambda_lpmax = lam * ws->st.S;
+	st = standing(ws, r);
+	if (st == SAMPLE_ACCEPTED) {
+		sample_export(ws, v, x, r);
+		r->lambda_max = r->lambda_min = r->lambda_lpmax;
+	}
 	free(v);
 	free(x);
-	r->lambda_lpmax = r->lambda_max = r->lambda_min = lam * ws->st.S;
-	return r->status = SAMPLE_ACCEPTED;
+	return r->status = st;
 }
