@@ -9,7 +9,7 @@
  * is rewritten per sample.  All quantities are in the scaled units of
  * statics.h; results are converted at the end.
  *
- *   AMAX, AMIN  rows: equilibrium (3 per free block) only
+ *   AMAX, STAND, AMIN  rows: equilibrium (3 per free block) only
  *               cols: the force at each contact point in the edge
  *               directions of its friction cone, F = alpha (n + mu t) +
  *               beta (n - mu t), alpha, beta >= 0 (so N = alpha + beta,
@@ -19,11 +19,10 @@
  *               every yield condition LP-min holds at its limit is a
  *               column bound: N_j = 0 is alpha_j = beta_j = 0, T = +mu N
  *               is beta = 0, T = -mu N is alpha = 0.
- *               AMAX: LP-max (max lambda), then the standing check
- *               (the same problem with lambda = 0: can the wall stand
- *               under its own weight?).  AMIN: min lambda >= 0 with the
- *               mechanism's yield conditions held at their limits
- *               (LP-min).
+ *               AMAX: LP-max (max lambda).  STAND: lambda = 0 and no
+ *               objective: can the wall stand under its own weight?
+ *               AMIN: min lambda >= 0 with the mechanism's yield
+ *               conditions held at their limits (LP-min).
  *   LP1, LP2    rows: equilibrium | LP2 only: 1 closeness row per
  *               interface, Na + Nb - p + q = c
  *               cols: Na, Nb, T | lambda | LP2 only: p, q per interface
@@ -118,7 +117,7 @@ void sample_result_free(struct sample_result *r)
 }
 
 /* The LP roles of a sample, one GLPK problem each (see the top). */
-enum role { AMAX, AMIN, LP1, LP2, KIN, ROLES };
+enum role { AMAX, STAND, AMIN, LP1, LP2, KIN, ROLES };
 
 struct sample_ws {
 	const struct wall *w;
@@ -173,7 +172,7 @@ static void put_column(struct sample_ws *ws, int j)
 	}
 	lp_set_row(ws->lp[KIN], j, kn, kcols, kvals);
 
-	/* AMAX, AMIN: the cone edges n +- mu t at this point; the
+	/* AMAX, STAND, AMIN: the cone edges n +- mu t at this point; the
 	 * shear's part of a column does not depend on the point */
 	if (kind != 2) {
 		int trows[6];
@@ -198,8 +197,8 @@ static void put_column(struct sample_ws *ws, int j)
 				ev[q] += (sgn ? -mu : mu) * tvals[i];
 			}
 			int col = sgn ? ACOL_BETA(k, kind) : ACOL_ALPHA(k, kind);
-			lp_set_col(ws->lp[AMAX], col, en, er, ev);
-			lp_set_col(ws->lp[AMIN], col, en, er, ev);
+			for (int p = AMAX; p <= AMIN; p++)
+				lp_set_col(ws->lp[p], col, en, er, ev);
 		}
 	}
 
@@ -273,13 +272,13 @@ static void build_slp(struct sample_ws *ws, struct lp *P)
 static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	ws->lp[AMAX] = lp_new(R, 4 * m + 1);
-	ws->lp[AMIN] = lp_new(R, 4 * m + 1);
+	for (int p = AMAX; p <= AMIN; p++) {
+		ws->lp[p] = lp_new(R, 4 * m + 1);
+		build_assoc(ws, ws->lp[p]);
+	}
 	ws->lp[LP1] = lp_new(R, 3 * m + 1);
 	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
 	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
-	build_assoc(ws, ws->lp[AMAX]);
-	build_assoc(ws, ws->lp[AMIN]);
 	build_lp1(ws, ws->lp[LP1]);
 	build_slp(ws, ws->lp[LP2]);
 	for (int j = 0; j < 3 * m; j++)
@@ -293,8 +292,7 @@ static void build(struct sample_ws *ws)
 			ws->val[nl++] = ws->st.fL[i];
 		}
 	for (int p = AMAX; p <= LP2; p++)
-		lp_set_col(ws->lp[p], p == AMAX || p == AMIN ? ACOL_LAMBDA(ws)
-							    : COL_LAMBDA(ws),
+		lp_set_col(ws->lp[p], p <= AMIN ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws),
 			   nl, ws->ind, ws->val);
 	/* the objectives never change: max lambda (free) for LP-max and
 	 * LP1, min lambda >= 0 for LP-min, min sum (p + q) for LP2 */
@@ -304,6 +302,10 @@ static void build(struct sample_ws *ws)
 	lp_set_col_bounds(ws->lp[AMIN], ACOL_LAMBDA(ws), 0, HUGE_VAL);
 	lp_set_obj(ws->lp[AMIN], ACOL_LAMBDA(ws), 1);
 	lp_set_maximize(ws->lp[AMIN], 0);
+	/* standing: is there an admissible field at lambda = 0?  No
+	 * objective: the simplex stops at the first feasible basis (a
+	 * minimum over the degenerate face costs hundreds of pivots) */
+	lp_set_col_bounds(ws->lp[STAND], ACOL_LAMBDA(ws), 0, 0);
 	lp_set_col_bounds(ws->lp[LP1], COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
 	lp_set_obj(ws->lp[LP1], COL_LAMBDA(ws), 1);
 	lp_set_maximize(ws->lp[LP1], 1);
@@ -535,15 +537,14 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
 /* Step 2a, after LP-max: can the wall stand under its own weight on
  * these contact points, is there an admissible field at lambda = 0?  The
  * admissible load factors form an interval that ends at LP-max's, so
- * this is a question of feasibility alone, whose answer does not depend
- * on how it is found: LP-max's own problem with lambda fixed at 0, by
- * the dual simplex from LP-max's optimal basis (still dual feasible:
- * only lambda's bound changed).  LP-max's solution is gone after it. */
+ * this is a question of feasibility alone: the primal simplex's first
+ * phase, from the canonical basis.  (LP-max's problem with lambda fixed
+ * at 0, by the dual simplex from LP-max's optimum, gives the same answer
+ * but walks lambda down through twice as many instructions.) */
 static enum sample_status standing(struct sample_ws *ws,
 				   struct sample_result *r)
 {
-	lp_set_col_bounds(ws->lp[AMAX], ACOL_LAMBDA(ws), 0, 0);
-	enum lp_status s = solve(ws, ws->lp[AMAX], LP_DUAL, r);
+	enum lp_status s = solve(ws, ws->lp[STAND], LP_PRIMAL, r);
 	if (s == LP_OPTIMAL)
 		return SAMPLE_ACCEPTED;
 	return s == LP_INFEASIBLE ? SAMPLE_UNSTABLE : SAMPLE_NUMERICAL;
@@ -855,7 +856,7 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 		return r->status = st;
 	}
 	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
-	 * that f_L . v = 1; read before the standing check reuses AMAX */
+	 * that f_L . v = 1 */
 	double lam = lp_obj(ws->lp[AMAX]), fl = 0;
 	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
 	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
