@@ -1,4 +1,5 @@
 /* cli.c - helpers shared by the batch commands; see cli.h. */
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -132,4 +133,77 @@ int cli_ncpu(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);
 	return n > 0 ? (int)n : 1;
+}
+
+enum sw_status cli_read_tests(const char *path, double **out, long *nout,
+			      char *err)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
+			       strerror(errno));
+	char *line = NULL;
+	size_t cap = 0;
+	long lineno = 0, n = 0, xcap = 0;
+	double *x = NULL;
+	enum sw_status st = SW_OK;
+	ssize_t len;
+	while (st == SW_OK && (len = getline(&line, &cap, f)) >= 0) {
+		lineno++;
+		if ((size_t)len != strlen(line)) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in "
+				     "a text file", path, lineno,
+				     strlen(line) + 1);
+			break;
+		}
+		char *hash = strchr(line, '#');
+		if (hash)
+			*hash = 0;
+		char *p = line;
+		while (isspace((unsigned char)*p))
+			p++;
+		if (!*p)
+			continue;
+		int col = (int)(p - line) + 1;
+		char *end;
+		errno = 0;
+		double v = strtod(p, &end);
+		if (end == p || errno == ERANGE || !isfinite(v) ||
+		    (*end && !isspace((unsigned char)*end))) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
+				     "a number", path, lineno, col);
+			break;
+		}
+		if (v < 0) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
+				     "must be >= 0", path, lineno, col);
+			break;
+		}
+		char *q = end;
+		while (isspace((unsigned char)*q))
+			q++;
+		if (*q) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: one load per "
+				     "line (a '#' starts a comment)", path,
+				     lineno, (int)(q - line) + 1);
+			break;
+		}
+		if (n == xcap) {
+			xcap = xcap ? 2 * xcap : 64;
+			x = sw_xrealloc(x, sizeof(double) * (size_t)xcap);
+		}
+		x[n++] = v;
+	}
+	if (st == SW_OK && ferror(f))
+		st = sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
+			     strerror(errno));
+	free(line);
+	fclose(f);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*out = x;
+	*nout = n;
+	return SW_OK;
 }

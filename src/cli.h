@@ -48,6 +48,12 @@ const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
 int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
 			int *missing, long *n, int *n_set, unsigned long *seed,
 			int *seed_set, int *threads, double *depth);
+/* Experimental collapse loads (compare --tests, report --tests): one
+ * load >= 0 per line, '#' starts a comment, blank lines are skipped.
+ * *out (malloc'd) and *nout on SW_OK; else SW_EINPUT and a message
+ * "FILE:LINE:COLUMN: what is wrong" in err. */
+enum sw_status cli_read_tests(const char *path, double **out, long *nout,
+			      char *err);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

@@ -15,7 +15,6 @@
  * Then report_write() (report.c) draws everything.
  */
 #include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -125,60 +124,6 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 	return 0;
 }
 
-/* One load per line; '#' starts a comment; blank lines are skipped
- * (the format of `compare --tests`). */
-static enum sw_status read_tests(const char *path, double **out, long *nout,
-				 char *err)
-{
-	FILE *f = fopen(path, "r");
-	if (!f)
-		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
-			       strerror(errno));
-	char *line = NULL;
-	size_t cap = 0;
-	long lineno = 0, n = 0, xcap = 0;
-	double *x = NULL;
-	enum sw_status st = SW_OK;
-	while (st == SW_OK && getline(&line, &cap, f) >= 0) {
-		lineno++;
-		char *hash = strchr(line, '#');
-		if (hash)
-			*hash = 0;
-		char *p = line, *end;
-		while (isspace((unsigned char)*p))
-			p++;
-		if (!*p)
-			continue;
-		errno = 0;
-		double v = strtod(p, &end);
-		while (isspace((unsigned char)*end))
-			end++;
-		if (end == p || errno == ERANGE || !isfinite(v) || *end)
-			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: one number per "
-				     "line (a '#' starts a comment)", path, lineno,
-				     (int)(p - line) + 1);
-		else if (v < 0)
-			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
-				     "must be >= 0", path, lineno,
-				     (int)(p - line) + 1);
-		if (st != SW_OK)
-			break;
-		if (n == xcap) {
-			xcap = xcap ? 2 * xcap : 64;
-			x = sw_xrealloc(x, sizeof(double) * (size_t)xcap);
-		}
-		x[n++] = v;
-	}
-	free(line);
-	fclose(f);
-	if (st != SW_OK) {
-		free(x);
-		return st;
-	}
-	*out = x;
-	*nout = n;
-	return SW_OK;
-}
 
 /* Run the pool to the end: the tally and, in sample order, the accepted
  * loads (when lam is not NULL). */
@@ -316,7 +261,7 @@ int cmd_report(int argc, char **argv)
 		goto out;
 	}
 	if (a.tests) {
-		if (read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
+		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			status = 2;
 			goto out;

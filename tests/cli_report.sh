@@ -113,6 +113,9 @@ printf '12\nabc\n' >"$tmp/bad.txt"
 rc=$?
 check "a bad tests file: exit 2 with FILE:LINE:COL" \
 	bash -c "test $rc -eq 2 && grep -q 'bad.txt:2:1:' '$tmp/err3'"
+"$bin" compare $demo -n 5 --tests "$tmp/bad.txt" >/dev/null 2>"$tmp/err4"
+check "the same tests file, the same message from compare (one reader)" \
+	cmp -s "$tmp/err3" "$tmp/err4"
 "$bin" report walls/nope.yaml --out "$tmp/r3" >/dev/null 2>&1
 check "a missing wall: exit 2" test $? -eq 2
 "$bin" report --help | grep -q "usage: slipwall report"
