@@ -129,9 +129,6 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 	return 0;
 }
 
-/* ---- the experimental loads ------------------------------------------ */
-
-
 /* ---- the model's loads -------------------------------------------------- */
 
 /* Run the pool to the end and keep the accepted loads (no file). */
