@@ -73,6 +73,8 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 	if (r->method == SOLVE_GLOBAL) {
 		json_key(&j, "proven_optimal");
 		json_bool(&j, r->proven);
+		json_key(&j, "lower_bound");
+		json_double(&j, r->lower_bound);
 		json_key(&j, "bounds_derived");
 		json_bool(&j, r->bounds_derived);
 		json_key(&j, "gap");
@@ -130,12 +132,16 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 			printf("onset check: %s\n", sample_status_text(r->status));
 	}
 	if (r->method == SOLVE_GLOBAL) {
+		printf("checked:     mechanism and load by exact LPs; the "
+		       "program's bound %.6g\n", r->lower_bound);
 		if (r->proven)
 			printf("optimality:  proven (gap 0)\n");
 		else
-			printf("optimality:  NOT proven (%s%s; gap %.3g)\n",
-			       r->bounds_derived ? "" : "big-M bounds are a fallback",
-			       r->bounds_derived ? "time limit" : "", r->gap);
+			printf("optimality:  NOT proven (%s; gap %.3g)\n",
+			       !r->bounds_derived ? "big-M bounds are a fallback"
+			       : !r->mip_optimal ? "time limit"
+			       : "the program's optimum is below the exact load:"
+				 " GLPK's tolerances", r->gap);
 	}
 	printf("time:        %.3f s\n", r->seconds);
 	if (!r->has_mechanism)
@@ -175,8 +181,9 @@ static void usage(FILE *f)
 		"  gilbert   the stabilised sequential LP started from the standard\n"
 		"            solution; reports iterations and convergence\n"
 		"  global    the global minimum of the non-associative problem by a\n"
-		"            mixed-integer program (small walls); says whether\n"
-		"            optimality was proven, and the gap\n"
+		"            mixed-integer program (small walls); its collapse pattern\n"
+		"            is checked and its load found by exact LPs; says the\n"
+		"            program's bound and whether optimality was proven\n"
 		"Prints the load factor (and the load in N for a point load) and the\n"
 		"mechanism.  Exit status 1 when there is no finite collapse load.\n");
 }

@@ -649,6 +649,28 @@ static enum sample_status slp(struct sample_ws *ws,
 	return SAMPLE_NOT_CONVERGED;
 }
 
+/* Step 3's LP: of the mechanisms whose motions the bounds of KIN allow
+ * (its opening rows, its slip columns), the one with the least joint
+ * motion for unit work of the live load.  Fills ws->v, ws->dn, ws->dt. */
+static enum sample_status mechanism(struct sample_ws *ws,
+				    struct sample_result *r)
+{
+	struct lp *K = ws->lp[KIN];
+	enum lp_status s = solve(ws, K, LP_DUAL, r);
+	if (s == LP_INFEASIBLE)
+		return SAMPLE_NO_MECHANISM;
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	for (int i = 0; i < ws->R; i++)
+		ws->v[i] = lp_col(K, i);
+	for (int k = 0; k < ws->m; k++) {
+		ws->dn[2 * k] = lp_row(K, 3 * k);
+		ws->dn[2 * k + 1] = lp_row(K, 3 * k + 1);
+		ws->dt[k] = lp_col(K, KCOL_SP(ws, k)) - lp_col(K, KCOL_SM(ws, k));
+	}
+	return SAMPLE_ACCEPTED;
+}
+
 /* Step 3: a mechanism complementary to the stress field ws->x with
  * capacities mu c.  Fills ws->v, ws->dn, ws->dt. */
 static enum sample_status onset(struct sample_ws *ws,
@@ -684,19 +706,7 @@ static enum sample_status onset(struct sample_ws *ws,
 		lp_set_col_bounds(K, KCOL_SP(ws, k), 0, sp);
 		lp_set_col_bounds(K, KCOL_SM(ws, k), 0, sm);
 	}
-	enum lp_status s = solve(ws, K, LP_DUAL, r);
-	if (s == LP_INFEASIBLE)
-		return SAMPLE_NO_MECHANISM;
-	if (s != LP_OPTIMAL)
-		return SAMPLE_NUMERICAL;
-	for (int i = 0; i < ws->R; i++)
-		ws->v[i] = lp_col(K, i);
-	for (int k = 0; k < m; k++) {
-		ws->dn[2 * k] = lp_row(K, 3 * k);
-		ws->dn[2 * k + 1] = lp_row(K, 3 * k + 1);
-		ws->dt[k] = lp_col(K, KCOL_SP(ws, k)) - lp_col(K, KCOL_SM(ws, k));
-	}
-	return SAMPLE_ACCEPTED;
+	return mechanism(ws, r);
 }
 
 static double motion_scale(const struct sample_ws *ws)
@@ -792,10 +802,10 @@ static void export(struct sample_ws *ws, struct sample_result *r)
 	r->joint[ws->m] = 0;
 }
 
-void sample_run(struct sample_ws *ws, const double *xi,
-		const struct sample_opts *o, struct sample_result *r)
+/* A sample's result, reset, and its problems built at the points xi. */
+static void begin(struct sample_ws *ws, const double *xi,
+		  struct sample_result *r)
 {
-	double S = ws->st.S;
 	r->status = SAMPLE_NUMERICAL;
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
 	r->iterations = 0;
@@ -803,14 +813,14 @@ void sample_run(struct sample_ws *ws, const double *xi,
 	r->lps = 0;
 	r->vw_residual = NAN;
 	set_points(ws, xi);
+}
 
-	enum sample_status st = lp_max(ws, r);
-	if (st == SAMPLE_ACCEPTED)
-		st = standing(ws, r);
-	if (st == SAMPLE_ACCEPTED)
-		st = slp(ws, o, r);
-	if (st == SAMPLE_ACCEPTED)
-		st = onset(ws, o, r);
+/* After step 3 found a mechanism (st accepted): LP-min, the virtual work
+ * check and the export; loads to the user's units, the status into r. */
+static void finish(struct sample_ws *ws, enum sample_status st,
+		   struct sample_result *r)
+{
+	double S = ws->st.S;
 	if (st == SAMPLE_ACCEPTED)
 		st = lp_min(ws, r);
 	if (st == SAMPLE_ACCEPTED) {
@@ -824,6 +834,40 @@ void sample_run(struct sample_ws *ws, const double *xi,
 	r->lambda_max *= S;
 	r->lambda_min *= S;
 	r->status = st;
+}
+
+void sample_run(struct sample_ws *ws, const double *xi,
+		const struct sample_opts *o, struct sample_result *r)
+{
+	begin(ws, xi, r);
+	enum sample_status st = lp_max(ws, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = standing(ws, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = slp(ws, o, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = onset(ws, o, r);
+	finish(ws, st, r);
+}
+
+enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
+				  const unsigned char *open,
+				  const unsigned char *slip,
+				  struct sample_result *r)
+{
+	begin(ws, xi, r);
+	struct lp *K = ws->lp[KIN];
+	for (int k = 0; k < ws->m; k++) {
+		for (int e = 0; e < 2; e++)
+			lp_set_row_bounds(K, 3 * k + e, 0,
+					  open[2 * k + e] ? HUGE_VAL : 0);
+		lp_set_col_bounds(K, KCOL_SP(ws, k), 0,
+				  slip[k] & SAMPLE_SLIP_POS ? HUGE_VAL : 0);
+		lp_set_col_bounds(K, KCOL_SM(ws, k), 0,
+				  slip[k] & SAMPLE_SLIP_NEG ? HUGE_VAL : 0);
+	}
+	finish(ws, mechanism(ws, r), r);
+	return r->status;
 }
 
 const struct statics *sample_statics(const struct sample_ws *ws)

@@ -83,6 +83,59 @@ static void closed_forms(void)
 	}
 }
 
+/* A collapse pattern's load (sample_pattern, the global method's check):
+ * a block b x h on the ground pushed at height a on its left face, which
+ * overturns at W b/(2a) and slides at mu W.  The base runs heel (x = 0,
+ * q_a) to toe (x = b, q_b), t = +x, so the block sliding forward is a
+ * slip of the ground relative to it towards -t. */
+static void patterns(void)
+{
+	static const struct {
+		double a;
+		unsigned char open[2], slip;
+		int found;
+		double load;	/* in W; b = 0.4, mu = 0.6 */
+		const char *what;
+	} p[] = {
+		{0.6, {1, 0}, 0, 1, 0.4 / 1.2, "a = 0.6, heel may open: overturns, W b/(2a)"},
+		{0.6, {1, 1}, 0, 1, 0.4 / 1.2, "a = 0.6, either point may open: overturns about the toe"},
+		{0.6, {0, 0}, SAMPLE_SLIP_NEG, 0, 0, "a = 0.6, base may slip forward: no field keeps sliding at mu W, the block overturns first"},
+		{0.1, {0, 0}, SAMPLE_SLIP_NEG, 1, 0.6, "a = 0.1, base may slip forward: slides, mu W"},
+		{0.1, {1, 0}, SAMPLE_SLIP_NEG, 1, 0.6, "a = 0.1, heel may open or base slip: the least motion slides"},
+		{0.1, {1, 0}, 0, 0, 0, "a = 0.1, heel may open only: no field keeps overturning at 2 W, the block slides first"},
+		{0.1, {0, 0}, SAMPLE_SLIP_POS, 0, 0, "a = 0.1, base may slip backward only: no mechanism"},
+		{0.1, {0, 1}, 0, 0, 0, "a = 0.1, toe may open only: no mechanism (the load would do negative work)"},
+		{0.1, {0, 0}, 0, 0, 0, "a = 0.1, nothing may move: no mechanism"},
+	};
+	for (size_t i = 0; i < sizeof p / sizeof *p; i++) {
+		struct wall *w = wall_new();
+		tw_rect(w, "A", 0, 0, 0.4, 0.8);
+		w->has_ground = 1;
+		w->mu_bed = w->mu_head = 0.6;
+		tw_point_load(w, 0, p[i].a, 1, 0);
+		tw_finish(w);
+		double W = w->total_weight;
+		struct sample_ws *ws = sample_ws_new(w);
+		struct sample_result r;
+		sample_result_init(&r, w);
+		double *xi = classical(w);
+		unsigned char slip = p[i].slip;
+		enum sample_status st = sample_pattern(ws, xi, p[i].open, &slip, &r);
+		if (p[i].found) {
+			tap_ok(st == SAMPLE_ACCEPTED && r.vw_residual <= 1e-8,
+			       "pattern: %s (%s)", p[i].what, sample_status_name(st));
+			tap_near(r.lambda_min / W, p[i].load, 1e-9, p[i].what);
+		} else {
+			tap_ok(st != SAMPLE_ACCEPTED, "pattern: %s (%s)",
+			       p[i].what, sample_status_name(st));
+		}
+		free(xi);
+		sample_result_free(&r);
+		sample_ws_free(ws);
+		wall_free(w);
+	}
+}
+
 /* Published standard load factors (Ferris & Tin-Loi 2001; Gilbert et al.
  * 2006): wall 1 0.6429, wall 2 0.5800. */
 static void ferris_tinloi(void)
@@ -296,6 +349,7 @@ static void properties(void)
 int main(void)
 {
 	closed_forms();
+	patterns();
 	ferris_tinloi();
 	positions();
 	history_free();

@@ -1,9 +1,10 @@
 /*
  * test_solve.c - the single-solution methods: closed forms for a block
  * and a two-block stack (every method must agree where the collapse
- * involves one joint), the published Ferris & Tin-Loi values, and the
- * order global <= gilbert, global <= any sample at depth 0 on random
- * small walls.
+ * involves one joint), the published Ferris & Tin-Loi values, and on
+ * random small walls the global method's load (an onset of collapse
+ * checked by exact LPs) and bound (below every onset load found
+ * otherwise).
  */
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -14,20 +15,27 @@
 #include "tap.h"
 #include "walls.h"
 
-static double run(const struct wall *w, enum solve_method m,
-		  struct solve_result *r)
+static double run_limit(const struct wall *w, enum solve_method m,
+			double time_limit, struct solve_result *r)
 {
 	struct solve_opts o;
 	char err[SW_ERRLEN];
 	solve_opts_default(&o, m);
-	/* generous: "optimality proven" must not depend on the machine's
-	 * speed (a sanitizer build is several times slower); ~0.2 s each */
-	o.time_limit = 300;
+	o.time_limit = time_limit;
 	if (solve_run(w, &o, r, err) != SW_OK) {
 		tap_diag("solve %s: %s", solve_method_name(m), err);
 		return NAN;
 	}
 	return r->lambda;
+}
+
+/* Generous: "optimality proven" must not depend on the machine's speed
+ * (a sanitizer build is several times slower); the walls that use it
+ * take well under a second. */
+static double run(const struct wall *w, enum solve_method m,
+		  struct solve_result *r)
+{
+	return run_limit(w, m, 300, r);
 }
 
 /* Two blocks, bottom b1 x h1 and top b2 x h2 (flush left), under a point
@@ -122,16 +130,24 @@ static void published(void)
 	wall_free(w2);
 }
 
-/* At depth 0 the global minimum is below gilbert and below every
- * accepted sample's lambda_min (same contact points). */
-static void global_below(void)
+/* The global method on 100 random small walls at depth 0.  Whatever the
+ * time limit: its load is an onset of collapse checked by exact LPs (a
+ * mechanism, virtual work to 1e-8), and its bound is below every onset
+ * load found otherwise (gilbert's onset load, the depth-0 sample's
+ * lambda_min); when proven, the load itself is below them.  The walls of
+ * one course (3 blocks) are proven, with the generous limit.  A joint
+ * that could slip both ways at once once let the program "prove" lambda
+ * = 0 on 82 % of these walls; the load check turns such a solution into
+ * a failure, so those walls would count as unsolved. */
+static void global_walls(void)
 {
 	gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
 	gsl_rng_set(g, 7);
-	int n = 0, bad = 0, unproven = 0;
+	int found = 0, small = 0, small_proven = 0, bad = 0, bad_bound = 0;
+	int bad_check = 0;
 	struct sample_opts so;
 	sample_opts_default(&so);
-	for (int c = 0; c < 200; c++) {
+	for (int c = 0; c < 100; c++) {
 		double bw = 0.15 + 0.3 * gsl_rng_uniform(g);
 		double bh = bw * (0.25 + 0.75 * gsl_rng_uniform(g));
 		int courses = 1 + (int)gsl_rng_uniform_int(g, 3);
@@ -144,23 +160,37 @@ static void global_below(void)
 		w->depth = 0;
 		tw_finish(w);
 		struct solve_result rg, rb;
-		double glob = run(w, SOLVE_GLOBAL, &rg);
-		double gil = run(w, SOLVE_GILBERT, &rb);
-		unproven += !rg.proven;
+		int one_course = w->nfree <= 3;
+		double glob = run_limit(w, SOLVE_GLOBAL, one_course ? 300 : 0.5,
+					&rg);
+		run(w, SOLVE_GILBERT, &rb);
+		double gil = rb.status == SAMPLE_ACCEPTED ? rb.lambda_onset : NAN;
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r;
 		sample_result_init(&r, w);
 		double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
 		sample_positions(w, 3, (unsigned long)c, 0, xi);
 		sample_run(ws, xi, &so, &r);
+		double smp = r.status == SAMPLE_ACCEPTED ? r.lambda_min : NAN;
 		double tol = 1e-6 * fmax(1, fabs(gil));
-		if (isfinite(glob) && isfinite(gil)) {
-			n++;
-			if (glob > gil + tol)
-				bad++, tap_diag("case %d: global %.9g > gilbert %.9g", c, glob, gil);
-			if (r.status == SAMPLE_ACCEPTED && glob > r.lambda_min + tol)
-				bad++, tap_diag("case %d: global %.9g > sample %.9g", c, glob, r.lambda_min);
+		small += one_course;
+		if (isfinite(glob)) {
+			found++;
+			small_proven += one_course && rg.proven;
+			if (!(rg.has_mechanism && rg.mech.vw_residual <= 1e-8 &&
+			      glob > 0))
+				bad_check++, tap_diag("case %d: global %.9g not "
+						      "checked (virtual work %.3g)",
+						      c, glob, rg.mech.vw_residual);
+			if (rg.proven && (glob > gil + tol || glob > smp + tol))
+				bad++, tap_diag("case %d: proven global %.9g > "
+						"gilbert %.9g or sample %.9g", c,
+						glob, gil, smp);
 		}
+		if (rg.lower_bound > gil + tol || rg.lower_bound > smp + tol)
+			bad_bound++, tap_diag("case %d: bound %.9g > gilbert %.9g "
+					      "or sample %.9g", c, rg.lower_bound,
+					      gil, smp);
 		free(xi);
 		sample_result_free(&r);
 		sample_ws_free(ws);
@@ -169,9 +199,19 @@ static void global_below(void)
 		wall_free(w);
 	}
 	gsl_rng_free(g);
-	tap_ok(n >= 190, "global and gilbert solved on %d of 200 random walls", n);
-	tap_ok(unproven == 0, "global optimality proven on every wall (%d not)", unproven);
-	tap_ok(bad == 0, "global <= gilbert and <= the depth-0 sample (%d violations)", bad);
+	tap_diag("global: a load on %d of 100 walls; %d of %d one-course "
+		 "walls proven", found, small_proven, small);
+	/* how many of the larger walls find a load in 0.5 s depends on
+	 * the machine: only the one-course walls are counted on */
+	tap_ok(bad_check == 0 && found >= small, "every global load is a "
+	       "checked onset of collapse, positive (%d not), on %d of 100 "
+	       "walls (>= the %d one-course walls)", bad_check, found, small);
+	tap_ok(bad_bound == 0, "the global bound is below gilbert's onset "
+	       "load and the depth-0 sample's (%d violations)", bad_bound);
+	tap_ok(bad == 0, "a proven global load is below them too (%d "
+	       "violations)", bad);
+	tap_ok(small > 20 && small_proven == small, "one-course walls (3 "
+	       "blocks): optimality proven on %d of %d", small_proven, small);
 }
 
 /* A wall that cannot carry a finite load, and one that cannot stand. */
@@ -260,7 +300,7 @@ int main(void)
 	scale();
 	stacks();
 	published();
-	global_below();
+	global_walls();
 	failures();
 	lp_thread_done();
 	return tap_done();

@@ -94,6 +94,23 @@ void sample_positions(const struct wall *w, unsigned long seed,
 void sample_run(struct sample_ws *ws, const double *xi,
 		const struct sample_opts *o, struct sample_result *r);
 
+/* A collapse pattern's onset-of-collapse load, at positions xi (for the
+ * global method, whose mixed-integer program proposes the pattern):
+ * open[2k + e] != 0 where contact point e of interface k may open, slip[k]
+ * the directions (SAMPLE_SLIP_POS: towards +t, SAMPLE_SLIP_NEG) in which
+ * joint k may slip.  Step 3's LP with these permissions instead of a
+ * stress field's (the least joint motion for unit work of the live
+ * load), then step 5 and the virtual work check, by exact LPs: r as after
+ * sample_run (lambda_min, the mechanism, the forces).  Returns r->status:
+ * NO_MECHANISM when no mechanism uses only these motions, NUMERICAL when
+ * no admissible field keeps the one found (LP-min infeasible: a block
+ * pushed high overturns before it can slide). */
+enum { SAMPLE_SLIP_POS = 1, SAMPLE_SLIP_NEG = 2 };
+enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
+				  const unsigned char *open,
+				  const unsigned char *slip,
+				  struct sample_result *r);
+
 /* The associative (standard) limit analysis at positions xi: maximum
  * load factor and its mechanism (the LP dual).  Returns the status
  * (ACCEPTED when an optimum was found). */

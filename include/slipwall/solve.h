@@ -9,7 +9,8 @@
  *             check of the sampler: the same code as one sample.
  *   global    the global minimum of the non-associative problem, a
  *             mixed-integer program (complementarity by binaries, big-M
- *             bounds derived by LP), within a time limit.
+ *             bounds derived by LP), within a time limit; its collapse
+ *             pattern is then checked, and its load found, by exact LPs.
  *
  * The result's load factor is in the user's units (N for a point load of
  * 1 N).  Runs on the calling thread, in that thread's GLPK environment;
@@ -40,10 +41,14 @@ struct solve_result {
 	/* gilbert */
 	int iterations, converged;
 	double lambda_onset;		/* LP-min after the onset check */
-	/* global */
-	int proven;			/* optimality proven (and bounds) */
+	/* global: lambda is the onset load of the program's collapse
+	 * pattern, found by exact LPs (src/solve.c says why) */
+	double lower_bound;		/* the program's bound on the minimum */
+	int mip_optimal;		/* the program proved its own optimum */
+	int proven;			/* optimal, bounds derived, and lambda
+					 * agrees with lower_bound */
 	int bounds_derived;		/* big-M from LPs, not a fallback */
-	double gap;			/* relative MIP gap (0 when proven) */
+	double gap;			/* (lambda - lower_bound) / lambda */
 	double seconds;
 	/* the mechanism (when found) */
 	int has_mechanism;
