@@ -46,17 +46,27 @@
  * GRACE_SECONDS of the signal, gives up on the ranks that have not said
  * DONE by then (lost, see below) and prints its summary in time.
  *
- * Faults.  Nothing blocks: both sides poll (MPI_Iprobe, MPI_Test) and
- * sleep 1 ms at a time; the timeouts below are checked every 0.1 s.  A rank that has sent nothing, not even a BEAT,
- * for the timeout (60 s; SLIPWALL_MPI_TIMEOUT seconds) while it still
- * owes samples is lost: the stream ends there, `run` prints what was
- * done and a message naming the rank, and cluster_end calls MPI_Abort
- * (MPI_Finalize would wait for the lost rank).  The other ranks give up
- * on a silent rank 0 the same way.  A rank that dies is usually noticed
- * sooner by mpirun, which then ends the job (SIGTERM, SIGKILL a second
- * later); the samples file holds complete rows either way, since
- * runlog.c writes each one with a single write(2).  A loop that was
- * itself stopped for a while (SIGSTOP) forgives the silence it caused.
+ * Faults.  Nothing blocks once the samples flow: both sides poll
+ * (MPI_Iprobe, MPI_Test) and sleep 1 ms at a time, and the timeouts
+ * below are checked every 0.1 s.  Even a sample's receive is polled: a
+ * message longer than the transport's first fragment comes in pieces
+ * that its sender must push, and a sender that froze half way would
+ * hold an MPI_Recv for ever (receive_item).  A rank that has sent nothing, not
+ * even a BEAT, for the timeout (60 s; SLIPWALL_MPI_TIMEOUT seconds)
+ * while it still owes samples is lost: the stream ends there, `run`
+ * prints what was done and a message naming the rank, and cluster_end
+ * calls MPI_Abort (MPI_Finalize would wait for the lost rank).  The
+ * other ranks give up on a silent rank 0 the same way.  A rank that
+ * dies is usually noticed sooner by mpirun, which then ends the job
+ * (SIGTERM, SIGKILL a second later); the samples file holds complete
+ * rows either way, since runlog.c writes each one with a single
+ * write(2).  A loop that was itself stopped for a while (SIGSTOP)
+ * forgives the silence it caused.  Not covered by the timeout: the
+ * set-up (cluster_agree's collectives wait for every rank to have read
+ * its files, however long that takes) and MPI_Finalize; a rank that
+ * dies there is still ended by mpirun.  SLIPWALL_MPI_FAULT=stop:K
+ * freezes rank 1 half way through sending its K-th sample, for
+ * tests/cli_mpi.sh.
  */
 #define _GNU_SOURCE	/* sched_getaffinity, CPU_COUNT */
 #include <fcntl.h>
@@ -122,6 +132,7 @@ struct cluster {
 	double last_house;
 	char fault[SW_ERRLEN];	/* a rank lost: MPI_Abort at the end */
 	int lost;
+	long fault_stop;	/* SLIPWALL_MPI_FAULT=stop:K (tests) */
 	/* rank 0 */
 	struct peer *peer;	/* size entries, [0] unused */
 	long next;		/* the next index of the stream */
@@ -151,6 +162,20 @@ static void nap(void)
 static int under_mpirun(void)
 {
 	return getenv("OMPI_COMM_WORLD_SIZE") || getenv("PMIX_RANK");
+}
+
+/* SLIPWALL_MPI_FAULT=stop:K, for tests/cli_mpi.sh: rank 1 stops itself
+ * (SIGSTOP) just after it starts to send its K-th sample, leaving that
+ * message half sent - a node that freezes or a link that breaks in the
+ * middle of a message, which no signal sent from outside can aim at. */
+static long env_fault_stop(void)
+{
+	const char *s = getenv("SLIPWALL_MPI_FAULT");
+	char *end;
+	if (!s || strncmp(s, "stop:", 5))
+		return 0;
+	long k = strtol(s + 5, &end, 10);
+	return *end || k < 1 ? 0 : k;
 }
 
 static double env_timeout(void)
@@ -198,6 +223,7 @@ enum sw_status cluster_start(struct cluster **cp, char *err)
 	MPI_Comm_size(MPI_COMM_WORLD, &c->size);
 	c->local = local_ranks();
 	c->timeout = env_timeout();
+	c->fault_stop = c->rank == 1 ? env_fault_stop() : 0;
 	c->cut_rank = -1;
 	c->grace_until = INFINITY;
 	c->rq_item = c->rq_beat = c->rq_done = MPI_REQUEST_NULL;
@@ -324,28 +350,42 @@ static int worst(int rc, int *who)
 	return out[0];
 }
 
-int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg)
+int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
+		  int *root_rc)
 {
+	*root_rc = rc;
 	if (!c)
 		return rc;
+	MPI_Bcast(root_rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
 	int who, all = worst(rc, &who);
-	if (all > 0 && rc <= 0 && c->rank == 0)
-		fprintf(stderr, "slipwall run: rank %d could not set up the run "
-			"(its message is above)\n", who);
-	if (all != 0)
+	if (all > 0) {
+		if (rc <= 0 && c->rank == 0)
+			fprintf(stderr, "slipwall run: rank %d could not set up "
+				"the run (that rank says why)\n", who);
 		return all;
+	}
+	/* all <= 0: every rank ready (0) or with nothing to do (-1, as
+	 * after --help); a mixture means the ranks were given different
+	 * options (mpirun's MPMD syntax), and a rank with nothing to do has
+	 * no config to compare */
+	int least = -worst(-rc, &who);
+	if (all < 0)
+		return -1;
+	if (least < 0) {
+		if (c->rank == 0)
+			fprintf(stderr, "slipwall run: some ranks were given "
+				"--help and others a run: every rank must be "
+				"given the same options\n");
+		return 2;
+	}
 	unsigned long long mine = fingerprint(cfg), root = mine;
 	MPI_Bcast(&root, 1, MPI_UNSIGNED_LONG_LONG, 0, MPI_COMM_WORLD);
-	int differs = mine != root;
-	if (differs)
+	all = worst(mine != root ? 2 : 0, &who);
+	if (all && c->rank == 0)
 		fprintf(stderr, "slipwall run: rank %d set up another run than "
 			"rank 0 (the wall file, -n, --seed, --depth or "
-			"--positions differ): every rank must read the same "
-			"files\n", c->rank);
-	all = worst(differs ? 2 : 0, &who);
-	if (all && !differs && c->rank == 0)
-		fprintf(stderr, "slipwall run: rank %d set up another run than "
-			"rank 0\n", who);
+			"--positions differ): every rank must be given the "
+			"same options and read the same files\n", who);
 	return all;
 }
 
@@ -473,6 +513,64 @@ static void credit(struct cluster *c, int r)
 	}
 }
 
+static void housekeeping(struct cluster *c, double t);
+static void stop_all(struct cluster *c);
+
+/* After a signal, mpirun may kill us within a second: from the first
+ * look at a stop, the stream ends with what has come by GRACE_SECONDS;
+ * and the other ranks are told to stop. */
+static void notice_stop(struct cluster *c)
+{
+	if (!atomic_load(&c->stop) || c->stop_sent)
+		return;
+	if (c->stop_sig)
+		c->grace_until = now() + GRACE_SECONDS;
+	stop_all(c);
+}
+
+/* Receive rank r's sample (probed) into slot; 0, or -1 when r is lost.
+ * Not MPI_Recv: a message longer than the transport's first fragment
+ * (by default 32 KB on shared memory, 64 KB over TCP: a large wall's
+ * sample) comes in pieces that its sender must push, and a sender that
+ * freezes half way (a stopped process, a broken link) would block
+ * MPI_Recv for ever.  So the receive is polled, with beats to the
+ * others and the same timeout as silence; a pending receive left behind
+ * is ended by MPI_Abort. */
+static int receive_item(struct cluster *c, int r, void *slot, int count)
+{
+	struct peer *p = &c->peer[r];
+	MPI_Request rq;
+	if (MPI_Irecv(slot, count, MPI_BYTE, r, TAG_ITEM, MPI_COMM_WORLD,
+		      &rq) != MPI_SUCCESS) {
+		lose(c, "rank %d: its sample could not be received", r);
+		return -1;
+	}
+	for (;;) {
+		int flag = 0;
+		if (MPI_Test(&rq, &flag, MPI_STATUS_IGNORE) != MPI_SUCCESS) {
+			lose(c, "rank %d: its sample could not be received", r);
+			return -1;
+		}
+		if (flag)
+			return 0;
+		double t = now();
+		notice_stop(c);
+		if (stalled(c, t))	/* our own stall: forgive it */
+			for (int q = 1; q < c->size; q++)
+				c->peer[q].heard = t;
+		if (t - p->heard > c->timeout)
+			lose(c, "rank %d sent part of a sample and then nothing "
+			     "for %.0f s: it died or hangs", r, t - p->heard);
+		else if (t > c->grace_until)
+			lose(c, "rank %d did not finish sending a sample within "
+			     "%.1f s of the signal", r, GRACE_SECONDS);
+		housekeeping(c, t);	/* beats to the others, their silence */
+		if (c->lost)
+			return -1;
+		nap();
+	}
+}
+
 /* Receive one message from rank r (already probed). */
 static void receive(struct cluster *c, const MPI_Status *st, double t)
 {
@@ -484,8 +582,8 @@ static void receive(struct cluster *c, const MPI_Status *st, double t)
 	    !p->done && p->queued < c->window) {
 		unsigned char *slot = p->ring + c->item_size *
 			(size_t)((p->head + p->queued) % c->window);
-		MPI_Recv(slot, count, MPI_BYTE, r, TAG_ITEM, MPI_COMM_WORLD,
-			 MPI_STATUS_IGNORE);
+		if (receive_item(c, r, slot, count))
+			return;	/* r is lost */
 		p->queued++;
 		if (c->ended) {	/* the stream is over: drop it */
 			p->head = (p->head + p->queued) % c->window;
@@ -555,6 +653,8 @@ static void progress(struct cluster *c)
 		if (st.MPI_SOURCE <= 0 || st.MPI_SOURCE >= c->size)
 			break;
 		receive(c, &st, t);
+		if (c->lost)
+			return;
 	}
 	housekeeping(c, t);
 }
@@ -647,13 +747,7 @@ int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
 		return -1;
 	double until = wait_ms < 0 ? INFINITY : now() + 1e-3 * wait_ms;
 	for (;;) {
-		if (atomic_load(&c->stop) && !c->stop_sent) {
-			/* after a signal, mpirun may kill us within a second:
-			 * end with what has come by then */
-			if (c->stop_sig)
-				c->grace_until = now() + GRACE_SECONDS;
-			stop_all(c);
-		}
+		notice_stop(c);
 		progress(c);
 		int got = c->lost ? -1 : take(c, it, 0);
 		if (got == 0 && (int)(c->next % c->size) == 0)
@@ -771,6 +865,8 @@ enum sw_status cluster_serve(struct cluster *c, char *err)
 				pack(c, &it, c->buf);
 				MPI_Isend(c->buf, (int)c->item_size, MPI_BYTE, 0,
 					  TAG_ITEM, MPI_COMM_WORLD, &c->rq_item);
+				if (nsent + 1 == c->fault_stop)
+					raise(SIGSTOP);
 				if (wait_sent(c, &c->rq_item))
 					break;
 				nsent++;

@@ -49,10 +49,15 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 /* Every rank passes the exit status of its own set-up (0: ready, -1:
  * nothing to do, as after --help) and, when ready, its config; returns
  * the job's: the worst status of any rank (a rank that failed printed
- * why; rank 0 says which one), or 2 when a rank set up a different run
- * than rank 0 (another wall file, -n, --seed, --depth or --positions).
- * Without a job, returns rc. */
-int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg);
+ * why, or should: see *root_rc; rank 0 says which one), -1 when every
+ * rank has nothing to do, or 2 when a rank set up a different run than
+ * rank 0 (another wall file, -n, --seed, --depth or --positions; or
+ * --help on some ranks only).  *root_rc gets rank 0's own status: a rank
+ * > 0 that kept its set-up messages to itself (they are the same on
+ * every rank) prints them when its status is > 0 and rank 0's is not.
+ * Without a job, returns rc (and *root_rc = rc).  Collective. */
+int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
+		  int *root_rc);
 
 /* Rank 0: the next sample of the whole job in index order, as mc_pop
  * (1 a sample, 0 nothing within wait_ms, -1 the end).  After -1, every

@@ -14,23 +14,46 @@
 
 #include "cluster.h"
 
-/* Started by a launcher among several processes? */
-static int one_of_many(void)
+/* Started by a launcher among several processes?  Open MPI's mpirun
+ * says OMPI_COMM_WORLD_SIZE, MPICH's mpiexec (and srun --mpi=pmi2)
+ * PMI_SIZE: every process knows.  A PMIx launcher alone says only
+ * PMIX_RANK: rank 0 cannot tell, the others refuse and the launcher
+ * ends the job.  *told: every process knows, so rank 0 says why. */
+static int one_of_many(int *told)
 {
 	const char *size = getenv("OMPI_COMM_WORLD_SIZE");
+	const char *pmi = getenv("PMI_SIZE");
 	const char *rank = getenv("PMIX_RANK");
-	return (size && atol(size) > 1) || (rank && strcmp(rank, "0"));
+	*told = (size && atol(size) > 1) || (pmi && atol(pmi) > 1);
+	return *told || (rank && strcmp(rank, "0"));
+}
+
+/* The launcher's rank of this process, or NULL. */
+static const char *launcher_rank(void)
+{
+	const char *r = getenv("OMPI_COMM_WORLD_RANK");
+	if (!r)
+		r = getenv("PMI_RANK");
+	if (!r)
+		r = getenv("PMIX_RANK");
+	return r;
 }
 
 enum sw_status cluster_start(struct cluster **c, char *err)
 {
 	*c = NULL;
-	if (one_of_many())
-		return sw_fail(err, SW_EUSAGE, "started by mpirun, but this "
-			       "slipwall was built without MPI (meson setup "
-			       "-Dmpi=enabled, docs/cluster.md): every process "
-			       "would compute the whole run");
-	return SW_OK;
+	int told;
+	if (!one_of_many(&told))
+		return SW_OK;
+	/* every process refuses; rank 0 says why, when it knows (err
+	 * empty: quiet) */
+	const char *rank = launcher_rank();
+	if (told && rank && strcmp(rank, "0"))
+		return sw_fail(err, SW_EUSAGE, "%s", "");
+	return sw_fail(err, SW_EUSAGE, "started by mpirun, but this "
+		       "slipwall was built without MPI (meson setup "
+		       "-Dmpi=enabled, docs/cluster.md): every process "
+		       "would compute the whole run");
 }
 
 int cluster_rank(const struct cluster *c)
@@ -59,10 +82,12 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 	return sw_fail(err, SW_EUSAGE, "built without MPI");
 }
 
-int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg)
+int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
+		  int *root_rc)
 {
 	(void)c;
 	(void)cfg;
+	*root_rc = rc;
 	return rc;
 }
 

@@ -33,7 +33,6 @@
  * reads the merged stream instead of its own pool - the `struct source`
  * below - and does all of the above; the other ranks only send.
  */
-#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -555,25 +554,51 @@ static void setup_free(struct run_setup *s)
 	memset(s, 0, sizeof *s);
 }
 
-/* Send stderr to /dev/null; the saved descriptor (or -1) for
- * unmute_stderr. */
-static int mute_stderr(void)
+/* On ranks > 0 of a job, the set-up's messages (a usage error, an
+ * error in the wall file) go to a temporary file instead of stderr:
+ * every rank reads the same options and files, so rank 0's messages
+ * say it once.  A rank that fails where rank 0 did not (its own copy of
+ * a file) prints its messages after all (held_release). */
+struct held {
+	int saved;		/* stderr, or -1: nothing held */
+	FILE *tmp;
+};
+
+static void held_start(struct held *h, const struct cluster *cl)
 {
-	int saved = dup(STDERR_FILENO);
-	int fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
-	if (saved >= 0 && fd >= 0)
-		dup2(fd, STDERR_FILENO);
-	if (fd >= 0)
-		close(fd);
-	return saved;
+	h->saved = -1;
+	h->tmp = NULL;
+	if (cluster_rank(cl) == 0 || !(h->tmp = tmpfile()))
+		return;
+	fflush(stderr);
+	h->saved = dup(STDERR_FILENO);
+	if (h->saved < 0 || dup2(fileno(h->tmp), STDERR_FILENO) < 0) {
+		if (h->saved >= 0)
+			close(h->saved);
+		h->saved = -1;
+	}
 }
 
-static void unmute_stderr(int saved)
+/* Give stderr back; print what was held when show is set. */
+static void held_release(struct held *h, int show)
 {
-	if (saved < 0)
-		return;
-	dup2(saved, STDERR_FILENO);
-	close(saved);
+	if (h->saved >= 0) {
+		fflush(stderr);
+		dup2(h->saved, STDERR_FILENO);
+		close(h->saved);
+		if (show) {
+			char buf[4096];
+			size_t n;
+			rewind(h->tmp);
+			while ((n = fread(buf, 1, sizeof buf, h->tmp)) > 0)
+				fwrite(buf, 1, n, stderr);
+			fflush(stderr);
+		}
+	}
+	if (h->tmp)
+		fclose(h->tmp);
+	h->saved = -1;
+	h->tmp = NULL;
 }
 
 /* Parse the options, load the wall and fill the config (every rank of a
@@ -585,13 +610,7 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 {
 	struct run_args *a = &s->a;
 	memset(s, 0, sizeof *s);
-	/* the options are the same on every rank, and so would be their
-	 * messages: rank 0's are enough */
-	int saved = -1;
-	if (cluster_rank(cl) > 0)
-		saved = mute_stderr();
 	int rc = parse_args(argc, argv, a);
-	unmute_stderr(saved);
 	if (rc)
 		return rc;
 	if ((rc = cli_load_wall(a->wall, &s->w)))
@@ -765,6 +784,8 @@ static int run_job(struct cluster *cl, int argc, char **argv)
 	struct run_setup s;
 	char err[SW_ERRLEN];
 	struct mc *pool = NULL;
+	struct held held;
+	held_start(&held, cl);
 	int rc = setup(argc, argv, cl, &s);
 	double t0 = now();
 	if (rc == 0 && cl && cluster_open(cl, &s.cfg, err) != SW_OK) {
@@ -774,7 +795,10 @@ static int run_job(struct cluster *cl, int argc, char **argv)
 		fprintf(stderr, "slipwall run: %s\n", err);
 		rc = 1;
 	}
-	rc = cluster_agree(cl, rc, rc == 0 ? &s.cfg : NULL);
+	int root_rc;
+	int mine = rc;
+	rc = cluster_agree(cl, rc, rc == 0 ? &s.cfg : NULL, &root_rc);
+	held_release(&held, mine > 0 && root_rc <= 0);
 	if (rc == 0) {
 		struct source src = {pool, pool_pop, pool_stop, pool_status};
 		if (cl)
@@ -794,7 +818,8 @@ int cmd_run(int argc, char **argv)
 	char err[SW_ERRLEN];
 	enum sw_status st = cluster_start(&cl, err);
 	if (st != SW_OK) {
-		fprintf(stderr, "slipwall run: %s\n", err);
+		if (err[0])	/* (empty: another process says it) */
+			fprintf(stderr, "slipwall run: %s\n", err);
 		return sw_status_exit(st);
 	}
 	return cluster_end(cl, run_job(cl, argc, argv));
