@@ -90,7 +90,8 @@ void solve_result_free(struct solve_result *r)
 }
 
 /* A message for a status that leaves no load factor. */
-static enum sw_status failure(enum sample_status s, char *err)
+static enum sw_status failure(enum sample_status s, double lam_max,
+			      char *err)
 {
 	switch (s) {
 	case SAMPLE_UNBOUNDED:
@@ -100,9 +101,14 @@ static enum sw_status failure(enum sample_status s, char *err)
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall cannot stand under its own weight: no contact forces hold the blocks in equilibrium, at any load");
 	case SAMPLE_UNSTABLE:
-	case SAMPLE_NONPOSITIVE:
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall cannot stand under its own weight");
+	case SAMPLE_NONPOSITIVE:
+		return sw_fail(err, SW_EANALYSIS,
+			       "the wall carries no positive live load: its "
+			       "largest load factor is %.6g, so it collapses "
+			       "under any load in this direction (zero friction "
+			       "does this)", lam_max);
 	default:
 		return sw_fail(err, SW_EANALYSIS, "the solver failed (%s)",
 			       sample_status_text(s));
@@ -448,7 +454,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	enum sample_status s = sample_standard(ws, xi, &r->mech);
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
-		ret = failure(s, err);
+		ret = failure(s, r->mech.lambda_lpmax, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;
@@ -468,7 +474,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		if (r->status != SAMPLE_ACCEPTED &&
 		    r->status != SAMPLE_NO_MECHANISM &&
 		    r->status != SAMPLE_NOT_CONVERGED)
-			ret = failure(r->status, err);
+			ret = failure(r->status, r->mech.lambda_lpmax, err);
 		break;
 	case SOLVE_GLOBAL:
 		ret = solve_global(w, o, ws, xi, lam_std, r, err);

@@ -214,7 +214,8 @@ static void global_walls(void)
 	       "blocks): optimality proven on %d of %d", small_proven, small);
 }
 
-/* A wall that cannot carry a finite load, and one that cannot stand. */
+/* A wall that cannot carry a finite load, one that cannot stand, and
+ * one that stands but carries no load. */
 static void failures(void)
 {
 	char err[SW_ERRLEN];
@@ -246,6 +247,20 @@ static void failures(void)
 	st = solve_run(w, &o, &r, err);
 	tap_ok(st == SW_EANALYSIS && strstr(err, "cannot stand"),
 	       "a wall that cannot stand under its own weight: %s", err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* a block on frictionless ground stands, and slides under any push:
+	 * its collapse load is 0 (it was told it could not stand) */
+	w = wall_new();
+	tw_rect(w, "A", 0, 0, 0.4, 0.4);
+	w->has_ground = 1;
+	w->mu_bed = w->mu_head = 0;
+	tw_point_load(w, 0, 0.2, 1, 0);
+	tw_finish(w);
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && strstr(err, "largest load factor is 0,") &&
+	       !strstr(err, "cannot stand"),
+	       "zero friction: collapses under any push: %s", err);
 	solve_result_free(&r);
 	wall_free(w);
 }
