@@ -30,7 +30,11 @@ reports() {
 		[ -e "$r" ] || continue
 		n=$((n + 1))
 		echo "--- $r"
-		head -n 40 "$r"
+		if [ $n -le 5 ]; then	# the first ones whole, then the gist
+			head -n 40 "$r"
+		else
+			grep -m 1 -E '^SUMMARY|runtime error' "$r"
+		fi
 	done
 	failed=$(( failed + n ))
 	echo "$2: $n sanitizer report(s) from the programs the tests ran"
@@ -85,7 +89,7 @@ for job in $jobs; do
 		log=$(pwd)/$dir/san-report
 		set +e
 		TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp:log_path=$log \
-		meson test -C "$dir" --print-errorlogs --num-processes 1 \
+		meson test -C "$dir" --print-errorlogs --num-processes 2 \
 			--timeout-multiplier 4 ${wrap:+"$wrap"} mc run faults_cli tui \
 			>"$dir/test-output.txt" 2>&1
 		rc=$?

@@ -36,6 +36,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <unistd.h>
 
 #include <gsl/gsl_cdf.h>
 
@@ -163,13 +164,14 @@ static void xml_escape(FILE *o, const char *s)
 	}
 }
 
-/* Splice the recorded labels into the SVG file before its </svg>. */
-static enum sw_status svg_add_text_layer(const char *path, const struct fig *f,
-					 char *err)
+/* Splice the recorded labels into the SVG file PATH before its </svg>;
+ * errors name NAME (the figure's final name). */
+static enum sw_status svg_add_text_layer(const char *path, const char *name,
+					 const struct fig *f, char *err)
 {
 	FILE *in = fopen(path, "rb");
 	if (!in)
-		return sw_fail(err, SW_EIO, "%s: cannot read back: %s", path,
+		return sw_fail(err, SW_EIO, "%s: cannot read back: %s", name,
 			       strerror(errno));
 	size_t cap = 1 << 16, n = 0, got;
 	char *buf = sw_xmalloc(cap);
@@ -187,12 +189,12 @@ static enum sw_status svg_add_text_layer(const char *path, const struct fig *f,
 		}
 	if (!end) {
 		free(buf);
-		return sw_fail(err, SW_EIO, "%s: cairo wrote no </svg>", path);
+		return sw_fail(err, SW_EIO, "%s: cairo wrote no </svg>", name);
 	}
 	FILE *o = fopen(path, "wb");
 	if (!o) {
 		free(buf);
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
+		return sw_fail(err, SW_EIO, "%s: cannot write: %s", name,
 			       strerror(errno));
 	}
 	fwrite(buf, 1, (size_t)(end - buf), o);
@@ -212,9 +214,10 @@ static enum sw_status svg_add_text_layer(const char *path, const struct fig *f,
 	fputs("</g>\n", o);
 	fwrite(end, 1, n - (size_t)(end - buf), o);
 	free(buf);
-	if (fclose(o))
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
-			       strerror(errno));
+	int bad = ferror(o);
+	if (fclose(o) || bad)
+		return sw_fail(err, SW_EIO, "%s: cannot write: %s", name,
+			       strerror(errno ? errno : EIO));
 	return SW_OK;
 }
 
@@ -1525,12 +1528,16 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 			     const char *dir, int format,
 			     const struct report_opts *o, char *err)
 {
-	char path[4096];
+	/* The figure is drawn into PATH.tmp and renamed over PATH when it
+	 * is whole: a full disk or a kill leaves the old figure or none,
+	 * never half of one. */
+	char final[4096], path[4096 + 4];
 	const char *ext = format == REPORT_SVG ? "svg" :
 			  format == REPORT_PDF ? "pdf" : "png";
-	if ((size_t)snprintf(path, sizeof path, "%s/%s.%s", dir, d->name, ext) >=
-	    sizeof path)
+	if ((size_t)snprintf(final, sizeof final, "%s/%s.%s", dir, d->name,
+			     ext) >= sizeof final)
 		return sw_fail(err, SW_EIO, "%s: path too long", dir);
+	snprintf(path, sizeof path, "%s.tmp", final);
 	struct fig f = {0};
 	f.w = FIG_W;
 	f.h = d->height(c);
@@ -1555,9 +1562,10 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 					       (int)ceil(f.h * o->png_scale));
 	}
 	if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", path,
+		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", final,
 			cairo_status_to_string(cairo_surface_status(s)));
 		cairo_surface_destroy(s);
+		unlink(path);
 		return st;
 	}
 	f.cr = cairo_create(s);
@@ -1575,10 +1583,15 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 	cairo_surface_destroy(s);
 	enum sw_status st = SW_OK;
 	if (cs != CAIRO_STATUS_SUCCESS)
-		st = sw_fail(err, SW_EIO, "%s: %s", path,
+		st = sw_fail(err, SW_EIO, "%s: %s", final,
 			     cairo_status_to_string(cs));
 	else if (format == REPORT_SVG)
-		st = svg_add_text_layer(path, &f, err);
+		st = svg_add_text_layer(path, final, &f, err);
+	if (st == SW_OK && rename(path, final) != 0)
+		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
+			     strerror(errno));
+	if (st != SW_OK)
+		unlink(path);
 	fig_clear_labels(&f);
 	return st;
 }
@@ -1612,11 +1625,13 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	const struct report_input *in = c->in;
 	const struct report_run *r = &in->run;
 	const struct wall *w = c->w;
-	char path[4096];
-	snprintf(path, sizeof path, "%s/report.md", dir);
+	/* written as report.md.tmp, renamed when whole (as the figures) */
+	char final[4096], path[4096 + 4];
+	snprintf(final, sizeof final, "%s/report.md", dir);
+	snprintf(path, sizeof path, "%s.tmp", final);
 	FILE *f = fopen(path, "w");
 	if (!f)
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
+		return sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
 			       strerror(errno));
 	const char *u = c->unit;
 	fprintf(f, "# slipwall report: %s\n\n", w->name ? w->name :
@@ -1754,9 +1769,15 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		if (any)
 			fprintf(f, "\n\n");
 	}
-	if (fclose(f))
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
-			       strerror(errno));
+	int e = ferror(f) ? (errno ? errno : EIO) : 0;
+	errno = 0;
+	if ((fclose(f) && !e) || (!e && rename(path, final) != 0))
+		e = errno ? errno : EIO;
+	if (e) {
+		unlink(path);
+		return sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
+			       strerror(e));
+	}
 	return SW_OK;
 }
 

@@ -11,9 +11,18 @@
 # clear error, exit 1, and no half row; stdout on a full disk is an error;
 # SIGHUP stops a run like SIGINT and SIGTERM (tests/cli_run.sh has those
 # two and SIGKILL); a second SIGINT kills at once and leaves complete
-# rows; SIGKILL leaves no JSON or a valid one.  TAP output.  Needs python3.
+# rows; SIGKILL leaves no JSON or a valid one.  The workbench (in a
+# private tmux server; skipped without tmux): SIGINT and SIGTERM end it
+# with its samples file closed on complete rows and the terminal
+# restored, SIGKILL leaves complete rows, a full disk under its samples
+# file is said on the status line and leaves complete rows, no place for
+# the samples file and a save into a missing directory are said.  The
+# report: an --out under a file and a full disk are clear errors, and the
+# full disk leaves whole figures only.
+# TAP output.  Needs python3.
 
 bin=${1:?usage: cli_faults.sh SLIPWALL}
+bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
 n=0
@@ -51,7 +60,8 @@ sanitizer_clean() {
 }
 
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+sock=slipwall-faults-$$
+trap 'tmux -L "$sock" kill-server >/dev/null 2>&1; rm -rf "$tmp"' EXIT
 demo=walls/demo.yaml
 ft=walls/ferris-tinloi-1.yaml
 
@@ -173,6 +183,55 @@ else
 		"last bytes: $(tail -c 40 "$tmp/lim.csv" | tr '\n' '|')"
 fi
 
+# ---- the report's figures: an unwritable place, a full disk -------------------
+"$bin" run $demo -n 20 --threads 1 --samples "$tmp/rep.csv" >/dev/null 2>&1
+printf '0.5\n0.6\n' >"$tmp/rep-tests.txt"
+: >"$tmp/afile"
+"$bin" report $demo --samples "$tmp/rep.csv" --tests "$tmp/rep-tests.txt" \
+	--out "$tmp/afile/r" >/dev/null 2>"$tmp/e"
+rc=$?
+if [ $rc -eq 1 ] && grep -qF "$tmp/afile/r: cannot create: Not a directory" "$tmp/e"; then
+	ok "report --out under a file: exit 1, 'cannot create: Not a directory'"
+else
+	not_ok "report --out under a file: a clear error" "exit $rc" "$(head -c 300 "$tmp/e")"
+fi
+(trap '' XFSZ; ulimit -f 40; exec "$bin" report $demo --samples "$tmp/rep.csv" \
+	--tests "$tmp/rep-tests.txt" --out "$tmp/rfull" >/dev/null 2>"$tmp/e")
+rc=$?
+if [ $rc -eq 1 ] && grep -q 'rfull/.*: error while writing' "$tmp/e"; then
+	ok "report on a full disk: exit 1, '$(head -n 1 "$tmp/e" | sed "s|$tmp/||")'"
+else
+	not_ok "report on a full disk: a clear error" "exit $rc" "$(head -c 300 "$tmp/e")"
+fi
+# src/report.c draws each figure (and report.md) into NAME.tmp and renames
+# it when whole: the disk filling up leaves whole figures and no .tmp.
+half=
+for f in "$tmp/rfull"/*; do
+	[ -e "$f" ] || continue
+	case $f in
+	*.png) python3 -c 'import sys; d = open(sys.argv[1], "rb").read(); sys.exit(not d.endswith(b"IEND\xaeB`\x82"))' "$f" ;;
+	*.svg) grep -q '</svg>' "$f" ;;
+	*.pdf) tail -c 8 "$f" | grep -q '%%EOF' ;;
+	*.md) grep -q '^Written by slipwall' "$f" ;;
+	*) false ;;
+	esac || half="$half ${f##*/}"
+done
+if [ -z "$half" ]; then
+	ok "report on a full disk leaves whole figures or none, no temporary file ($(ls "$tmp/rfull" | wc -l) whole)"
+else
+	not_ok "report on a full disk leaves no truncated figure:$half"
+fi
+# and with room, the same report is whole: every figure and report.md
+"$bin" report $demo --samples "$tmp/rep.csv" --tests "$tmp/rep-tests.txt" \
+	--out "$tmp/rok" >/dev/null 2>"$tmp/e"
+rc=$?
+if [ $rc -eq 0 ] && [ -s "$tmp/rok/report.md" ] && ls "$tmp/rok"/*.svg >/dev/null 2>&1 &&
+   [ -z "$(ls "$tmp/rok" | grep '\.tmp$')" ]; then
+	ok "report with room: exit 0, report.md and $(ls "$tmp/rok" | grep -c '\.svg$') SVG figures, no temporary file"
+else
+	not_ok "report with room writes every figure" "exit $rc" "$(ls "$tmp/rok" | tr '\n' ' ')" "$(head -c 300 "$tmp/e")"
+fi
+
 # ---- stdout on a full disk ---------------------------------------------------
 for cmd in "check $demo --json" "solve $demo --method standard --json" "run $demo -n 3 --json"; do
 	"$bin" $cmd >/dev/full 2>"$tmp/e"
@@ -235,6 +294,170 @@ for delay in 0.2 1.0; do
 		not_ok "SIGKILL after $delay s" "json: $(head -c 100 "$tmp/K.json")"
 	fi
 done
+
+# ---- the workbench ---------------------------------------------------------------
+# Each case in its own window of a private tmux server (200 columns: the
+# messages checked hold temporary paths), with its own SLIPWALL_RUNS; the window's shell leaves its pid, runs the program (its
+# one child) and writes its exit status.
+T() {
+	tmux -L "$sock" "$@"
+}
+# rows_ok FILE: header, then samples 0..n-1, each with the header's columns
+rows_ok() {
+	awk -F, 'NR == 1 { c = NF; next } NF != c || $1 != NR - 2 { bad = 1 }
+		 END { exit bad || NR < 1 }' "$1" &&
+		[ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
+}
+alive() {	# a zombie that tmux has not reaped yet has exited
+	local st
+	st=$(ps -o stat= -p "$1" 2>/dev/null) || return 1
+	case $st in Z*) return 1 ;; esac
+	return 0
+}
+# wb NAME PRE -- ARGS: start the workbench; PRE runs in the shell first
+wb() {
+	local name=$1 pre=$2
+	shift 3
+	mkdir -p "$tmp/wb-$name"
+	T new-window -d -t t -n "$name" \
+		"echo \$\$ > '$tmp/wb-$name/sh'; $pre env SLIPWALL_RUNS='$tmp/wb-$name/runs' '$bin' $*; echo \$? > '$tmp/wb-$name/rc'"
+}
+wb_pid() {	# NAME: the program's pid (the one child of the window's shell)
+	ps -o pid= --ppid "$(cat "$tmp/wb-$1/sh")" | tr -d ' '
+}
+# wb_rows NAME MIN SECONDS: until its samples file has MIN rows
+wb_rows() {
+	local end=$((SECONDS + $3)) f
+	while [ "$SECONDS" -le "$end" ]; do
+		for f in "$tmp/wb-$1"/runs/*.csv; do
+			[ -f "$f" ] && [ "$(($(wc -l <"$f") - 1))" -ge "$2" ] && return 0
+		done
+		sleep 0.2
+	done
+	return 1
+}
+wb_wait_screen() {	# NAME REGEX SECONDS
+	local end=$((SECONDS + $3))
+	while [ "$SECONDS" -le "$end" ]; do
+		T capture-pane -p -t "t:$1" | grep -qE -- "$2" && return 0
+		sleep 0.2
+	done
+	return 1
+}
+# wb_status NAME: the program's exit status, written by the window's shell
+wb_status() {
+	local end=$((SECONDS + 5))
+	while [ "$SECONDS" -le "$end" ]; do
+		[ -s "$tmp/wb-$1/rc" ] && { cat "$tmp/wb-$1/rc"; return 0; }
+		sleep 0.1
+	done
+	return 1
+}
+# wb_restored NAME: the workbench's screen is gone (the samples line it
+# prints then is in the pane's history: capture-pane -S -)
+wb_restored() {
+	local end=$((SECONDS + 5))
+	while [ "$SECONDS" -le "$end" ]; do
+		T capture-pane -p -t "t:$1" | grep -q 'q quit' || return 0
+		sleep 0.2
+	done
+	return 1
+}
+wb_wait_exit() {	# PID SECONDS
+	local end=$((SECONDS + $2))
+	while alive "$1" && [ "$SECONDS" -le "$end" ]; do
+		sleep 0.1
+	done
+	! alive "$1"
+}
+if ! command -v tmux >/dev/null 2>&1 ||
+   ! T -f /dev/null new-session -d -s t -n idle -x 200 -y 30 "sleep 600"; then
+	ok "the workbench # SKIP no tmux"
+else
+	T set-option -g remain-on-exit on >/dev/null
+	for sig in INT TERM KILL; do
+		wb $sig "" -- "$ft"
+		if ! wb_rows $sig 5 60; then
+			not_ok "SIG$sig during the workbench: it samples first" \
+				"$(T capture-pane -p -t t:$sig)"
+			continue
+		fi
+		pid=$(wb_pid $sig)
+		kill -$sig "$pid"
+		f=$(ls "$tmp/wb-$sig"/runs/*.csv)
+		if wb_wait_exit "$pid" 10; then
+			rows=$(($(wc -l <"$f") - 1))
+			if [ $sig = KILL ]; then
+				if rows_ok "$f"; then
+					ok "SIGKILL during the workbench: its samples file holds $rows complete rows, 0..$((rows - 1))"
+				else
+					not_ok "SIGKILL during the workbench: complete rows" \
+						"last bytes: $(tail -c 60 "$f" | tr '\n' '|')"
+				fi
+			elif rc=$(wb_status $sig) && [ "$rc" = 0 ] && rows_ok "$f" &&
+			     wb_restored $sig &&
+			     T capture-pane -p -S - -t t:$sig | grep -qx "samples: $f"; then
+				ok "SIG$sig during the workbench: exit 0, the terminal restored, the samples file named and closed on $rows complete rows"
+			else
+				not_ok "SIG$sig during the workbench: exit 0, complete rows, terminal restored" \
+					"exit '$rc'" \
+					"$(T capture-pane -p -S - -t t:$sig | grep -v '^$' | tail -n 3)" \
+					"last bytes: $(tail -c 60 "$f" | tr '\n' '|')"
+			fi
+		else
+			not_ok "SIG$sig ends the workbench within 10 s"
+			kill -KILL "$pid" 2>/dev/null
+		fi
+	done
+
+	# the disk fills under the samples file (a file size limit, SIGXFSZ
+	# ignored: a short write, then EFBIG, as on a full disk)
+	wb full "trap '' XFSZ; ulimit -f 8;" -- "$ft"
+	if wb_wait_screen full "samples file: .*cannot write" 60; then
+		f=$(ls "$tmp/wb-full"/runs/*.csv)
+		rows=$(($(wc -l <"$f") - 1))
+		if rows_ok "$f" && [ "$rows" -gt 0 ]; then
+			ok "a full disk under the workbench's samples file: said on the status line; the file cut back to $rows complete rows"
+		else
+			not_ok "a full disk under the workbench's samples file: no half row" \
+				"last bytes: $(tail -c 60 "$f" | tr '\n' '|')"
+		fi
+	else
+		not_ok "a full disk under the workbench's samples file is said" \
+			"$(T capture-pane -p -t t:full | grep -v '^$' | tail -n 5)"
+	fi
+	T send-keys -t t:full q
+
+	# no place for its samples file: said; it goes on without one
+	mkdir -p "$tmp/wb-norun"
+	T new-window -d -t t -n norun \
+		"echo \$\$ > '$tmp/wb-norun/sh'; env SLIPWALL_RUNS='$tmp/afile/runs' '$bin' $demo; echo \$? > '$tmp/wb-norun/rc'"
+	if wb_wait_screen norun "$tmp/afile/runs: cannot make the directory: Not a directory" 20 &&
+	   wb_wait_screen norun 'samples +[1-9]' 60; then
+		ok "the workbench with SLIPWALL_RUNS under a file: 'cannot make the directory' on the status line; it samples on"
+	else
+		not_ok "the workbench with no place for its samples file says so" \
+			"$(T capture-pane -p -t t:norun | grep -v '^$' | tail -n 3)"
+	fi
+	T send-keys -t t:norun q
+
+	# a save into a missing directory: said; nothing written; it goes on
+	wb save "" -- "$demo"
+	wb_rows save 1 60
+	T send-keys -t t:save s
+	wb_wait_screen save 'save wall as:' 5
+	T send-keys -t t:save C-u
+	T send-keys -t t:save -l "$tmp/no/such/dir/w.yaml"
+	T send-keys -t t:save Enter
+	if wb_wait_screen save "save: .*no/such/dir/w\.yaml.*No such file or directory" 5 &&
+	   [ ! -e "$tmp/no" ] && alive "$(wb_pid save)"; then
+		ok "the workbench's save into a missing directory: 'No such file or directory' on the status line, nothing written, still running"
+	else
+		not_ok "the workbench's save into a missing directory is said" \
+			"$(T capture-pane -p -t t:save | grep -v '^$' | tail -n 3)"
+	fi
+	T send-keys -t t:save q
+fi
 
 echo "1..$n"
 [ "$failed" -eq 0 ]

@@ -6,7 +6,13 @@
  * (every LP role of the five steps), both as LP_FAILED and as a real GLPK
  * error (glp_error, the hook, the longjmp): the sample is a `numerical`
  * rejection, the workspace recovers, and the same sample solved again
- * gives the clean result bit for bit.
+ * gives the clean result bit for bit.  A real singular basis and a basis
+ * with the wrong number of basic variables (GLPK's GLP_ESING and
+ * GLP_EBADB, not injected) are recovered by lp_solve's retry.
+ *
+ * Scale: the same samples of a wall built at 1e-3 and 1e3 times its size
+ * give the same results (body load: the same load factors to 1e-6; point
+ * load: the same load per unit weight).
  *
  * Saving (wallfile_save, temporary file + rename): a save that fails -
  * a file size limit standing in for a full disk, a directory in the way,
@@ -16,6 +22,7 @@
  */
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -81,6 +88,69 @@ static void test_lp_error(void)
 	lp_free(p);
 }
 
+/* A singular starting basis, for real: two identical columns both basic.
+ * GLPK cannot factorize it (glp_simplex returns GLP_ESING); lp_solve
+ * must retry from the advanced basis and find the optimum.  The status
+ * codes of a basis are GLPK's, so they are read from a solved problem
+ * (this file does not include glpk.h). */
+static void test_lp_singular(void)
+{
+	/* max x + y, x + y <= 1, 2x + 2y <= 3: columns x and y are equal */
+	struct lp *p = lp_new(2, 2);
+	int cols[2] = {0, 1};
+	double one[2] = {1, 1}, two[2] = {2, 2};
+	lp_set_row(p, 0, 2, cols, one);
+	lp_set_row(p, 1, 2, cols, two);
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 1);
+	lp_set_row_bounds(p, 1, -HUGE_VAL, 3);
+	for (int j = 0; j < 2; j++) {
+		lp_set_col_bounds(p, j, 0, HUGE_VAL);
+		lp_set_obj(p, j, 1);
+	}
+	lp_set_maximize(p, 1);
+	enum lp_status s = lp_solve(p, LP_PRIMAL);
+	struct lp_basis b = {0, NULL};
+	lp_basis_save(p, &b);
+	/* one column basic, the other at its lower bound; row 0 at its
+	 * upper bound, row 1 basic */
+	int jb = lp_col_basic(p, 0) ? 0 : 1;
+	if (!tap_ok(s == LP_OPTIMAL && lp_obj(p) == 1 && b.n == 4 &&
+		    lp_col_basic(p, jb) && !lp_col_basic(p, 1 - jb),
+		    "the reference problem solves (status %d, obj %g)", s,
+		    lp_obj(p))) {
+		lp_basis_free(&b);
+		lp_free(p);
+		return;
+	}
+	int bs = b.stat[2 + jb], nu = b.stat[0];
+
+	/* both columns basic, both rows at their upper bounds: singular */
+	b.stat[0] = nu;
+	b.stat[1] = nu;
+	b.stat[2] = bs;
+	b.stat[3] = bs;
+	lp_basis_load(p, &b);
+	int loaded = lp_col_basic(p, 0) && lp_col_basic(p, 1);
+	s = lp_solve(p, LP_PRIMAL);
+	tap_ok(loaded && s == LP_OPTIMAL && fabs(lp_obj(p) - 1) < 1e-12,
+	       "a singular starting basis (two equal columns basic): the "
+	       "retry from the advanced basis solves it (loaded %d, status "
+	       "%d, obj %g)", loaded, s, lp_obj(p));
+
+	/* three basic variables for two rows: an invalid basis */
+	b.stat[0] = bs;
+	b.stat[1] = nu;
+	b.stat[2] = bs;
+	b.stat[3] = bs;
+	lp_basis_load(p, &b);
+	s = lp_solve(p, LP_DUAL);
+	tap_ok(s == LP_OPTIMAL && fabs(lp_obj(p) - 1) < 1e-12,
+	       "a basis with 3 basic variables for 2 rows: the retry solves "
+	       "it (status %d, obj %g)", s, lp_obj(p));
+	lp_basis_free(&b);
+	lp_free(p);
+}
+
 /* The n-th LP of one sample fails, for every n: numerical, then the
  * clean sample again, bit for bit. */
 static void test_sample_faults(const struct wall *w, enum lp_status as)
@@ -124,6 +194,80 @@ out:
 	sample_result_free(&r0);
 	sample_result_free(&r);
 	free(xi);
+}
+
+/* ---- scale -------------------------------------------------------------- */
+
+/* Units must not matter to a sample either (tests/test_solve.c proves it
+ * for the single solutions): the same samples (contact points are
+ * fractions of each interface) of a wall built at 1e-3 and 1e3 times its
+ * size have the same status and mechanism, and, under a body load, the
+ * same load factors to 1e-6; under a point load the load divided by the
+ * weight is the same. */
+#define SCALE_SAMPLES 12
+static void sample_at_scale(double f, int point, struct sample_result *rs)
+{
+	struct wall *w = tw_layout(0.4 * f, 0.175 * f, 6, 2.0 * f, 1, 1, 0.65);
+	if (point)
+		tw_point_load(w, 2.0 * f, 0.175 * f * 5.5, 1, 0);
+	else
+		tw_body_load(w);
+	tw_finish(w);
+	struct sample_opts o;
+	sample_opts_default(&o);
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_ws *ws = sample_ws_new(w);
+	for (int k = 0; k < SCALE_SAMPLES; k++) {
+		sample_result_init(&rs[k], w);
+		sample_positions(w, 5, (unsigned long)k, -1, xi);
+		sample_run(ws, xi, &o, &rs[k]);
+		if (point) {	/* the load per unit weight */
+			rs[k].lambda_min /= w->total_weight;
+			rs[k].lambda_max /= w->total_weight;
+		}
+	}
+	sample_ws_free(ws);
+	free(xi);
+	wall_free(w);
+}
+
+static void test_sample_scale(void)
+{
+	const double f[2] = {1e-3, 1e3};
+	for (int point = 0; point < 2; point++) {
+		struct sample_result r1[SCALE_SAMPLES], rf[SCALE_SAMPLES];
+		sample_at_scale(1, point, r1);
+		int accepted = 0;
+		for (int k = 0; k < SCALE_SAMPLES; k++)
+			accepted += r1[k].status == SAMPLE_ACCEPTED;
+		for (int i = 0; i < 2; i++) {
+			sample_at_scale(f[i], point, rf);
+			int same = 0;
+			double worst = 0;
+			for (int k = 0; k < SCALE_SAMPLES; k++) {
+				int ok = rf[k].status == r1[k].status;
+				if (ok && r1[k].status == SAMPLE_ACCEPTED) {
+					double a = fabs(rf[k].lambda_min / r1[k].lambda_min - 1);
+					double b = fabs(rf[k].lambda_max / r1[k].lambda_max - 1);
+					if (a > worst) worst = a;
+					if (b > worst) worst = b;
+					ok = a <= 1e-6 && b <= 1e-6 &&
+					     !strcmp(rf[k].joint, r1[k].joint);
+				}
+				same += ok;
+				sample_result_free(&rf[k]);
+			}
+			tap_ok(accepted > 0 && same == SCALE_SAMPLES,
+			       "%s load, wall scaled by %g: %d of %d samples with "
+			       "the same status and mechanism (%d accepted), load%s "
+			       "within %.1e relative (<= 1e-6)",
+			       point ? "point" : "body", f[i], same,
+			       SCALE_SAMPLES, accepted,
+			       point ? " / weight" : " factors", worst);
+		}
+		for (int k = 0; k < SCALE_SAMPLES; k++)
+			sample_result_free(&r1[k]);
+	}
 }
 
 /* ---- saving ------------------------------------------------------------ */
@@ -262,8 +406,10 @@ int main(void)
 	struct wall *ft = tw_load_file(SRCDIR "/walls/ferris-tinloi-1.yaml");
 
 	test_lp_error();
+	test_lp_singular();
 	test_sample_faults(ft, LP_ERROR);
 	test_sample_faults(demo, LP_FAILED);
+	test_sample_scale();
 	test_save(demo, ft);
 
 	wall_free(demo);
