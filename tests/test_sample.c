@@ -165,8 +165,10 @@ static void ferris_tinloi(void)
 }
 
 /* The published walls at the default depth: an independent implementation
- * accepts nearly all samples (SPEC section 2).  At least 195 of 200, and
- * at most 2 rejected as numerical: when LP2 held lambda >= lambda_LP1
+ * accepts nearly all samples (SPEC section 2).  At least 198 of 200 (all
+ * 200 today; with the old iteration limit of 200, samples 63, 107, 120
+ * and 183 of wall 1 were not_converged), and at most 1 rejected as
+ * numerical: when LP2 held lambda >= lambda_LP1
  * exactly instead of keeping to LP1's optimal face, GLPK found LP2
  * infeasible for 17 of these 200 samples of wall 2. */
 static void acceptance(void)
@@ -191,10 +193,10 @@ static void acceptance(void)
 			if (count[s])
 				tap_diag("%s: %s: %d", files[f],
 					 sample_status_name(s), count[s]);
-		tap_ok(count[SAMPLE_ACCEPTED] >= 195 &&
-		       count[SAMPLE_NUMERICAL] <= 2,
-		       "%s, depth 0.25: %d of 200 accepted (>= 195), %d "
-		       "numerical (<= 2)", files[f], count[SAMPLE_ACCEPTED],
+		tap_ok(count[SAMPLE_ACCEPTED] >= 198 &&
+		       count[SAMPLE_NUMERICAL] <= 1,
+		       "%s, depth 0.25: %d of 200 accepted (>= 198), %d "
+		       "numerical (<= 1)", files[f], count[SAMPLE_ACCEPTED],
 		       count[SAMPLE_NUMERICAL]);
 		free(xi);
 		sample_result_free(&r);

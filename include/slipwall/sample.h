@@ -43,7 +43,7 @@ int sample_status_parse(const char *name);
 
 struct sample_opts {
 	double omega;		/* SLP relaxation, default 0.5 */
-	int max_iter;		/* SLP iteration limit, default 200 */
+	int max_iter;		/* SLP iteration limit, default 1000 */
 	double tol;		/* convergence, relative to the mean block
 				 * weight, default 1e-7 */
 	int stabilise;		/* the L1-closest optimal stress field (1) */
