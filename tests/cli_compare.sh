@@ -13,26 +13,7 @@
 bin=${1:?usage: cli_compare.sh SLIPWALL}
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
-check() {
-	local name=$1
-	shift
-	if "$@"; then ok "$name"; else not_ok "$name"; fi
-}
+. tests/tap.sh
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -183,5 +164,4 @@ else
 	not_ok "--fit-depth recovers d = 0.3" "exit $rc: $res" "$(head -c 200 "$tmp/fit.err")"
 fi
 
-echo "1..$n"
-[ $failed -eq 0 ]
+tap_end

@@ -25,26 +25,7 @@ bin=${1:?usage: cli_faults.sh SLIPWALL}
 bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
-check() {	# check NAME COMMAND...: ok when the command succeeds
-	local name=$1
-	shift
-	if "$@"; then ok "$name"; else not_ok "$name"; fi
-}
+. tests/tap.sh
 # complete FILE: every line has the header's number of fields and the
 # file ends with a newline
 complete() {
@@ -459,5 +440,4 @@ else
 	T send-keys -t t:save q
 fi
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_end

@@ -30,26 +30,7 @@ bin=${1:?usage: cli_mpi.sh SLIPWALL MPIRUN}
 mpirun=${2:?usage: cli_mpi.sh SLIPWALL MPIRUN}
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
-check() {	# check NAME COMMAND...: ok when the command succeeds
-	local name=$1
-	shift
-	if "$@"; then ok "$name"; else not_ok "$name"; fi
-}
+. tests/tap.sh
 # complete FILE: every line has the header's number of fields, the file
 # ends with a newline and the rows are samples 0..k-1
 complete() {
@@ -481,5 +462,4 @@ check "half a sample: JSON stopped rank_lost, as many samples as rows" \
 	json_says "$tmp/h.json" rank_lost "$(rows "$tmp/h.csv")"
 set +m
 
-echo "1..$n"
-[ $failed -eq 0 ]
+tap_end

@@ -12,26 +12,7 @@
 bin=${1:?usage: cli_report.sh SLIPWALL}
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
-check() {
-	local name=$1
-	shift
-	if "$@"; then ok "$name"; else not_ok "$name"; fi
-}
+. tests/tap.sh
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -137,5 +118,4 @@ timeout 120 "$bin" report "$tmp/slab.yaml" -n 300 --out "$tmp/slab" >/dev/null 2
 check "equal loads (a sliding slab): the report is written" \
 	bash -c "test -s '$tmp/slab/report.md' && test -s '$tmp/slab/convergence.png'"
 
-echo "1..$n"
-[ $failed -eq 0 ]
+tap_end

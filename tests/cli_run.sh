@@ -15,26 +15,7 @@
 bin=${1:?usage: cli_run.sh SLIPWALL}
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
-check() {	# check NAME COMMAND...: ok when the command succeeds
-	local name=$1
-	shift
-	if "$@"; then ok "$name"; else not_ok "$name"; fi
-}
+. tests/tap.sh
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -291,5 +272,4 @@ else
 	not_ok "demo wall reproduces SPEC section 5" "$res"
 fi
 
-echo "1..$n"
-[ $failed -eq 0 ]
+tap_end

@@ -18,21 +18,7 @@
 bin=${1:?usage: cli_size.sh SLIPWALL}
 cd "$(dirname "$0")/.." || exit 1
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '#   %s\n' "$line"
-	done
-}
+. tests/tap.sh
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -220,5 +206,4 @@ else
 	not_ok "a layout of a million blocks is refused" "exit $rc, ${secs} s, ${rss_mb} MB" "$(head -c 300 "$tmp/m.err")"
 fi
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_end

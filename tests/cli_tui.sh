@@ -17,21 +17,7 @@ if ! command -v tmux >/dev/null 2>&1; then
 	exit 0
 fi
 
-n=0
-failed=0
-ok() {
-	n=$((n + 1))
-	echo "ok $n - $1"
-}
-not_ok() {
-	n=$((n + 1))
-	failed=$((failed + 1))
-	echo "not ok $n - $1"
-	shift
-	for line in "$@"; do
-		printf '%s\n' "$line" | sed 's/^/#   /'
-	done
-}
+. tests/tap.sh
 
 tmp=$(mktemp -d)
 sock=slipwall-test-$$
@@ -349,5 +335,4 @@ else
 	not_ok "q restores the terminal and prints the samples file" "$(screen a)"
 fi
 
-echo "1..$n"
-[ "$failed" -eq 0 ]
+tap_end

@@ -1,0 +1,32 @@
+# tap.sh - the TAP helpers of the command-line tests (tests/cli_*.sh),
+# sourced after the script has changed to the source root:
+#   . tests/tap.sh
+# ok TEXT; not_ok TEXT [DETAIL...] (each detail line becomes a TAP
+# comment); check TEXT COMMAND... (ok when the command succeeds);
+# tap_end (the plan line, and the status: 0 when nothing failed).
+# n counts the tests, failed the failures.
+n=0
+failed=0
+ok() {
+	n=$((n + 1))
+	echo "ok $n - $1"
+}
+not_ok() {
+	n=$((n + 1))
+	failed=$((failed + 1))
+	echo "not ok $n - $1"
+	shift
+	local line
+	for line in "$@"; do
+		printf '%s\n' "$line" | sed 's/^/#   /'
+	done
+}
+check() {
+	local name=$1
+	shift
+	if "$@"; then ok "$name"; else not_ok "$name"; fi
+}
+tap_end() {
+	echo "1..$n"
+	[ "$failed" -eq 0 ]
+}
