@@ -77,6 +77,7 @@ static _Thread_local double tl_seconds;
 static _Thread_local const atomic_int *tl_stop;	/* lp_thread_stop_flag */
 static _Thread_local int tl_in_simplex;	/* inside lp_solve's simplex */
 static _Thread_local int tl_interrupted;
+static _Thread_local int tl_it_lim;	/* lp_thread_iteration_limit */
 
 static int stop_requested(void)
 {
@@ -398,7 +399,8 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	parm.out_frq = 500;
 	parm.presolve = GLP_OFF;
 	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
-	parm.it_lim = 50000 + 50 * (p->nrows + p->ncols);
+	parm.it_lim = tl_it_lim > 0 ? tl_it_lim :
+		      50000 + 50 * (p->nrows + p->ncols);
 	/* no time limit: a result must not depend on the machine's speed
 	 * or load; the iteration limit above is the (deterministic) bound */
 	enum lp_status st;
@@ -457,6 +459,11 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	st = map_status(p->P);
 	p->held = st == LP_OPTIMAL;
 	return st;
+}
+
+void lp_thread_iteration_limit(int limit)
+{
+	tl_it_lim = limit > 0 ? limit : 0;
 }
 
 void lp_basis_save(const struct lp *p, struct lp_basis *b)

@@ -8,7 +8,8 @@
  * rejection, the workspace recovers, and the same sample solved again
  * gives the clean result bit for bit.  A real singular basis and a basis
  * with the wrong number of basic variables (GLPK's GLP_ESING and
- * GLP_EBADB, not injected) are recovered by lp_solve's retry.
+ * GLP_EBADB, not injected) are recovered by lp_solve's retry; GLPK's
+ * iteration limit, reached for real, fails the LP and the sample.
  *
  * Scale: the same samples of a wall built at 1e-3 and 1e3 times its size
  * give the same results (body load: the same load factors to 1e-6; point
@@ -190,6 +191,67 @@ static void test_sample_faults(const struct wall *w, enum lp_status as)
 	       "%s: the same workspace then gives the clean sample bit for "
 	       "bit (%d of %d)", kind, recovered, r0.lps);
 out:
+	sample_ws_free(ws);
+	sample_result_free(&r0);
+	sample_result_free(&r);
+	free(xi);
+}
+
+/* GLPK's iteration limit, reached for real (lp_thread_iteration_limit):
+ * an LP that needs more pivots than the limit is LP_FAILED (after the
+ * retry), the same problem then solves with the default limit; a sample
+ * whose LPs hit it is a `numerical` rejection, and the same workspace
+ * then gives the clean sample bit for bit. */
+static void test_iteration_limit(const struct wall *w)
+{
+	/* max sum x_j, x_j + x_{j+1} <= 1 (a path of 12 columns): the
+	 * primal simplex from the slack basis needs several pivots */
+	enum { N = 12 };
+	struct lp *p = lp_new(N - 1, N);
+	for (int i = 0; i < N - 1; i++) {
+		int cols[2] = {i, i + 1};
+		double one[2] = {1, 1};
+		lp_set_row(p, i, 2, cols, one);
+		lp_set_row_bounds(p, i, -HUGE_VAL, 1);
+	}
+	for (int j = 0; j < N; j++) {
+		lp_set_col_bounds(p, j, 0, HUGE_VAL);
+		lp_set_obj(p, j, 1);
+	}
+	lp_set_maximize(p, 1);
+	lp_thread_iteration_limit(1);
+	enum lp_status s1 = lp_solve(p, LP_PRIMAL);
+	lp_thread_iteration_limit(0);
+	lp_reset_basis(p);
+	enum lp_status s2 = lp_solve(p, LP_PRIMAL);
+	tap_ok(s1 == LP_FAILED && s2 == LP_OPTIMAL && lp_obj(p) == N / 2 &&
+	       lp_last_iterations(p) > 1,
+	       "an iteration limit of 1 on an LP of %d pivots: LP_FAILED "
+	       "(status %d); without it: optimal, %g", lp_last_iterations(p),
+	       s1, lp_obj(p));
+	lp_free(p);
+
+	struct sample_opts o;
+	struct sample_result r0, r;
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	sample_opts_default(&o);
+	sample_result_init(&r0, w);
+	sample_result_init(&r, w);
+	sample_positions(w, 1, 3, -1, xi);
+	struct sample_ws *ws = sample_ws_new(w);
+	sample_run(ws, xi, &o, &r0);
+	lp_thread_iteration_limit(2);
+	sample_run(ws, xi, &o, &r);
+	enum sample_status limited = r.status;
+	lp_thread_iteration_limit(0);
+	sample_run(ws, xi, &o, &r);
+	tap_ok(r0.status == SAMPLE_ACCEPTED && limited == SAMPLE_NUMERICAL &&
+	       r.status == SAMPLE_ACCEPTED && r.lambda_min == r0.lambda_min &&
+	       r.lambda_max == r0.lambda_max && !strcmp(r.joint, r0.joint),
+	       "a sample whose LPs reach an iteration limit of 2: '%s'; "
+	       "then the clean sample bit for bit (%s, lambda_min %.9g)",
+	       sample_status_name(limited), sample_status_name(r.status),
+	       r.lambda_min);
 	sample_ws_free(ws);
 	sample_result_free(&r0);
 	sample_result_free(&r);
@@ -409,6 +471,7 @@ int main(void)
 	test_lp_singular();
 	test_sample_faults(ft, LP_ERROR);
 	test_sample_faults(demo, LP_FAILED);
+	test_iteration_limit(ft);
 	test_sample_scale();
 	test_save(demo, ft);
 

@@ -110,6 +110,11 @@ const char *lp_last_message(void);
  * threads that solve start.  Without a call, the environment variable
  * SLIPWALL_LP_FAULT=failed:N or error:N does the same (read once). */
 void lp_fault_set(long every, enum lp_status as);
+/* For tests: GLPK's simplex iteration limit for this thread's solves
+ * (0: the default, 50,000 + 50 (rows + columns)).  A solve that reaches
+ * it is retried once from an advanced basis, then LP_FAILED: the path of
+ * GLPK's own GLP_EITLIM, provoked for real rather than injected. */
+void lp_thread_iteration_limit(int limit);
 
 /* Mixed-integer: mark a column binary; solve with branch and cut. */
 void lp_set_binary(struct lp *p, int col);
