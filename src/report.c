@@ -1625,14 +1625,13 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	const struct report_input *in = c->in;
 	const struct report_run *r = &in->run;
 	const struct wall *w = c->w;
-	/* written as report.md.tmp, renamed when whole (as the figures) */
-	char final[4096], path[4096 + 4];
-	snprintf(final, sizeof final, "%s/report.md", dir);
-	snprintf(path, sizeof path, "%s.tmp", final);
-	FILE *f = fopen(path, "w");
-	if (!f)
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
-			       strerror(errno));
+	char path[4096];
+	snprintf(path, sizeof path, "%s/report.md", dir);
+	struct sw_whole out;	/* whole or not at all, as the figures */
+	enum sw_status st = sw_whole_open(&out, path, err);
+	if (st != SW_OK)
+		return st;
+	FILE *f = out.f;
 	const char *u = c->unit;
 	fprintf(f, "# slipwall report: %s\n\n", w->name ? w->name :
 		(r->wall_path ? r->wall_path : "wall"));
@@ -1769,16 +1768,7 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		if (any)
 			fprintf(f, "\n\n");
 	}
-	int e = ferror(f) ? (errno ? errno : EIO) : 0;
-	errno = 0;
-	if ((fclose(f) && !e) || (!e && rename(path, final) != 0))
-		e = errno ? errno : EIO;
-	if (e) {
-		unlink(path);
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
-			       strerror(e));
-	}
-	return SW_OK;
+	return sw_whole_close(&out, err);
 }
 
 /* ---- the entry point ---------------------------------------------------------- */

@@ -46,7 +46,6 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <yaml.h>
 
@@ -1069,34 +1068,10 @@ static void save_wall(FILE *f, const struct wall *w)
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err)
 {
-	size_t n = strlen(path) + 5;
-	char *tmp = sw_xmalloc(n);
-	snprintf(tmp, n, "%s.tmp", path);
-
-	errno = 0;
-	FILE *f = fopen(tmp, "w");
-	if (!f) {
-		int e = errno;
-		sw_fail(err, SW_EIO, "%s: cannot write: %s", tmp, strerror(e));
-		free(tmp);
-		return SW_EIO;
-	}
-	save_wall(f, w);
-	int e = 0;
-	if (ferror(f) || fflush(f) != 0)
-		e = errno ? errno : EIO;
-	if (!e && fsync(fileno(f)) != 0)
-		e = errno;
-	if (fclose(f) != 0 && !e)
-		e = errno ? errno : EIO;
-	if (!e && rename(tmp, path) != 0)
-		e = errno;
-	if (e) {
-		unlink(tmp);
-		sw_fail(err, SW_EIO, "%s: cannot write: %s", path, strerror(e));
-		free(tmp);
-		return SW_EIO;
-	}
-	free(tmp);
-	return SW_OK;
+	struct sw_whole out;
+	enum sw_status st = sw_whole_open(&out, path, err);
+	if (st != SW_OK)
+		return st;
+	save_wall(out.f, w);
+	return sw_whole_close(&out, err);
 }

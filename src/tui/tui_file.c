@@ -176,25 +176,15 @@ static void tui_file_json(struct tui *t, FILE *f, const char *wallpath)
 	json_end(&j);
 }
 
-/* Write the summary to path.tmp, then rename it over path. */
+/* Write the summary whole or not at all (PATH.tmp, then renamed). */
 static int tui_file_summary(struct tui *t, const char *path,
 			    const char *wallpath, char *err)
 {
-	char tmp[PATH_MAX];
-	if (snprintf(tmp, sizeof tmp, "%s.tmp", path) >= (int)sizeof tmp)
-		return sw_fail(err, SW_EIO, "%s: path too long", path), -1;
-	FILE *f = fopen(tmp, "w");
-	if (!f)
-		return sw_fail(err, SW_EIO, "%s: %s", tmp, strerror(errno)), -1;
-	tui_file_json(t, f, wallpath);
-	int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
-	bad |= fclose(f) != 0;
-	if (bad || rename(tmp, path) != 0) {
-		sw_fail(err, SW_EIO, "%s: cannot write: %s", path, strerror(errno));
-		unlink(tmp);
+	struct sw_whole out;
+	if (sw_whole_open(&out, path, err) != SW_OK)
 		return -1;
-	}
-	return 0;
+	tui_file_json(t, out.f, wallpath);
+	return sw_whole_close(&out, err) == SW_OK ? 0 : -1;
 }
 
 static void tui_file_save_to(struct tui *t, const char *path)
