@@ -152,49 +152,73 @@ static void test_lp_singular(void)
 	lp_free(p);
 }
 
+/* One sample of a wall (seed 1, index `index`) in its own workspace: the
+ * clean result r0, and r for the runs under a fault. */
+struct one_sample {
+	struct sample_opts o;
+	struct sample_result r0, r;
+	double *xi;
+	struct sample_ws *ws;
+};
+
+static void one_sample_init(struct one_sample *x, const struct wall *w,
+			    unsigned long index)
+{
+	sample_opts_default(&x->o);
+	sample_result_init(&x->r0, w);
+	sample_result_init(&x->r, w);
+	x->xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	sample_positions(w, 1, index, -1, x->xi);
+	x->ws = sample_ws_new(w);
+	sample_run(x->ws, x->xi, &x->o, &x->r0);
+}
+
+/* x->r again, and is it the clean sample bit for bit? */
+static int one_sample_clean(struct one_sample *x)
+{
+	sample_run(x->ws, x->xi, &x->o, &x->r);
+	return x->r.status == SAMPLE_ACCEPTED &&
+	       x->r.lambda_min == x->r0.lambda_min &&
+	       x->r.lambda_max == x->r0.lambda_max &&
+	       x->r.iterations == x->r0.iterations &&
+	       !strcmp(x->r.joint, x->r0.joint);
+}
+
+static void one_sample_free(struct one_sample *x)
+{
+	sample_ws_free(x->ws);
+	sample_result_free(&x->r0);
+	sample_result_free(&x->r);
+	free(x->xi);
+}
+
 /* The n-th LP of one sample fails, for every n: numerical, then the
  * clean sample again, bit for bit. */
 static void test_sample_faults(const struct wall *w, enum lp_status as)
 {
 	const char *kind = as == LP_ERROR ? "GLPK error" : "LP failure";
-	struct sample_opts o;
-	struct sample_result r0, r;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	sample_opts_default(&o);
-	sample_result_init(&r0, w);
-	sample_result_init(&r, w);
-	sample_positions(w, 1, 0, -1, xi);
-
-	struct sample_ws *ws = sample_ws_new(w);
-	sample_run(ws, xi, &o, &r0);
-	if (!tap_ok(r0.status == SAMPLE_ACCEPTED && r0.lps > 5,
-		    "%s: the clean sample is accepted (%d LPs)", kind, r0.lps))
-		goto out;
-	int numerical = 0, recovered = 0;
-	for (int n = 1; n <= r0.lps; n++) {
-		lp_fault_set(n, as);
-		sample_run(ws, xi, &o, &r);
-		numerical += r.status == SAMPLE_NUMERICAL;
-		lp_fault_set(0, LP_FAILED);
-		sample_run(ws, xi, &o, &r);
-		recovered += r.status == SAMPLE_ACCEPTED &&
-			     r.lambda_min == r0.lambda_min &&
-			     r.lambda_max == r0.lambda_max &&
-			     r.iterations == r0.iterations &&
-			     !strcmp(r.joint, r0.joint);
+	struct one_sample x;
+	one_sample_init(&x, w, 0);
+	int lps = x.r0.lps;
+	if (tap_ok(x.r0.status == SAMPLE_ACCEPTED && lps > 5,
+		   "%s: the clean sample is accepted (%d LPs)", kind, lps)) {
+		int numerical = 0, recovered = 0;
+		for (int n = 1; n <= lps; n++) {
+			lp_fault_set(n, as);
+			sample_run(x.ws, x.xi, &x.o, &x.r);
+			numerical += x.r.status == SAMPLE_NUMERICAL;
+			lp_fault_set(0, LP_FAILED);
+			recovered += one_sample_clean(&x);
+		}
+		tap_ok(numerical == lps,
+		       "%s in LP n of the sample, n = 1..%d (every step): a "
+		       "'numerical' rejection each time (%d)", kind, lps,
+		       numerical);
+		tap_ok(recovered == lps,
+		       "%s: the same workspace then gives the clean sample "
+		       "bit for bit (%d of %d)", kind, recovered, lps);
 	}
-	tap_ok(numerical == r0.lps,
-	       "%s in LP n of the sample, n = 1..%d (every step): a "
-	       "'numerical' rejection each time (%d)", kind, r0.lps,
-	       numerical);
-	tap_ok(recovered == r0.lps,
-	       "%s: the same workspace then gives the clean sample bit for "
-	       "bit (%d of %d)", kind, recovered, r0.lps);
-out:
-	sample_ws_free(ws);
-	sample_result_free(&r0);
-	sample_result_free(&r);
-	free(xi);
+	one_sample_free(&x);
 }
 
 /* GLPK's iteration limit, reached for real (lp_thread_iteration_limit):
@@ -231,31 +255,20 @@ static void test_iteration_limit(const struct wall *w)
 	       s1, lp_obj(p));
 	lp_free(p);
 
-	struct sample_opts o;
-	struct sample_result r0, r;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	sample_opts_default(&o);
-	sample_result_init(&r0, w);
-	sample_result_init(&r, w);
-	sample_positions(w, 1, 3, -1, xi);
-	struct sample_ws *ws = sample_ws_new(w);
-	sample_run(ws, xi, &o, &r0);
+	struct one_sample x;
+	one_sample_init(&x, w, 3);
 	lp_thread_iteration_limit(2);
-	sample_run(ws, xi, &o, &r);
-	enum sample_status limited = r.status;
+	sample_run(x.ws, x.xi, &x.o, &x.r);
+	enum sample_status limited = x.r.status;
 	lp_thread_iteration_limit(0);
-	sample_run(ws, xi, &o, &r);
-	tap_ok(r0.status == SAMPLE_ACCEPTED && limited == SAMPLE_NUMERICAL &&
-	       r.status == SAMPLE_ACCEPTED && r.lambda_min == r0.lambda_min &&
-	       r.lambda_max == r0.lambda_max && !strcmp(r.joint, r0.joint),
+	int clean = one_sample_clean(&x);
+	tap_ok(x.r0.status == SAMPLE_ACCEPTED && limited == SAMPLE_NUMERICAL &&
+	       clean,
 	       "a sample whose LPs reach an iteration limit of 2: '%s'; "
 	       "then the clean sample bit for bit (%s, lambda_min %.9g)",
-	       sample_status_name(limited), sample_status_name(r.status),
-	       r.lambda_min);
-	sample_ws_free(ws);
-	sample_result_free(&r0);
-	sample_result_free(&r);
-	free(xi);
+	       sample_status_name(limited), sample_status_name(x.r.status),
+	       x.r.lambda_min);
+	one_sample_free(&x);
 }
 
 /* ---- scale -------------------------------------------------------------- */
