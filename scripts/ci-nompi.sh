@@ -24,11 +24,7 @@ if grep -qE '^ *[0-9]+/[0-9]+ mpi_cli ' "$dir/test-output.txt"; then
 	rc=1
 fi
 [ "$rc" = 0 ] || sed -n '/^=* *[0-9]*\/[0-9]* .*FAIL/,/^===/p' "$dir/test-output.txt" | head -n 80
-passed=$(sed -n 's/^Ok: *\([0-9]*\).*/\1/p' "$dir/test-output.txt" | tail -n 1)
-failed=$(sed -n 's/^Fail: *\([0-9]*\).*/\1/p' "$dir/test-output.txt" | tail -n 1)
-timeout=$(sed -n 's/^Timeout: *\([0-9]*\).*/\1/p' "$dir/test-output.txt" | tail -n 1)
-passed=${passed:-0}
-failed=$(( ${failed:-0} + ${timeout:-0} ))
-if [ "$rc" != 0 ] && [ "$failed" = 0 ]; then failed=1; fi
-echo "tests: $passed passed, $failed failed"
+. scripts/meson-counts.sh
+meson_counts "$dir/test-output.txt" "$rc"
+echo "tests: $mpassed passed, $mfailed failed"
 [ "$rc" = 0 ]

@@ -41,15 +41,12 @@ reports() {
 }
 
 # count NAME LOG RC: add meson's Ok / Fail / Timeout counts of LOG
+. scripts/meson-counts.sh
 count() {
-	p=$(sed -n 's/^Ok: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
-	f=$(sed -n 's/^Fail: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
-	t=$(sed -n 's/^Timeout: *\([0-9]*\).*/\1/p' "$2" | tail -n 1)
-	f=$(( ${f:-0} + ${t:-0} ))
-	if [ "$3" != 0 ] && [ "$f" = 0 ]; then f=1; fi
-	passed=$(( passed + ${p:-0} ))
-	failed=$(( failed + f ))
-	echo "$1: ${p:-0} passed, $f failed"
+	meson_counts "$2" "$3"
+	passed=$(( passed + mpassed ))
+	failed=$(( failed + mfailed ))
+	echo "$1: $mpassed passed, $mfailed failed"
 }
 
 for job in $jobs; do
