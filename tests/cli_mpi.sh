@@ -377,34 +377,29 @@ for sig in INT TERM; do
 	rank_summary m$sig "SIG$sig to mpirun"
 done
 
+# signal_rank NAME SEED RANK SIGNAL WHY: a run, and SIGNAL to rank RANK
+# alone: exit 1, "interrupted (WHY) after k of 5000 samples", the JSON of
+# the same k samples, k complete rows that are one process's first
+signal_rank() {
+	local sr_name=$1 sr_seed=$2 sr_rank=$3 sr_sig=$4 sr_why=$5
+	start "$sr_name" "$sr_seed"
+	pid=$(rank_pid $mpipid "$sr_rank")
+	[ -n "$pid" ] && kill -"$sr_sig" "$pid"
+	wait_gone $mpipid 60
+	rc=$?
+	mpipid=
+	k=$(rows "$tmp/$sr_name.csv")
+	check "SIG$sr_sig to rank $sr_rank (pid ${pid:-none}): exit $rc (1), 'interrupted ($sr_why) after $k of 5000' and the JSON of the same $k samples" \
+		eval '[ -n "$pid" ] && [ $rc -eq 1 ] && json_says "$tmp/$sr_name.json" interrupted $k &&
+		grep -qF "interrupted ($sr_why) after $k of 5000 samples" "$tmp/$sr_name.err"'
+	check "SIG$sr_sig to rank $sr_rank: $k complete rows, one process's first rows" \
+		eval 'complete "$tmp/$sr_name.csv" && prefix "$tmp/$sr_name.csv" $sr_seed'
+}
 # SIGINT to rank 0 alone: it stops the others and ends cleanly
-start r0 24
-pid=$(rank_pid $mpipid 0)
-[ -n "$pid" ] && kill -INT "$pid"
-wait_gone $mpipid 60
-rc=$?
-mpipid=
-k=$(rows "$tmp/r0.csv")
-check "SIGINT to rank 0 (pid ${pid:-none}): exit $rc (1), 'interrupted (Interrupt) after $k of 5000' and a JSON summary of the same $k samples" \
-	eval '[ -n "$pid" ] && [ $rc -eq 1 ] && json_says "$tmp/r0.json" interrupted $k &&
-	grep -q "interrupted (Interrupt) after $k of 5000 samples" "$tmp/r0.err"'
-check "SIGINT to rank 0: $k complete rows, one process's first rows" \
-	eval 'complete "$tmp/r0.csv" && prefix "$tmp/r0.csv" 24'
-
+signal_rank r0 24 0 INT Interrupt
 # SIGTERM to rank 1 alone: rank 0 ends the stream at rank 1's first
 # missing sample and says so
-start r1 25
-pid=$(rank_pid $mpipid 1)
-[ -n "$pid" ] && kill -TERM "$pid"
-wait_gone $mpipid 60
-rc=$?
-mpipid=
-k=$(rows "$tmp/r1.csv")
-check "SIGTERM to rank 1 (pid ${pid:-none}): exit $rc (1), 'interrupted (rank 1: Terminated) after $k of 5000' and the JSON of the same $k samples" \
-	eval '[ -n "$pid" ] && [ $rc -eq 1 ] && json_says "$tmp/r1.json" interrupted $k &&
-	grep -q "interrupted (rank 1: Terminated) after $k of 5000 samples" "$tmp/r1.err"'
-check "SIGTERM to rank 1: $k complete rows, one process's first rows" \
-	eval 'complete "$tmp/r1.csv" && prefix "$tmp/r1.csv" 25'
+signal_rank r1 25 1 TERM "rank 1: Terminated"
 
 # a rank that stops answering: given up after the timeout
 # ms: the monotonic-enough clock in milliseconds
