@@ -289,12 +289,6 @@ rows_ok() {
 		 END { exit bad || NR < 1 }' "$1" &&
 		[ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
 }
-alive() {	# a zombie that tmux has not reaped yet has exited
-	local st
-	st=$(ps -o stat= -p "$1" 2>/dev/null) || return 1
-	case $st in Z*) return 1 ;; esac
-	return 0
-}
 # wb NAME PRE -- ARGS: start the workbench; PRE runs in the shell first
 wb() {
 	local name=$1 pre=$2
@@ -307,49 +301,36 @@ wb_pid() {	# NAME: the program's pid (the one child of the window's shell)
 	ps -o pid= --ppid "$(cat "$tmp/wb-$1/sh")" | tr -d ' '
 }
 # wb_rows NAME MIN SECONDS: until its samples file has MIN rows
-wb_rows() {
-	local end=$((SECONDS + $3)) f
-	while [ "$SECONDS" -le "$end" ]; do
-		for f in "$tmp/wb-$1"/runs/*.csv; do
-			[ -f "$f" ] && [ "$(($(wc -l <"$f") - 1))" -ge "$2" ] && return 0
-		done
-		sleep 0.2
+wb_has_rows() {
+	local f
+	for f in "$tmp/wb-$1"/runs/*.csv; do
+		[ -f "$f" ] && [ "$(($(wc -l <"$f") - 1))" -ge "$2" ] && return 0
 	done
 	return 1
 }
+wb_rows() {
+	within "$3" wb_has_rows "$1" "$2"
+}
+wb_screen_has() {	# NAME REGEX
+	T capture-pane -p -t "t:$1" | grep -qE -- "$2"
+}
 wb_wait_screen() {	# NAME REGEX SECONDS
-	local end=$((SECONDS + $3))
-	while [ "$SECONDS" -le "$end" ]; do
-		T capture-pane -p -t "t:$1" | grep -qE -- "$2" && return 0
-		sleep 0.2
-	done
-	return 1
+	within "$3" wb_screen_has "$1" "$2"
 }
 # wb_status NAME: the program's exit status, written by the window's shell
 wb_status() {
-	local end=$((SECONDS + 5))
-	while [ "$SECONDS" -le "$end" ]; do
-		[ -s "$tmp/wb-$1/rc" ] && { cat "$tmp/wb-$1/rc"; return 0; }
-		sleep 0.1
-	done
-	return 1
+	within 5 test -s "$tmp/wb-$1/rc" && cat "$tmp/wb-$1/rc"
 }
 # wb_restored NAME: the workbench's screen is gone (the samples line it
 # prints then is in the pane's history: capture-pane -S -)
+wb_screen_lacks() {	# NAME REGEX
+	! wb_screen_has "$1" "$2"
+}
 wb_restored() {
-	local end=$((SECONDS + 5))
-	while [ "$SECONDS" -le "$end" ]; do
-		T capture-pane -p -t "t:$1" | grep -q 'q quit' || return 0
-		sleep 0.2
-	done
-	return 1
+	within 5 wb_screen_lacks "$1" "q quit"
 }
 wb_wait_exit() {	# PID SECONDS
-	local end=$((SECONDS + $2))
-	while alive "$1" && [ "$SECONDS" -le "$end" ]; do
-		sleep 0.1
-	done
-	! alive "$1"
+	within "$2" gone "$1"
 }
 if ! command -v tmux >/dev/null 2>&1 ||
    ! T -f /dev/null new-session -d -s t -n idle -x 200 -y 30 "sleep 600"; then

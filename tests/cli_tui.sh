@@ -50,13 +50,11 @@ screen() {
 	T capture-pane -p -t "t:$1"
 }
 # wait_for WINDOW REGEX SECONDS
+screen_has() {
+	screen "$1" | grep -qE -- "$2"
+}
 wait_for() {
-	local end=$((SECONDS + $3))
-	while [ "$SECONDS" -le "$end" ]; do
-		screen "$1" | grep -qE -- "$2" && return 0
-		sleep 0.1
-	done
-	return 1
+	within "$3" screen_has "$1" "$2"
 }
 samples() {
 	screen "$1" | sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1
@@ -68,27 +66,24 @@ runno() {
 	screen "$1" | sed -n 's/.* run \([0-9][0-9]*\) .*/\1/p' | head -n 1
 }
 # wait_samples WINDOW MIN SECONDS: until the count reaches MIN
+samples_reach() {
+	local s
+	s=$(samples "$1")
+	[ -n "$s" ] && [ "$s" -ge "$2" ]
+}
 wait_samples() {
-	local end=$((SECONDS + $3)) s
-	while [ "$SECONDS" -le "$end" ]; do
-		s=$(samples "$1")
-		[ -n "$s" ] && [ "$s" -ge "$2" ] && return 0
-		sleep 0.1
-	done
-	return 1
+	within "$3" samples_reach "$1" "$2"
 }
 wall_pane() {	# the wall drawing: the left pane below its label line
 	# (strip from the last vertical bar: the separator of the right pane)
 	screen "$1" | sed -n '3,27p' | sed 's/\(.*\)[│|].*/\1/'
 }
 # wait_last WINDOW REGEX SECONDS: the status line (last row) matches
+last_has() {
+	screen "$1" | tail -n 1 | grep -qE -- "$2"
+}
 wait_last() {
-	local end=$((SECONDS + $3))
-	while [ "$SECONDS" -le "$end" ]; do
-		screen "$1" | tail -n 1 | grep -qE -- "$2" && return 0
-		sleep 0.1
-	done
-	return 1
+	within "$3" last_has "$1" "$2"
 }
 csv_complete() {	# every row has the header's column count; samples 0..n-1
 	awk -F, 'NR == 1 { n = NF; next }
@@ -285,20 +280,9 @@ else
 fi
 
 # --- 8. SIGHUP: complete files, restored terminal, exit ---
-# alive PID: running (a zombie that tmux has not reaped yet has exited)
-alive() {
-	local st
-	st=$(ps -o stat= -p "$1" 2>/dev/null) || return 1
-	case $st in Z*) return 1 ;; esac
-	return 0
-}
 pid=$(cat "$tmp/w.pid")
 kill -HUP "$pid"
-end=$((SECONDS + 10))
-while alive "$pid" && [ "$SECONDS" -le "$end" ]; do
-	sleep 0.1
-done
-if ! alive "$pid"; then
+if within 10 gone "$pid"; then
 	ok "SIGHUP ends the workbench"
 else
 	not_ok "SIGHUP ends the workbench"

@@ -4,7 +4,9 @@
 # ok TEXT; not_ok TEXT [DETAIL...] (each detail line becomes a TAP
 # comment); check TEXT COMMAND... (ok when the command succeeds);
 # tap_end (the plan line, and the status: 0 when nothing failed).
-# n counts the tests, failed the failures.
+# n counts the tests, failed the failures.  And two helpers for tests
+# that wait: within SECONDS COMMAND... (the command, every 0.1 s, until
+# it succeeds or SECONDS have passed), alive PID.
 n=0
 failed=0
 ok() {
@@ -29,4 +31,25 @@ check() {
 tap_end() {
 	echo "1..$n"
 	[ "$failed" -eq 0 ]
+}
+# within SECONDS COMMAND...: 0 as soon as COMMAND succeeds, 1 when it
+# has not within SECONDS (it is tried every 0.1 s)
+within() {
+	local end=$((SECONDS + $1))
+	shift
+	until "$@"; do
+		[ "$SECONDS" -le "$end" ] || return 1
+		sleep 0.1
+	done
+}
+# alive PID: running (a zombie that its parent has not reaped yet has
+# exited)
+alive() {
+	local st
+	st=$(ps -o stat= -p "$1" 2>/dev/null) || return 1
+	case $st in Z*) return 1 ;; esac
+	return 0
+}
+gone() {
+	! alive "$1"
 }
