@@ -23,8 +23,8 @@ if grep -qE '^ *[0-9]+/[0-9]+ mpi_cli ' "$dir/test-output.txt"; then
 	echo "ci-nompi: mpi_cli ran: the build has MPI"
 	rc=1
 fi
-[ "$rc" = 0 ] || sed -n '/^=* *[0-9]*\/[0-9]* .*FAIL/,/^===/p' "$dir/test-output.txt" | head -n 80
 . scripts/meson-counts.sh
+[ "$rc" = 0 ] || meson_failures "$dir"
 meson_counts "$dir/test-output.txt" "$rc"
 echo "tests: $mpassed passed, $mfailed failed"
 [ "$rc" = 0 ]

@@ -69,6 +69,7 @@ for job in $jobs; do
 		set -e
 		tail -n 12 "$dir/test-output.txt"
 		count asan "$dir/test-output.txt" $rc
+		[ "$rc" = 0 ] || meson_failures "$dir"
 		reports "$dir" san-report
 		;;
 	tsan)
@@ -93,6 +94,7 @@ for job in $jobs; do
 		set -e
 		tail -n 12 "$dir/test-output.txt"
 		count tsan "$dir/test-output.txt" $rc
+		[ "$rc" = 0 ] || meson_failures "$dir"
 		reports "$dir" san-report
 		;;
 	*)

@@ -11,3 +11,41 @@ meson_counts() {
 	mfailed=$(( ${mfailed:-0} + ${_t:-0} ))
 	if [ "$2" != 0 ] && [ "$mfailed" = 0 ]; then mfailed=1; fi
 }
+
+# meson_failures DIR: what failed, from DIR's meson test logs (the TAP
+# tests' stdout is not in meson's --print-errorlogs output): for every
+# test whose result is not a pass, its name and result, its "not ok"
+# lines with their comments, and the last lines of its stderr.
+meson_failures() {
+	for _log in "$1"/meson-logs/testlog*.txt; do
+		[ -f "$_log" ] || continue
+		awk '
+		function flush() {
+			if (name != "" && bad) {
+				printf "--- failed: %s (%s)\n", name, result
+				printf "%s", notok
+				if (nerr > 0) {
+					print "    stderr, last lines:"
+					for (i = (nerr > 10 ? nerr - 9 : 1); i <= nerr; i++)
+						print "    " err[i]
+				}
+			}
+			name = ""; bad = 0; notok = ""; nerr = 0; sect = ""; keep = 0
+		}
+		/^=+ [0-9]+\/[0-9]+ =+$/ || /^=+$/ { flush(); next }
+		/^test: / { name = $2; next }
+		/^result: / {
+			result = substr($0, index($0, $2))
+			bad = (result != "exit status 0" && result != "passed")
+			next
+		}
+		/^-+ stdout -+$/ { sect = "out"; next }
+		/^-+ stderr -+$/ { sect = "err"; next }
+		sect == "out" && /^not ok/ { notok = notok "    " $0 "\n"; keep = 30; next }
+		sect == "out" && /^#/ && keep > 0 { notok = notok "    " $0 "\n"; keep--; next }
+		sect == "out" { keep = 0; next }
+		sect == "err" { err[++nerr] = $0; next }
+		END { flush() }
+		' "$_log"
+	done
+}

@@ -10,6 +10,7 @@ rc=$?
 set -e
 cat build/test-output.txt
 . scripts/meson-counts.sh
+[ "$rc" = 0 ] || meson_failures build
 meson_counts build/test-output.txt "$rc"
 echo "tests: $mpassed passed, $mfailed failed"
 [ "$rc" = 0 ]

@@ -110,11 +110,17 @@ else
 fi
 
 # --- 2. moving the load redraws it and restarts the count ---
+# Up and a pause in one burst of keys, so the count of the new run is
+# frozen a moment after it started: comparing a running count with the
+# old one was a race (two threads reach the old count in under a
+# second).  The pause's message replaces the "load at" one; the drawing
+# shows where the load went.
+wait_samples w 20 20
 before=$(wall_pane w)
 r0=$(runno w)
 c0=$(samples w)
-T send-keys -t t:w Up
-if wait_for w 'load at \(0\.8, 0\.45\)' 10; then
+T send-keys -t t:w Up Space
+if wait_for w "run $((r0 + 1)) paused" 10 && wait_for w '^ *paused at [0-9]+ samples' 5; then
 	after=$(wall_pane w)
 	r1=$(runno w)
 	c1=$(samples w)
@@ -126,6 +132,7 @@ if wait_for w 'load at \(0\.8, 0\.45\)' 10; then
 else
 	not_ok "the Up arrow moves the load" "$(screen w)"
 fi
+T send-keys -t t:w Space
 # the load marker sits one course higher on the right face
 row_before=$(printf '%s\n' "$before" | grep -n '●' | cut -d: -f1)
 row_after=$(printf '%s\n' "$after" | grep -n '●' | cut -d: -f1)
