@@ -40,8 +40,8 @@ reports() {
 	echo "$2: $n sanitizer report(s) from the programs the tests ran"
 }
 
-# count NAME LOG RC: add meson's Ok / Fail / Timeout counts of LOG
 . scripts/meson-counts.sh
+# count NAME LOG RC: add meson's Ok / Fail / Timeout counts of LOG
 count() {
 	meson_counts "$2" "$3"
 	passed=$(( passed + mpassed ))

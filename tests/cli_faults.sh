@@ -304,7 +304,7 @@ wb_pid() {	# NAME: the program's pid (the one child of the window's shell)
 wb_has_rows() {
 	local f
 	for f in "$tmp/wb-$1"/runs/*.csv; do
-		[ -f "$f" ] && [ "$(($(wc -l <"$f") - 1))" -ge "$2" ] && return 0
+		has_rows "$f" "$2" && return 0
 	done
 	return 1
 }

@@ -245,15 +245,6 @@ check "ranks that set up different runs (-n 10 and -n 11): exit 2, 'rank 1 set u
 	[ "$(rows "$tmp/dif.csv")" = 0 ]'
 
 # ---- faults ------------------------------------------------------------------
-# wait_rows FILE K: wait (at most 60 s) until FILE has K data rows
-wait_rows() {
-	local i
-	for i in $(seq 600); do
-		[ -f "$1" ] && [ "$(wc -l <"$1")" -gt "$2" ] && return 0
-		sleep 0.1
-	done
-	return 1
-}
 # rank_pid MPIRUN_PID RANK: the process of that rank (a child of mpirun)
 rank_pid() {
 	local d
@@ -269,24 +260,14 @@ rank_pid() {
 }
 # stop_mpirun PID: SIGTERM (mpirun then ends its ranks), SIGKILL 5 s later
 stop_mpirun() {
-	local i
 	kill -TERM "$1" 2>/dev/null
-	for i in $(seq 50); do
-		kill -0 "$1" 2>/dev/null || break
-		sleep 0.1
-	done
-	kill -9 "$1" 2>/dev/null
+	within 5 gone "$1" || kill -9 "$1" 2>/dev/null
 	wait "$1" 2>/dev/null
 }
 # wait_gone PID SECONDS: wait for mpirun; its exit status, or 124 if it
 # is still running after SECONDS (then it is stopped)
 wait_gone() {
-	local i
-	for i in $(seq $(($2 * 10))); do
-		kill -0 "$1" 2>/dev/null || break
-		sleep 0.1
-	done
-	if kill -0 "$1" 2>/dev/null; then
+	if ! within "$2" gone "$1"; then
 		stop_mpirun "$1"
 		return 124
 	fi

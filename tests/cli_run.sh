@@ -179,16 +179,6 @@ check "--until-ci: the file holds exactly the samples counted" \
 	python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
 sys.exit(sum(1 for _ in open(sys.argv[2])) - 1 != d["samples"])' "$tmp/u1.json" "$tmp/u1.csv"
 
-# wait_rows FILE K: wait (at most 60 s) until FILE has K data rows
-wait_rows() {
-	local i
-	for i in $(seq 600); do
-		[ -f "$1" ] && [ "$(wc -l <"$1")" -gt "$2" ] && return 0
-		sleep 0.1
-	done
-	return 1
-}
-
 # ---- SIGKILL: every line complete -------------------------------------------
 "$bin" run $ft -n 100000 --threads 2 --samples "$tmp/k.csv" >/dev/null 2>&1 &
 pid=$!

@@ -115,14 +115,10 @@ if kill -0 $pid 2>/dev/null; then
 	finished=0
 	kill -INT $pid
 	t0=$(date +%s)
-	for _ in $(seq 100); do
-		kill -0 $pid 2>/dev/null || break
-		sleep 0.1
-	done
-	if kill -0 $pid 2>/dev/null; then
-		kill -KILL $pid 2>/dev/null
-	else
+	if within 10 gone $pid; then
 		stopped_in=$(( $(date +%s) - t0 ))
+	else
+		kill -KILL $pid 2>/dev/null
 	fi
 fi
 wait $pid 2>/dev/null

@@ -4,9 +4,10 @@
 # ok TEXT; not_ok TEXT [DETAIL...] (each detail line becomes a TAP
 # comment); check TEXT COMMAND... (ok when the command succeeds);
 # tap_end (the plan line, and the status: 0 when nothing failed).
-# n counts the tests, failed the failures.  And two helpers for tests
-# that wait: within SECONDS COMMAND... (the command, every 0.1 s, until
-# it succeeds or SECONDS have passed), alive PID.
+# n counts the tests, failed the failures.  And helpers for tests that
+# wait: within SECONDS COMMAND... (the command, every 0.1 s, until it
+# succeeds or SECONDS have passed); alive PID and gone PID; has_rows
+# FILE K and wait_rows FILE K (a samples file's data rows).
 n=0
 failed=0
 ok() {
@@ -52,4 +53,13 @@ alive() {
 }
 gone() {
 	! alive "$1"
+}
+# has_rows FILE K: FILE exists and has at least K data rows (lines
+# after its header)
+has_rows() {
+	[ -f "$1" ] && [ "$(wc -l <"$1")" -gt "$2" ]
+}
+# wait_rows FILE K: until FILE has K data rows (at most 60 s)
+wait_rows() {
+	within 60 has_rows "$1" "$2"
 }
