@@ -65,6 +65,12 @@ struct lp {
 	int held;
 	int *ind;		/* scratch, 1-based */
 	double *val;
+	/* lp_tiebreak's record of what it changed, to restore it */
+	double *tb_obj;		/* ncols: the objective */
+	int *tb_fixed;		/* rows then columns it fixed (1-based,
+				 * columns as nrows + j) */
+	int *tb_type, *tb_stat;	/* their type and status */
+	double *tb_lb, *tb_ub;	/* and their bounds */
 };
 
 static _Thread_local int tl_hooked;
@@ -184,6 +190,12 @@ void lp_free(struct lp *p)
 		glp_delete_prob(p->P);
 	free(p->ind);
 	free(p->val);
+	free(p->tb_obj);
+	free(p->tb_fixed);
+	free(p->tb_type);
+	free(p->tb_stat);
+	free(p->tb_lb);
+	free(p->tb_ub);
 	free(p);
 }
 
@@ -458,6 +470,115 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 		return LP_FAILED;
 	st = map_status(p->P);
 	p->held = st == LP_OPTIMAL;
+	return st;
+}
+
+/*
+ * Tie-break (SPEC section 2, "One answer per sample").  The optimal face
+ * of the LP just solved is, by complementary slackness with the dual
+ * solution GLPK holds, the set of feasible points at which every
+ * non-basic variable with a non-zero reduced cost stays where it is (this
+ * holds for any optimal dual solution, so the face does not depend on
+ * which optimal basis the simplex reached).  A variable is "non-zero"
+ * when |d| > tol.  When no non-basic variable has |d| <= tol the optimum
+ * is unique and nothing is solved.  Otherwise those variables are fixed
+ * (their bounds, as GLPK types), the objective becomes c2 (minimised),
+ * and the primal simplex starts from the optimal basis, which stays
+ * primal feasible.  Afterwards the bounds, the statuses of the fixed
+ * variables, the objective and its sense are put back as they were; the
+ * solution GLPK stores (lp_col, lp_row) is the tie-break's.
+ */
+static int tb_nonzero(int stat, double d, double tol)
+{
+	return stat != GLP_BS && stat != GLP_NS && fabs(d) > tol;
+}
+
+static int tb_zero(int stat, double d, double tol)
+{
+	return stat != GLP_BS && stat != GLP_NS && !(fabs(d) > tol);
+}
+
+enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
+			   int *solved)
+{
+	*solved = 0;
+	if (!alive(p))
+		return LP_ERROR;
+	glp_prob *P = p->P;
+	int n = p->nrows + p->ncols, tie = 0;
+	for (int i = 1; i <= p->nrows && !tie; i++)
+		tie = tb_zero(glp_get_row_stat(P, i), glp_get_row_dual(P, i), tol);
+	for (int j = 1; j <= p->ncols && !tie; j++)
+		tie = tb_zero(glp_get_col_stat(P, j), glp_get_col_dual(P, j), tol);
+	if (!tie)
+		return LP_OPTIMAL;
+	if (!p->tb_obj) {
+		p->tb_obj = sw_xmalloc(sizeof(double) * (size_t)(p->ncols + 1));
+		p->tb_fixed = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+		p->tb_type = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+		p->tb_stat = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+		p->tb_lb = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+		p->tb_ub = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	}
+	int nf = 0, dir = glp_get_obj_dir(P);
+	for (int i = 1; i <= p->nrows; i++) {
+		int st = glp_get_row_stat(P, i);
+		if (!tb_nonzero(st, glp_get_row_dual(P, i), tol))
+			continue;
+		p->tb_fixed[nf] = i;
+		p->tb_type[nf] = glp_get_row_type(P, i);
+		p->tb_stat[nf] = st;
+		p->tb_lb[nf] = glp_get_row_lb(P, i);
+		p->tb_ub[nf] = glp_get_row_ub(P, i);
+		double v = st == GLP_NU ? p->tb_ub[nf] : p->tb_lb[nf];
+		if (st == GLP_NF)
+			v = glp_get_row_prim(P, i);
+		glp_set_row_bnds(P, i, GLP_FX, v, v);
+		nf++;
+	}
+	for (int j = 1; j <= p->ncols; j++) {
+		int st = glp_get_col_stat(P, j);
+		p->tb_obj[j - 1] = glp_get_obj_coef(P, j);
+		glp_set_obj_coef(P, j, c2[j - 1]);
+		if (!tb_nonzero(st, glp_get_col_dual(P, j), tol))
+			continue;
+		p->tb_fixed[nf] = p->nrows + j;
+		p->tb_type[nf] = glp_get_col_type(P, j);
+		p->tb_stat[nf] = st;
+		p->tb_lb[nf] = glp_get_col_lb(P, j);
+		p->tb_ub[nf] = glp_get_col_ub(P, j);
+		double v = st == GLP_NU ? p->tb_ub[nf] : p->tb_lb[nf];
+		if (st == GLP_NF)
+			v = glp_get_col_prim(P, j);
+		glp_set_col_bnds(P, j, GLP_FX, v, v);
+		nf++;
+	}
+	glp_set_obj_dir(P, GLP_MIN);
+	p->held = 0;
+	enum lp_status st = lp_solve(p, LP_PRIMAL);
+	*solved = 1;
+	if (!alive(p))
+		return st;
+	/* put the problem back; the statuses first fixed by the tie-break
+	 * are those of the primary optimum, still valid (a fixed variable
+	 * never enters the basis) */
+	for (int f = 0; f < nf; f++) {
+		int k = p->tb_fixed[f];
+		if (k <= p->nrows) {
+			glp_set_row_bnds(P, k, p->tb_type[f], p->tb_lb[f], p->tb_ub[f]);
+			if (glp_get_row_stat(P, k) != GLP_BS)
+				glp_set_row_stat(P, k, p->tb_stat[f]);
+		} else {
+			k -= p->nrows;
+			glp_set_col_bnds(P, k, p->tb_type[f], p->tb_lb[f], p->tb_ub[f]);
+			if (glp_get_col_stat(P, k) != GLP_BS)
+				glp_set_col_stat(P, k, p->tb_stat[f]);
+		}
+	}
+	for (int j = 1; j <= p->ncols; j++)
+		glp_set_obj_coef(P, j, p->tb_obj[j - 1]);
+	glp_set_obj_dir(P, dir);
+	p->held = 0;
 	return st;
 }
 

@@ -44,6 +44,8 @@
  */
 #include <gsl/gsl_rng.h>
 #include <math.h>
+#include <pthread.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,6 +58,11 @@
 #define VW_TOL 1e-8
 #define TOL_LIMIT 1e-5
 #define TOL_FACE 1e-9
+/* a reduced cost at or below this may be zero: the optimum may not be
+ * unique, and the tie-break LP runs (docs/method.md) */
+#define TOL_TIE 1e-9
+/* the weight of sum r_j N_j in LP2's objective */
+#define TIE_LP2 1e-6
 
 static const struct {
 	const char *name, *text;
@@ -137,7 +144,12 @@ struct sample_ws {
 	double *dn, *dt;	/* 2m, m: joint rates */
 	int *ind;		/* scratch */
 	double *val;
-	gsl_rng *rng;
+	/* the tie-break weights of this sample ("One answer per sample"):
+	 * r[2k + e] for contact point e of interface k, r[2m + k] for the
+	 * slip of interface k; all in [1, 2), from the positions alone */
+	double *r;
+	double *c2;		/* a tie-break objective (scratch) */
+	enum sample_start start;	/* SLIPWALL_LP_START */
 	struct lp_basis canon[ROLES];	/* see set_points() */
 };
 
@@ -364,6 +376,12 @@ static void canonical_bases(struct sample_ws *ws)
 
 struct sample_ws *sample_ws_new(const struct wall *w)
 {
+	return sample_ws_new_start(w, sample_start());
+}
+
+struct sample_ws *sample_ws_new_start(const struct wall *w,
+				      enum sample_start start)
+{
 	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
 	ws->w = w;
 	statics_init(&ws->st, w);
@@ -377,7 +395,9 @@ struct sample_ws *sample_ws_new(const struct wall *w)
 	ws->dt = sw_xcalloc(m + 1, sizeof(double));
 	ws->ind = sw_xmalloc(sizeof(int) * big);
 	ws->val = sw_xmalloc(sizeof(double) * big);
-	ws->rng = gsl_rng_alloc(gsl_rng_mt19937);
+	ws->r = sw_xcalloc(3 * m + 1, sizeof(double));
+	ws->c2 = sw_xcalloc(4 * m + (size_t)ws->R + 2, sizeof(double));
+	ws->start = start;
 	build(ws);
 	canonical_bases(ws);
 	return ws;
@@ -397,7 +417,8 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->dt);
 	free(ws->ind);
 	free(ws->val);
-	gsl_rng_free(ws->rng);
+	free(ws->r);
+	free(ws->c2);
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
 	free(ws);
@@ -445,29 +466,145 @@ void sample_positions(const struct wall *w, unsigned long seed,
 	gsl_rng_free(r);
 }
 
-/* Place the contact points and choose every problem's starting basis, so
- * that a sample is a function of the wall and its contact points alone,
- * not of the samples this workspace solved before (on these degenerate
- * LPs the starting basis changes the optimal vertex found, hence the
- * stress field, the mechanism and the load).  LP-max and LP1 decide
- * which stress field the SLP follows; they start from GLPK's standard
- * (slack) basis, a neutral start: starting them from the classical
- * solution's bases instead steers nearly every sample of the demo wall
- * to the classical mechanism (p95/p05 = 1.0 instead of 6.7).  The other
- * roles start from the canonical bases of sample_ws_new.  Warm starts
- * then carry every LP of the SLP from one iteration to the next. */
+/* The names of the starts, in enum sample_start's order. */
+static const char *const start_names[SAMPLE_START_COUNT] = {
+	"slack-primal", "slack-dual", "crash", "canonical", "previous",
+};
+
+const char *sample_start_name(enum sample_start s)
+{
+	return (unsigned)s < SAMPLE_START_COUNT ? start_names[s] : "?";
+}
+
+int sample_start_parse(const char *name)
+{
+	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+		if (!strcmp(name, start_names[s]))
+			return s;
+	return -1;
+}
+
+/* SLIPWALL_LP_START, read once (every workspace of the process uses the
+ * same start); an unknown value is the default (main.c refuses it
+ * before anything runs). */
+static pthread_once_t start_once = PTHREAD_ONCE_INIT;
+static enum sample_start start_env = SAMPLE_START_DEFAULT;
+
+static void start_from_env(void)
+{
+	const char *e = getenv("SLIPWALL_LP_START");
+	int s = e && *e ? sample_start_parse(e) : -1;
+	if (s >= 0)
+		start_env = (enum sample_start)s;
+}
+
+enum sample_start sample_start(void)
+{
+	pthread_once(&start_once, start_from_env);
+	return start_env;
+}
+
+/* A 64-bit mix of the bits of x and a salt (splitmix64's finaliser). */
+static uint64_t bits_mix(double x, uint64_t salt)
+{
+	uint64_t z;
+	x += 0.0;	/* -0 and +0 are one position */
+	memcpy(&z, &x, sizeof z);
+	z ^= salt * 0x9e3779b97f4a7c15ULL;
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	return z ^ (z >> 31);
+}
+
+/* A uniform in [1, 2) from 64 bits (the top 53). */
+static double unit_weight(uint64_t z)
+{
+	return 1 + (double)(z >> 11) * 0x1.0p-53;
+}
+
+/* The tie-break weights of the sample at positions xi: a hash of each
+ * point's position and index (so a --positions replay has the same
+ * weights, and the classical contact, where every xi is 0 or 1, still has
+ * distinct ones); a slip's weight hashes both points of its interface. */
+static void tie_weights(struct sample_ws *ws, const double *xi)
+{
+	int m = ws->m;
+	for (int j = 0; j < 2 * m; j++)
+		ws->r[j] = unit_weight(bits_mix(xi[j], (uint64_t)j + 1));
+	for (int k = 0; k < m; k++)
+		ws->r[2 * m + k] = unit_weight(bits_mix(xi[2 * k], 2 * (uint64_t)m + 1 + (uint64_t)k) ^
+					       bits_mix(xi[2 * k + 1], 3 * (uint64_t)m + 1 + (uint64_t)k));
+}
+
+/* LP2's objective: min sum (p + q) + TIE_LP2 sum r_j N_j (the tie-break
+ * of SPEC section 2 folded into LP2's objective: measured, it gives the
+ * lexicographic answer without a second LP per SLP iteration). */
+static void put_lp2_objective(struct sample_ws *ws)
+{
+	for (int k = 0; k < ws->m; k++)
+		for (int e = 0; e < 2; e++)
+			lp_set_obj(ws->lp[LP2], 3 * k + e, TIE_LP2 * ws->r[2 * k + e]);
+}
+
+/* Place the contact points and the tie-break weights, and choose every
+ * problem's starting basis (SLIPWALL_LP_START).  With the tie-breaks a
+ * sample is a function of its contact points alone, whatever the start
+ * (tests/test_start.c checks it); the start only decides how many
+ * pivots it takes.  The default, `canonical`, is the optimal basis of
+ * each role at the classical contact (sample_ws_new): a function of the
+ * wall alone, so that the CSV is byte-identical whatever the thread
+ * count, which `previous` (the basis the thread's last sample left)
+ * cannot promise to the last bit.  Every start but `previous` builds
+ * fresh problems: GLPK's factorisation storage keeps a history that
+ * shows in the last digit of a solution. */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
 	statics_set_points(&ws->st, xi);
-	/* fresh GLPK problems: GLPK's factorisation storage keeps history
-	 * that shows in the last digit of a solution */
-	rebuild(ws);
-	for (int p = 0; p < ROLES; p++) {
-		if (p == AMAX || p == LP1)
-			lp_reset_basis(ws->lp[p]);
-		else
-			lp_basis_load(ws->lp[p], &ws->canon[p]);
+	tie_weights(ws, xi);
+	if (ws->start == SAMPLE_START_PREVIOUS) {
+		for (int j = 0; j < 3 * ws->m; j++)
+			put_column(ws, j);
+		put_kin_objective(ws);
+	} else {
+		rebuild(ws);
 	}
+	put_lp2_objective(ws);
+	for (int p = 0; p < ROLES; p++) {
+		switch (ws->start) {
+		case SAMPLE_START_SLACK_PRIMAL:
+		case SAMPLE_START_SLACK_DUAL:
+			lp_reset_basis(ws->lp[p]);
+			break;
+		case SAMPLE_START_CRASH:
+			lp_crash_basis(ws->lp[p]);
+			break;
+		case SAMPLE_START_CANONICAL:
+			lp_basis_load(ws->lp[p], &ws->canon[p]);
+			break;
+		default:
+			break;
+		}
+	}
+}
+
+/* The tie-break of an associative problem (LP-max, LP-min): of its
+ * optimal stress fields, the one with the least sum r_j N_j (N_j = alpha_j
+ * + beta_j). */
+static enum lp_status assoc_tiebreak(struct sample_ws *ws, struct lp *P,
+				     struct sample_result *r)
+{
+	int m = ws->m, solved;
+	for (int k = 0; k < m; k++)
+		for (int e = 0; e < 2; e++) {
+			ws->c2[ACOL_ALPHA(k, e)] = ws->r[2 * k + e];
+			ws->c2[ACOL_BETA(k, e)] = ws->r[2 * k + e];
+		}
+	ws->c2[ACOL_LAMBDA(ws)] = 0;
+	enum lp_status s = lp_tiebreak(P, ws->c2, TOL_TIE, &solved);
+	r->lps += solved;
+	if (s == LP_ERROR)
+		rebuild(ws);
+	return s;
 }
 
 /* Release LP-min's fixings in amin: back to the plain associative
@@ -505,35 +642,62 @@ static enum sample_status lp_to_sample(enum lp_status s)
 	}
 }
 
-/* Count the LP and handle a dead environment. */
+/* Count the LP and handle a dead environment.  A verdict of "infeasible"
+ * or "unbounded" is not believed from a warm start: it is re-checked by the
+ * primal simplex from the slack basis, a fixed path, whose verdict
+ * stands.  (Measured on Ferris & Tin-Loi wall 2: LP-min, borderline
+ * feasible where a dying normal force is held at 0, was "infeasible" by
+ * the dual simplex from one start and optimal from the others.) */
 static enum lp_status solve(struct sample_ws *ws, struct lp *p,
 			    enum lp_method m, struct sample_result *r)
 {
 	r->lps++;
 	enum lp_status s = lp_solve(p, m);
+	if (s == LP_INFEASIBLE || s == LP_UNBOUNDED) {
+		r->lps++;
+		lp_reset_basis(p);
+		s = lp_solve(p, LP_PRIMAL);
+	}
 	if (s == LP_ERROR)
 		rebuild(ws);
 	return s;
 }
 
 /* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
- * starting capacities in ws->c. */
-static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r)
+ * starting capacities in ws->c, and, if v is not NULL, the duals of its
+ * equilibrium rows in v (the associative mechanism, before the
+ * tie-break replaces them). */
+static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
+				 double *v)
 {
-	/* The primal simplex from the slack basis: LP-max is degenerate,
-	 * and the optimal vertex it reaches decides the SLP's start.  This
-	 * choice reproduces the independent implementation of SPEC section
-	 * 5 on the demo wall (p95/p05 6.7, 7 mechanisms); the dual simplex
-	 * lands on other vertices (p95/p05 2.2) and, on the 1,000-block
-	 * wall, does not finish within GLPK's time limit. */
-	enum lp_status s = solve(ws, ws->lp[AMAX], LP_PRIMAL, r);
+	/* LP-max is degenerate: its optimal stress fields form a face, and
+	 * the tie-break takes the one with the least sum r_j N_j, whatever
+	 * vertex the simplex reached (the SLP's start).  The dual simplex
+	 * from the start's basis, except for `slack-primal`. */
+	struct lp *P = ws->lp[AMAX];
+	enum lp_method m = ws->start == SAMPLE_START_SLACK_PRIMAL ? LP_PRIMAL : LP_DUAL;
+	enum lp_status s = solve(ws, P, m, r);
+	/* A load factor <= 0 is re-checked by the primal simplex from the
+	 * slack basis, as solve() re-checks a "no": the dual simplex has
+	 * returned "optimal" at lambda = 0 where the LP's optimum is
+	 * positive (5 of 1,000 LP-max problems of Ferris & Tin-Loi wall 1
+	 * from the slack basis). */
+	if (s == LP_OPTIMAL && !(lp_obj(P) > TOL_FORCE)) {
+		lp_reset_basis(P);
+		s = solve(ws, P, LP_PRIMAL, r);
+	}
 	if (s != LP_OPTIMAL)
 		return lp_to_sample(s);
-	double lam = lp_obj(ws->lp[AMAX]);
+	double lam = lp_obj(P);
 	r->lambda_lpmax = lam;
 	if (!(lam > TOL_FORCE))
 		return SAMPLE_NONPOSITIVE;
-	assoc_field(ws, ws->lp[AMAX], ws->x);
+	for (int i = 0; v && i < ws->R; i++)
+		v[i] = lp_row_dual(P, i);
+	s = assoc_tiebreak(ws, P, r);
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	assoc_field(ws, P, ws->x);
 	for (int k = 0; k < ws->m; k++)
 		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
 	return SAMPLE_ACCEPTED;
@@ -654,6 +818,35 @@ static enum sample_status slp(struct sample_ws *ws,
 	return SAMPLE_NOT_CONVERGED;
 }
 
+/* The kinematic LP's tie-break: of its least-motion mechanisms, the one
+ * with the least weighted joint motion, sum r_j dn_j + sum r_k |dt_k|
+ * (the opening rates in velocity space: the r-weighted sum of the
+ * normal-force columns of A, as put_kin_objective). */
+static enum lp_status kin_tiebreak(struct sample_ws *ws,
+				   struct sample_result *r)
+{
+	int m = ws->m, solved;
+	double *g = ws->c2;
+	memset(g, 0, sizeof(double) * ((size_t)ws->R + 2 * (size_t)m));
+	for (int j = 0; j < 3 * m; j++) {
+		if (j % 3 == 2)
+			continue;
+		int rows[6];
+		double vals[6];
+		int n = statics_column(&ws->st, j, rows, vals);
+		double wj = ws->r[2 * (j / 3) + j % 3];
+		for (int i = 0; i < n; i++)
+			g[rows[i]] += wj * vals[i];
+	}
+	for (int k = 0; k < m; k++)
+		g[KCOL_SP(ws, k)] = g[KCOL_SM(ws, k)] = ws->r[2 * m + k];
+	enum lp_status s = lp_tiebreak(ws->lp[KIN], g, TOL_TIE, &solved);
+	r->lps += solved;
+	if (s == LP_ERROR)
+		rebuild(ws);
+	return s;
+}
+
 /* Step 3's LP: of the mechanisms whose motions the bounds of KIN allow
  * (its opening rows, its slip columns), the one with the least joint
  * motion for unit work of the live load.  Fills ws->v, ws->dn, ws->dt. */
@@ -664,6 +857,9 @@ static enum sample_status mechanism(struct sample_ws *ws,
 	enum lp_status s = solve(ws, K, LP_DUAL, r);
 	if (s == LP_INFEASIBLE)
 		return SAMPLE_NO_MECHANISM;
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	s = kin_tiebreak(ws, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	for (int i = 0; i < ws->R; i++)
@@ -724,8 +920,10 @@ static double motion_scale(const struct sample_ws *ws)
 }
 
 /* Step 5: LP-min with the yield conditions that the mechanism uses held
- * at their limits.  Leaves the stress field in ws->x. */
-static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
+ * at their limits, by the simplex method m from the basis AMIN holds.
+ * Leaves the stress field in ws->x. */
+static enum sample_status lp_min(struct sample_ws *ws, enum lp_method method,
+				 struct sample_result *r)
 {
 	int m = ws->m;
 	double thr = TOL_MOTION * motion_scale(ws);
@@ -743,10 +941,14 @@ static enum sample_status lp_min(struct sample_ws *ws, struct sample_result *r)
 				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
 		}
 	}
-	enum lp_status s = solve(ws, P, LP_DUAL, r);
+	enum lp_status s = solve(ws, P, method, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	r->lambda_min = lp_obj(P);
+	/* the reported stress field: one of LP-min's optima, by the
+	 * tie-break */
+	if (assoc_tiebreak(ws, P, r) != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
 	assoc_field(ws, P, ws->x);
 	return SAMPLE_ACCEPTED;
 }
@@ -826,11 +1028,27 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 		   struct sample_result *r)
 {
 	double S = ws->st.S;
-	if (st == SAMPLE_ACCEPTED)
-		st = lp_min(ws, r);
 	if (st == SAMPLE_ACCEPTED) {
-		r->vw_residual = virtual_work(ws, r->lambda_min);
-		if (!(r->vw_residual <= VW_TOL))
+		st = lp_min(ws, LP_DUAL, r);
+		if (st == SAMPLE_ACCEPTED)
+			r->vw_residual = virtual_work(ws, r->lambda_min);
+		/* a residual above VW_TOL is the LP's precision (GLPK's
+		 * bound tolerance is 1e-7) as often as a wrong answer: it is
+		 * not believed from a warm start, but re-checked from the
+		 * slack basis (the mechanism, then LP-min by the primal
+		 * simplex), a fixed path (measured: 1.8e-7 from GLPK's crash
+		 * basis, 3e-15 from the slack basis, on one sample of Ferris &
+		 * Tin-Loi wall 2) */
+		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= VW_TOL)) {
+			lp_reset_basis(ws->lp[KIN]);
+			lp_reset_basis(ws->lp[AMIN]);
+			st = mechanism(ws, r);
+			if (st == SAMPLE_ACCEPTED)
+				st = lp_min(ws, LP_PRIMAL, r);
+			if (st == SAMPLE_ACCEPTED)
+				r->vw_residual = virtual_work(ws, r->lambda_min);
+		}
+		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= VW_TOL))
 			st = SAMPLE_NUMERICAL;
 	}
 	if (st == SAMPLE_ACCEPTED)
@@ -845,7 +1063,7 @@ void sample_run(struct sample_ws *ws, const double *xi,
 		const struct sample_opts *o, struct sample_result *r)
 {
 	begin(ws, xi, r);
-	enum sample_status st = lp_max(ws, r);
+	enum sample_status st = lp_max(ws, r, NULL);
 	if (st == SAMPLE_ACCEPTED)
 		st = standing(ws, r);
 	if (st == SAMPLE_ACCEPTED)
@@ -899,24 +1117,23 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 	r->lps = 0;
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
 	set_points(ws, xi);
-	enum sample_status st = lp_max(ws, r);
+	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
+	 * that f_L . v = 1; the stress field: LP-max's, by the tie-break */
+	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
+	enum sample_status st = lp_max(ws, r, v);
 	if (st != SAMPLE_ACCEPTED) {
 		r->lambda_lpmax *= ws->st.S;
+		free(v);
 		return r->status = st;
 	}
-	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
-	 * that f_L . v = 1 */
-	double lam = lp_obj(ws->lp[AMAX]), fl = 0;
-	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));
-	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
-	for (int i = 0; i < ws->R; i++) {
-		v[i] = lp_row_dual(ws->lp[AMAX], i);
+	double fl = 0;
+	for (int i = 0; i < ws->R; i++)
 		fl += ws->st.fL[i] * v[i];
-	}
 	for (int i = 0; i < ws->R && fl != 0; i++)
 		v[i] /= fl;
-	assoc_field(ws, ws->lp[AMAX], x);
-	r->lambda_lpmax = lam * ws->st.S;
+	double *x = sw_xmalloc(sizeof(double) * (3 * (size_t)ws->m + 1));
+	memcpy(x, ws->x, sizeof(double) * 3 * (size_t)ws->m);
+	r->lambda_lpmax *= ws->st.S;
 	st = standing(ws, r);
 	if (st == SAMPLE_ACCEPTED) {
 		sample_export(ws, v, x, r);

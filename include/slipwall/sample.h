@@ -79,8 +79,34 @@ struct sample_result {
 void sample_result_init(struct sample_result *r, const struct wall *w);
 void sample_result_free(struct sample_result *r);
 
+/* Where every LP of a sample starts (SLIPWALL_LP_START, docs/method.md):
+ * the slack basis with LP-max by the primal or the dual simplex, GLPK's
+ * crash basis, the canonical bases (each role's optimal basis at the
+ * classical contact, a function of the wall alone), or the basis the
+ * workspace's previous sample left.  A sample's result does not depend
+ * on it (the tie-breaks of SPEC section 2); its cost does. */
+enum sample_start {
+	SAMPLE_START_SLACK_PRIMAL,
+	SAMPLE_START_SLACK_DUAL,
+	SAMPLE_START_CRASH,
+	SAMPLE_START_CANONICAL,
+	SAMPLE_START_PREVIOUS,
+	SAMPLE_START_COUNT
+};
+#define SAMPLE_START_DEFAULT SAMPLE_START_CANONICAL
+const char *sample_start_name(enum sample_start s);
+/* The start of a name ("slack-primal", ...), or -1. */
+int sample_start_parse(const char *name);
+/* The start every workspace of this process uses: SLIPWALL_LP_START if
+ * it names one, else SAMPLE_START_DEFAULT.  Read once. */
+enum sample_start sample_start(void);
+
 struct sample_ws;
+/* A workspace whose samples start from sample_start(); _start: from
+ * the given start (the path-invariance test). */
 struct sample_ws *sample_ws_new(const struct wall *w);
+struct sample_ws *sample_ws_new_start(const struct wall *w,
+				      enum sample_start start);
 void sample_ws_free(struct sample_ws *ws);
 
 /* The contact positions of sample `index` of a run with `seed`: depend on

@@ -1,0 +1,166 @@
+/*
+ * test_start.c - "One answer per sample" (SPEC section 2): a sample is a
+ * function of its contact positions alone, whatever the LP solver's path.
+ * Every sample is solved by five workspaces that start every LP from a
+ * different basis (SLIPWALL_LP_START's values: the slack basis by the
+ * primal and by the dual simplex, GLPK's crash basis, the canonical
+ * bases, the previous sample's bases), and must give the same status,
+ * the same lambda_min (1e-9 relative) and the same mechanism (the joint
+ * classification of every interface).  Without the tie-breaks, changing
+ * only LP-max's start moved 47-88 % of the demo wall's samples.
+ *
+ * Walls: the demo, Ferris & Tin-Loi 1 and 2 (depth 0.25, the walls'
+ * own seeds), and 200 random small walls, one sample each.
+ */
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/sample.h"
+#include "tap.h"
+#include "walls.h"
+
+/* the starts, the default first: ws[s] starts from start_of[s] */
+static const enum sample_start start_of[SAMPLE_START_COUNT] = {
+	SAMPLE_START_DEFAULT, SAMPLE_START_SLACK_PRIMAL, SAMPLE_START_SLACK_DUAL,
+	SAMPLE_START_CRASH, SAMPLE_START_PREVIOUS,
+};
+
+struct tally {
+	long samples, accepted, status, lambda, mechanism;
+};
+
+/* Sample `index` of w by every start; differences against the first
+ * start (the default, canonical) are counted in t. */
+static void one(struct sample_ws **ws, const struct wall *w,
+		unsigned long seed, unsigned long index, struct tally *t,
+		const char *what)
+{
+	const struct sample_opts *o = NULL;
+	struct sample_opts opts;
+	sample_opts_default(&opts);
+	o = &opts;
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	sample_positions(w, seed, index, -1, xi);
+	struct sample_result ref, r;
+	sample_result_init(&ref, w);
+	sample_result_init(&r, w);
+	sample_run(ws[0], xi, o, &ref);
+	t->samples++;
+	t->accepted += ref.status == SAMPLE_ACCEPTED;
+	for (int s = 1; s < SAMPLE_START_COUNT; s++) {
+		sample_run(ws[s], xi, o, &r);
+		if (r.status != ref.status) {
+			t->status++;
+			tap_diag("%s sample %lu: %s by %s, %s by %s", what, index,
+				 sample_status_name(ref.status),
+				 sample_start_name(SAMPLE_START_DEFAULT),
+				 sample_status_name(r.status),
+				 sample_start_name(start_of[s]));
+			continue;
+		}
+		if (ref.status != SAMPLE_ACCEPTED)
+			continue;
+		if (!(fabs(r.lambda_min - ref.lambda_min) <=
+		      1e-9 * fmax(1, fabs(ref.lambda_min)))) {
+			t->lambda++;
+			tap_diag("%s sample %lu: lambda_min %.12g by %s, %.12g by %s",
+				 what, index, ref.lambda_min,
+				 sample_start_name(SAMPLE_START_DEFAULT),
+				 r.lambda_min, sample_start_name(start_of[s]));
+		}
+		if (strcmp(r.joint, ref.joint)) {
+			t->mechanism++;
+			tap_diag("%s sample %lu: mechanism %s by %s, %s by %s", what,
+				 index, ref.joint,
+				 sample_start_name(SAMPLE_START_DEFAULT), r.joint,
+				 sample_start_name(start_of[s]));
+		}
+	}
+	sample_result_free(&ref);
+	sample_result_free(&r);
+	free(xi);
+}
+
+/* The five workspaces of w, the default start first. */
+static void open_all(struct sample_ws **ws, const struct wall *w)
+{
+	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+		ws[s] = sample_ws_new_start(w, start_of[s]);
+}
+
+static void close_all(struct sample_ws **ws)
+{
+	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+		sample_ws_free(ws[s]);
+}
+
+static void report(const char *what, const struct tally *t)
+{
+	tap_ok(t->status == 0, "%s: %ld samples (%ld accepted), same status "
+	       "from every start (%ld differ)", what, t->samples, t->accepted,
+	       t->status);
+	tap_ok(t->lambda == 0, "%s: same lambda_min (1e-9) from every start "
+	       "(%ld differ)", what, t->lambda);
+	tap_ok(t->mechanism == 0, "%s: same mechanism from every start "
+	       "(%ld differ)", what, t->mechanism);
+}
+
+static void wall_file(const char *path, long n)
+{
+	struct wall *w = tw_load_file(path);
+	struct sample_ws *ws[SAMPLE_START_COUNT];
+	struct tally t = {0};
+	open_all(ws, w);
+	for (long i = 0; i < n; i++)
+		one(ws, w, w->seed, (unsigned long)i, &t, path);
+	close_all(ws);
+	report(path, &t);
+	tap_ok(t.accepted >= n * 9 / 10, "%s: most samples accepted "
+	       "(%ld of %ld)", path, t.accepted, n);
+	wall_free(w);
+}
+
+/* 200 random small walls (as test_sample's properties), one sample
+ * each. */
+static void random_walls(void)
+{
+	gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+	gsl_rng_set(g, 2026);
+	struct tally t = {0};
+	for (int c = 0; c < 200; c++) {
+		double bw = 0.1 + 0.4 * gsl_rng_uniform(g);
+		double bh = bw * (0.2 + 0.8 * gsl_rng_uniform(g));
+		int courses = 1 + (int)gsl_rng_uniform_int(g, 4);
+		int nb = 2 + (int)gsl_rng_uniform_int(g, 3);
+		double mu = 0.3 + 0.6 * gsl_rng_uniform(g);
+		int running = (int)gsl_rng_uniform_int(g, 2);
+		struct wall *w = tw_layout(bw, bh, courses, nb * bw, running,
+					   1, mu);
+		if (gsl_rng_uniform(g) < 0.5)
+			tw_body_load(w);
+		else
+			tw_point_load(w, 0, courses * bh * (0.05 + 0.9 * gsl_rng_uniform(g)), 1, 0);
+		w->depth = 0.5 * gsl_rng_uniform(g);
+		tw_finish(w);
+		struct sample_ws *ws[SAMPLE_START_COUNT];
+		open_all(ws, w);
+		one(ws, w, 7, (unsigned long)c, &t, "random wall");
+		close_all(ws);
+		wall_free(w);
+	}
+	gsl_rng_free(g);
+	report("200 random walls", &t);
+	tap_ok(t.accepted >= 150, "200 random walls: most accepted (%ld)",
+	       t.accepted);
+}
+
+int main(void)
+{
+	wall_file("walls/demo.yaml", 100);
+	wall_file("walls/ferris-tinloi-1.yaml", 100);
+	wall_file("walls/ferris-tinloi-2.yaml", 60);
+	random_walls();
+	return tap_done();
+}
