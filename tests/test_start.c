@@ -107,12 +107,60 @@ static void report(const char *what, const struct tally *t)
 	       "(%ld differ)", what, t->mechanism);
 }
 
+/* The single-solution methods at the classical contact: standard (its
+ * load factor; its mechanism, LP-max's dual, is one of several when
+ * LP-max is primal degenerate) and gilbert (the SLP from the standard
+ * field: lambda_max, lambda_min, mechanism). */
+static void classical(struct sample_ws **ws, const struct wall *w,
+		      const char *path)
+{
+	struct sample_opts o;
+	sample_opts_default(&o);
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	for (int k = 0; k < w->nifaces; k++) {
+		xi[2 * k] = 0;
+		xi[2 * k + 1] = 1;
+	}
+	struct sample_result r;
+	sample_result_init(&r, w);
+	double std[SAMPLE_START_COUNT], gmax[SAMPLE_START_COUNT],
+	       gmin[SAMPLE_START_COUNT];
+	char *mech[SAMPLE_START_COUNT];
+	int st_ok = 1, g_ok = 1, m_ok = 1;
+	for (int s = 0; s < SAMPLE_START_COUNT; s++) {
+		sample_standard(ws[s], xi, &r);
+		std[s] = r.lambda_max;
+		sample_run(ws[s], xi, &o, &r);
+		gmax[s] = r.lambda_max;
+		gmin[s] = r.lambda_min;
+		mech[s] = strdup(r.status == SAMPLE_ACCEPTED ? r.joint : "-");
+		double tol = 1e-9 * fmax(1, fabs(std[0]));
+		st_ok &= fabs(std[s] - std[0]) <= tol;
+		g_ok &= fabs(gmax[s] - gmax[0]) <= 1e-9 * fmax(1, fabs(gmax[0])) &&
+			fabs(gmin[s] - gmin[0]) <= 1e-9 * fmax(1, fabs(gmin[0]));
+		m_ok &= !strcmp(mech[s], mech[0]);
+		if (s)
+			tap_diag("%s: %s: standard %.12g, gilbert %.12g / %.12g",
+				 path, sample_start_name(start_of[s]), std[s],
+				 gmax[s], gmin[s]);
+	}
+	tap_ok(st_ok, "%s: standard %.9g from every start", path, std[0]);
+	tap_ok(g_ok, "%s: gilbert %.9g (onset %.9g) from every start", path,
+	       gmax[0], gmin[0]);
+	tap_ok(m_ok, "%s: gilbert's mechanism from every start", path);
+	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+		free(mech[s]);
+	sample_result_free(&r);
+	free(xi);
+}
+
 static void wall_file(const char *path, long n)
 {
 	struct wall *w = tw_load_file(path);
 	struct sample_ws *ws[SAMPLE_START_COUNT];
 	struct tally t = {0};
 	open_all(ws, w);
+	classical(ws, w, path);
 	for (long i = 0; i < n; i++)
 		one(ws, w, w->seed, (unsigned long)i, &t, path);
 	close_all(ws);
