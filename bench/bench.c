@@ -28,6 +28,7 @@
 #include <time.h>
 
 #include "slipwall/mc.h"
+#include "slipwall/sample.h"
 #include "slipwall/stats.h"
 #include "slipwall/tally.h"
 #include "slipwall/wallfile.h"
@@ -42,7 +43,7 @@ static double now(void)
 static int usage(void)
 {
 	fprintf(stderr, "usage: bench WALL.yaml [-n N] [--threads 1,2,...] "
-		"[--seed S]\n");
+		"[--seed S] [--roles]\n");
 	return 2;
 }
 
@@ -91,14 +92,63 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	return 0;
 }
 
+/* --roles: the cost of each LP role per sample, one thread. */
+static int bench_roles(const struct wall *w, long n, unsigned long seed)
+{
+	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_lp_stats before[SAMPLE_ROLE_COUNT], after[SAMPLE_ROLE_COUNT];
+	sample_ws_stats(ws, before);
+	struct sample_opts o;
+	sample_opts_default(&o);
+	struct sample_result r;
+	sample_result_init(&r, w);
+	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	long accepted = 0, iters = 0;
+	double t0 = now();
+	for (long i = 0; i < n; i++) {
+		sample_positions(w, seed, (unsigned long)i, -1, xi);
+		sample_run(ws, xi, &o, &r);
+		accepted += r.status == SAMPLE_ACCEPTED;
+		iters += r.iterations;
+	}
+	double elapsed = now() - t0;
+	sample_ws_stats(ws, after);
+	double lp_total = 0;
+	for (int k = 0; k < SAMPLE_ROLE_COUNT; k++)
+		lp_total += after[k].seconds - before[k].seconds;
+	printf("start %s: %.2f samples/s (%.3f ms a sample), %ld of %ld "
+	       "accepted, %.1f SLP iterations a sample, %.1f %% of the time "
+	       "inside GLPK\n", sample_start_name(sample_start()),
+	       (double)n / elapsed, 1e3 * elapsed / (double)n, accepted, n,
+	       (double)iters / (double)n, 100 * lp_total / elapsed);
+	printf("%-14s %9s %10s %10s %8s\n", "role", "LPs/smp", "iters/LP",
+	       "us/LP", "share");
+	for (int k = 0; k < SAMPLE_ROLE_COUNT; k++) {
+		double lps = (double)(after[k].lps - before[k].lps);
+		double it = (double)(after[k].iterations - before[k].iterations);
+		double sec = after[k].seconds - before[k].seconds;
+		if (lps == 0)
+			continue;
+		printf("%-14s %9.2f %10.1f %10.1f %7.1f%%\n", sample_role_name(k),
+		       lps / (double)n, it / lps, 1e6 * sec / lps,
+		       lp_total > 0 ? 100 * sec / lp_total : 0.0);
+	}
+	free(xi);
+	sample_result_free(&r);
+	sample_ws_free(ws);
+	return 0;
+}
+
 int main(int argc, char **argv)
 {
 	const char *path = NULL;
 	long n = 200;
 	unsigned long seed = 1;
-	int threads[16] = {1, 2}, nthreads = 2;
+	int threads[16] = {1, 2}, nthreads = 2, roles = 0;
 	for (int i = 1; i < argc; i++) {
-		if (!strcmp(argv[i], "-n") && i + 1 < argc) {
+		if (!strcmp(argv[i], "--roles")) {
+			roles = 1;
+		} else if (!strcmp(argv[i], "-n") && i + 1 < argc) {
 			n = strtol(argv[++i], NULL, 10);
 		} else if (!strcmp(argv[i], "--seed") && i + 1 < argc) {
 			seed = strtoul(argv[++i], NULL, 10);
@@ -132,6 +182,11 @@ int main(int argc, char **argv)
 	}
 	printf("%s: %d blocks (%d free), %d interfaces; %ld samples, seed %lu\n",
 	       path, w->nblocks, w->nfree, w->nifaces, n, seed);
+	if (roles) {
+		int rc = bench_roles(w, n, seed);
+		wall_free(w);
+		return rc;
+	}
 	printf("%-8s %9s %8s %9s %7s %10s %9s %8s %8s %12s\n", "threads",
 	       "samples/s", "accept", "LPs/smp", "held", "iters/LP", "us/LP",
 	       "glpk/smp", "glpk/wall", "p05");

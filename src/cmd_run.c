@@ -46,6 +46,7 @@
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
+#include "slipwall/sample.h"
 #include "slipwall/stats.h"
 #include "slipwall/tally.h"
 
@@ -64,6 +65,7 @@ struct run_args {
 	double depth;		/* < 0: the wall's */
 	double until_ci;	/* 0: off */
 	int json;
+	int slp;		/* --slp: enum sample_slp */
 };
 
 enum stop_reason {
@@ -180,7 +182,8 @@ static void usage(FILE *f)
 	fprintf(f,
 		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
 		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
-		"                    [--depth D] [--until-ci W] [--json]\n"
+		"                    [--depth D] [--until-ci W] [--slp plain]\n"
+		"                    [--json]\n"
 		"\n"
 		"Monte Carlo analysis (SPEC section 2): N samples of the collapse\n"
 		"load with random contact points, their statistics and mechanisms.\n"
@@ -194,6 +197,9 @@ static void usage(FILE *f)
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
 		"                       than W times p05 (at most N samples)\n"
+		"  --slp plain          the SLP's plain iteration, without the\n"
+		"                       acceleration that is the default (the same\n"
+		"                       fixed point, for comparison)\n"
 		"  --json               print the summary as JSON\n"
 		"\n"
 		"Ctrl-C stops cleanly: the summary of the samples done, exit status 1.\n");
@@ -205,6 +211,7 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
+	a->slp = SAMPLE_SLP_ANDERSON;
 	for (int i = 1; i < argc; i++) {
 		const char *s = argv[i], *v;
 		int missing = 0, sr;
@@ -227,6 +234,14 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 			if (!*v)
 				return cli_usage_error(CMD, "--positions: empty file name");
 			a->positions = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--slp", &missing))) {
+			if (!strcmp(v, "plain"))
+				a->slp = SAMPLE_SLP_PLAIN;
+			else if (!strcmp(v, "anderson"))
+				a->slp = SAMPLE_SLP_ANDERSON;
+			else
+				return cli_usage_error(CMD, "--slp: '%s' is not "
+						       "plain or anderson", v);
 		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
 			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
 				return cli_usage_error(CMD, "--until-ci: '%s' is not "
@@ -525,6 +540,10 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_string(&j, r->a->samples);
 	else
 		json_null(&j);
+	/* where every LP started (SLIPWALL_LP_START): not the results,
+	 * which are the same from every start, but their cost */
+	json_key(&j, "lp_start");
+	json_string(&j, sample_start_name(sample_start()));
 	/* timing: the only fields that change from run to run */
 	json_key(&j, "elapsed_seconds");
 	json_double(&j, r->elapsed);
@@ -624,6 +643,7 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	char err[SW_ERRLEN];
 	struct mc_config *cfg = &s->cfg;
 	mc_config_default(cfg, w);
+	cfg->opts.slp = (enum sample_slp)a->slp;
 	if (a->positions) {
 		long rows;
 		if (runlog_read_positions(a->positions, w, &s->replay, &rows,

@@ -616,6 +616,18 @@ void lp_basis_load(struct lp *p, const struct lp_basis *b)
 		glp_set_col_stat(p->P, j + 1, b->stat[p->nrows + j]);
 }
 
+unsigned long lp_basis_hash(const struct lp *p)
+{
+	if (!alive(p))
+		return 0;
+	unsigned long long h = 1469598103934665603ULL;	/* FNV-1a */
+	for (int i = 1; i <= p->nrows; i++)
+		h = (h ^ (unsigned)glp_get_row_stat(p->P, i)) * 1099511628211ULL;
+	for (int j = 1; j <= p->ncols; j++)
+		h = (h ^ (unsigned)glp_get_col_stat(p->P, j)) * 1099511628211ULL;
+	return (unsigned long)h;
+}
+
 void lp_basis_free(struct lp_basis *b)
 {
 	free(b->stat);

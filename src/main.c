@@ -6,9 +6,11 @@
  */
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "slipwall/sample.h"
 
 static const struct {
 	const char *name;
@@ -51,8 +53,24 @@ static int finish(int rc)
 	return rc;
 }
 
+/* SLIPWALL_LP_START (docs/method.md) must name a start: a misspelt one
+ * would silently run the default. */
+static int check_environment(void)
+{
+	const char *e = getenv("SLIPWALL_LP_START");
+	if (e && *e && sample_start_parse(e) < 0) {
+		fprintf(stderr, "slipwall: SLIPWALL_LP_START='%s': not a start; "
+			"use slack-primal, slack-dual, crash, canonical or "
+			"previous\n", e);
+		return 0;
+	}
+	return 1;
+}
+
 int main(int argc, char **argv)
 {
+	if (!check_environment())
+		return 2;
 	if (argc >= 2) {
 		const char *a = argv[1];
 		if (!strcmp(a, "--help") || !strcmp(a, "-h") || !strcmp(a, "help")) {

@@ -1,13 +1,19 @@
 /*
  * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
  *
- * Five GLPK problems per wall and thread, one per LP role, built once and
- * warm-started (presolve off) for every LP of every sample.  Between two
- * solves of one role only bounds change, so GLPK keeps its basis and its
- * factorisation; only what depends on the contact points (the moment
- * coefficients of the normal-force columns and of the opening-rate rows)
- * is rewritten per sample.  All quantities are in the scaled units of
- * statics.h; results are converted at the end.
+ * Six GLPK problems per wall and thread, one per LP role.  Each sample
+ * writes what its contact points change (the moment coefficients of the
+ * normal-force columns and of the opening-rate rows) into fresh problems
+ * (into the same ones for the `previous` start) and starts every role
+ * from the basis SLIPWALL_LP_START names (set_points); within a sample
+ * only bounds change between two solves of a role, so each is a warm
+ * start (presolve off).  Wherever an LP's optimum is not unique, the
+ * sample takes the optimal solution with the least weighted sum of its
+ * normal forces (or, for the kinematic LP, joint rates), the weights
+ * hashed from the contact positions: "One answer per sample", so that
+ * the result does not depend on the start (docs/method.md).  All
+ * quantities are in the scaled units of statics.h; results are
+ * converted at the end.
  *
  *   AMAX, STAND, AMIN  rows: equilibrium (3 per free block) only
  *               cols: the force at each contact point in the edge
@@ -42,6 +48,7 @@
  * TOL_MOTION times the largest rate of the mechanism.  docs/method.md
  * says why.
  */
+#include <gsl/gsl_linalg.h>
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <pthread.h>
@@ -61,6 +68,16 @@
 /* a reduced cost at or below this may be zero: the optimum may not be
  * unique, and the tie-break LP runs (docs/method.md) */
 #define TOL_TIE 1e-9
+/* the SLP's acceleration (slp()): iterations on one affine piece before
+ * Anderson's steps, and their memory */
+#define SLP_SETTLE 2
+#define SLP_MEMORY 4
+/* Anderson's steps of one sample at most; then the plain iteration
+ * again from the start (a sample of the demo wall cycled for 1,000
+ * iterations between accelerated and plain steps where the plain
+ * iteration converges in 84; going on plainly from where it was, it
+ * converged to another fixed point) */
+#define SLP_TRIES 50
 /* the weight of sum r_j N_j in LP2's objective (put_lp2_objective) */
 #define TIE_LP2 1e-4
 
@@ -101,6 +118,7 @@ void sample_opts_default(struct sample_opts *o)
 	o->max_iter = 1000;
 	o->tol = 1e-7;
 	o->stabilise = 1;
+	o->slp = SAMPLE_SLP_ANDERSON;
 }
 
 void sample_result_init(struct sample_result *r, const struct wall *w)
@@ -130,6 +148,15 @@ void sample_result_free(struct sample_result *r)
 
 /* The LP roles of a sample, one GLPK problem each (see the top). */
 enum role { AMAX, STAND, AMIN, LP1, LP2, KIN, ROLES };
+/* sample.h's roles are these, then each one's tie-break */
+_Static_assert(SAMPLE_ROLE_COUNT == 2 * ROLES, "roles");
+
+/* Anderson mixing of the SLP (slp()): the last few iterates of one
+ * affine piece, and the least-squares step they give. */
+struct slp_history {
+	int len;		/* iterates held, <= SLP_MEMORY + 1 */
+	double *c[SLP_MEMORY + 1], *f[SLP_MEMORY + 1];	/* c_i, N(c_i) - c_i */
+};
 
 struct sample_ws {
 	const struct wall *w;
@@ -139,6 +166,8 @@ struct sample_ws {
 	 * solves of a role only bounds change and GLPK keeps its basis */
 	struct lp *lp[ROLES];
 	double *c;		/* m: SLP capacities (sum of normal forces) */
+	struct slp_history hist;	/* slp()'s Anderson memory */
+	double *c0;		/* m: the SLP's start, for slp()'s restart */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */
 	double *dn, *dt;	/* 2m, m: joint rates */
@@ -150,6 +179,8 @@ struct sample_ws {
 	double *r;
 	double *c2;		/* a tie-break objective (scratch) */
 	enum sample_start start;	/* SLIPWALL_LP_START */
+	/* LPs by role, since the workspace was made (sample_ws_stats) */
+	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];
 	struct lp_basis canon[ROLES];	/* see set_points() */
 };
 
@@ -389,6 +420,11 @@ struct sample_ws *sample_ws_new_start(const struct wall *w,
 	ws->R = ws->st.nrows;
 	size_t m = (size_t)ws->m, big = 3 * m + (size_t)ws->R + 16;
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
+	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
+	for (int i = 0; i <= SLP_MEMORY; i++) {
+		ws->hist.c[i] = sw_xcalloc(m + 1, sizeof(double));
+		ws->hist.f[i] = sw_xcalloc(m + 1, sizeof(double));
+	}
 	ws->x = sw_xcalloc(3 * m + 1, sizeof(double));
 	ws->v = sw_xcalloc((size_t)ws->R + 1, sizeof(double));
 	ws->dn = sw_xcalloc(2 * m + 1, sizeof(double));
@@ -411,6 +447,11 @@ void sample_ws_free(struct sample_ws *ws)
 		lp_free(ws->lp[p]);
 	statics_free(&ws->st);
 	free(ws->c);
+	free(ws->c0);
+	for (int i = 0; i <= SLP_MEMORY; i++) {
+		free(ws->hist.c[i]);
+		free(ws->hist.f[i]);
+	}
 	free(ws->x);
 	free(ws->v);
 	free(ws->dn);
@@ -464,6 +505,54 @@ void sample_positions(const struct wall *w, unsigned long seed,
 		}
 	}
 	gsl_rng_free(r);
+}
+
+/* One LP of role `role` (or of its tie-break: role + ROLES), counted in
+ * r and in the workspace's statistics; the problem is rebuilt after a
+ * GLPK error. */
+static enum lp_status counted(struct sample_ws *ws, int role, enum lp_method m,
+			      const double *c2, struct sample_result *r)
+{
+	long s0, it0, h0, s1, it1, h1;
+	double t0 = lp_thread_seconds();
+	lp_thread_counters(&s0, &it0, &h0);
+	int solved = 1;
+	struct lp *p = ws->lp[role % ROLES];
+	enum lp_status s = c2 ? lp_tiebreak(p, c2, TOL_TIE, &solved)
+			      : lp_solve(p, m);
+	lp_thread_counters(&s1, &it1, &h1);
+	struct sample_lp_stats *st = &ws->stats[role];
+	st->lps += s1 - s0;
+	st->iterations += it1 - it0;
+	st->seconds += lp_thread_seconds() - t0;
+	r->lps += solved;
+	if (s == LP_ERROR)
+		rebuild(ws);
+	return s;
+}
+
+/* Count the LP and handle a dead environment.  A verdict of "infeasible"
+ * or "unbounded" is not believed from a warm start: it is re-checked by the
+ * primal simplex from the slack basis, a fixed path, whose verdict
+ * stands.  (Measured on Ferris & Tin-Loi wall 2: LP-min, borderline
+ * feasible where a dying normal force is held at 0, was "infeasible" by
+ * the dual simplex from one start and optimal from the others.) */
+static enum lp_status solve(struct sample_ws *ws, enum role role,
+			    enum lp_method m, struct sample_result *r)
+{
+	enum lp_status s = counted(ws, role, m, NULL, r);
+	if (s == LP_INFEASIBLE || s == LP_UNBOUNDED) {
+		lp_reset_basis(ws->lp[role]);
+		s = counted(ws, role, LP_PRIMAL, NULL, r);
+	}
+	return s;
+}
+
+/* The tie-break of role's optimum with the objective c2 (lp_tiebreak). */
+static enum lp_status tiebreak(struct sample_ws *ws, enum role role,
+			       const double *c2, struct sample_result *r)
+{
+	return counted(ws, role + ROLES, LP_PRIMAL, c2, r);
 }
 
 /* The names of the starts, in enum sample_start's order. */
@@ -565,20 +654,20 @@ static void put_lp2_objective(struct sample_ws *ws)
  * each role at the classical contact (sample_ws_new): a function of the
  * wall alone, so that the CSV is byte-identical whatever the thread
  * count, which `previous` (the basis the thread's last sample left)
- * cannot promise to the last bit.  Every start but `previous` builds
- * fresh problems: GLPK's factorisation storage keeps a history that
- * shows in the last digit of a solution. */
+ * cannot promise to the last bit.  The problems are built once; every
+ * sample rewrites all the columns (rows, for KIN) that the points
+ * change, always in the same order: GLPK keeps each row's elements in
+ * the order they were written, its factorisation's pivot search follows
+ * that order, and the order after a full rewrite is the same whatever
+ * was written before (writing a column twice moved 15 of 200 demo
+ * samples to other optimal vertices, before the tie-breaks). */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
 	statics_set_points(&ws->st, xi);
 	tie_weights(ws, xi);
-	if (ws->start == SAMPLE_START_PREVIOUS) {
-		for (int j = 0; j < 3 * ws->m; j++)
-			put_column(ws, j);
-		put_kin_objective(ws);
-	} else {
-		rebuild(ws);
-	}
+	for (int j = 0; j < 3 * ws->m; j++)
+		put_column(ws, j);
+	put_kin_objective(ws);
 	put_lp2_objective(ws);
 	for (int p = 0; p < ROLES; p++) {
 		switch (ws->start) {
@@ -601,21 +690,17 @@ static void set_points(struct sample_ws *ws, const double *xi)
 /* The tie-break of an associative problem (LP-max, LP-min): of its
  * optimal stress fields, the one with the least sum r_j N_j (N_j = alpha_j
  * + beta_j). */
-static enum lp_status assoc_tiebreak(struct sample_ws *ws, struct lp *P,
+static enum lp_status assoc_tiebreak(struct sample_ws *ws, enum role role,
 				     struct sample_result *r)
 {
-	int m = ws->m, solved;
+	int m = ws->m;
 	for (int k = 0; k < m; k++)
 		for (int e = 0; e < 2; e++) {
 			ws->c2[ACOL_ALPHA(k, e)] = ws->r[2 * k + e];
 			ws->c2[ACOL_BETA(k, e)] = ws->r[2 * k + e];
 		}
 	ws->c2[ACOL_LAMBDA(ws)] = 0;
-	enum lp_status s = lp_tiebreak(P, ws->c2, TOL_TIE, &solved);
-	r->lps += solved;
-	if (s == LP_ERROR)
-		rebuild(ws);
-	return s;
+	return tiebreak(ws, role, ws->c2, r);
 }
 
 /* Release LP-min's fixings in amin: back to the plain associative
@@ -653,27 +738,6 @@ static enum sample_status lp_to_sample(enum lp_status s)
 	}
 }
 
-/* Count the LP and handle a dead environment.  A verdict of "infeasible"
- * or "unbounded" is not believed from a warm start: it is re-checked by the
- * primal simplex from the slack basis, a fixed path, whose verdict
- * stands.  (Measured on Ferris & Tin-Loi wall 2: LP-min, borderline
- * feasible where a dying normal force is held at 0, was "infeasible" by
- * the dual simplex from one start and optimal from the others.) */
-static enum lp_status solve(struct sample_ws *ws, struct lp *p,
-			    enum lp_method m, struct sample_result *r)
-{
-	r->lps++;
-	enum lp_status s = lp_solve(p, m);
-	if (s == LP_INFEASIBLE || s == LP_UNBOUNDED) {
-		r->lps++;
-		lp_reset_basis(p);
-		s = lp_solve(p, LP_PRIMAL);
-	}
-	if (s == LP_ERROR)
-		rebuild(ws);
-	return s;
-}
-
 /* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
  * starting capacities in ws->c, and, if v is not NULL, the duals of its
  * equilibrium rows in v (the associative mechanism, before the
@@ -687,7 +751,7 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 	 * from the start's basis, except for `slack-primal`. */
 	struct lp *P = ws->lp[AMAX];
 	enum lp_method m = ws->start == SAMPLE_START_SLACK_PRIMAL ? LP_PRIMAL : LP_DUAL;
-	enum lp_status s = solve(ws, P, m, r);
+	enum lp_status s = solve(ws, AMAX, m, r);
 	/* A load factor <= 0 is re-checked by the primal simplex from the
 	 * slack basis, as solve() re-checks a "no": the dual simplex has
 	 * returned "optimal" at lambda = 0 where the LP's optimum is
@@ -695,7 +759,7 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 	 * from the slack basis). */
 	if (s == LP_OPTIMAL && !(lp_obj(P) > TOL_FORCE)) {
 		lp_reset_basis(P);
-		s = solve(ws, P, LP_PRIMAL, r);
+		s = solve(ws, AMAX, LP_PRIMAL, r);
 	}
 	if (s != LP_OPTIMAL)
 		return lp_to_sample(s);
@@ -705,7 +769,7 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 		return SAMPLE_NONPOSITIVE;
 	for (int i = 0; v && i < ws->R; i++)
 		v[i] = lp_row_dual(P, i);
-	s = assoc_tiebreak(ws, P, r);
+	s = assoc_tiebreak(ws, AMAX, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	assoc_field(ws, P, ws->x);
@@ -724,7 +788,7 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 static enum sample_status standing(struct sample_ws *ws,
 				   struct sample_result *r)
 {
-	enum lp_status s = solve(ws, ws->lp[STAND], LP_PRIMAL, r);
+	enum lp_status s = solve(ws, STAND, LP_PRIMAL, r);
 	if (s == LP_OPTIMAL)
 		return SAMPLE_ACCEPTED;
 	return s == LP_INFEASIBLE ? SAMPLE_UNSTABLE : SAMPLE_NUMERICAL;
@@ -768,70 +832,191 @@ static void face_bounds(struct sample_ws *ws)
  * least sum r_j N_j on its optimal face. */
 static enum lp_status lp2_tiebreak(struct sample_ws *ws, struct sample_result *r)
 {
-	int m = ws->m, solved;
+	int m = ws->m;
 	memset(ws->c2, 0, sizeof(double) * (5 * (size_t)m + 1));
 	for (int k = 0; k < m; k++)
 		for (int e = 0; e < 2; e++)
 			ws->c2[3 * k + e] = ws->r[2 * k + e];
-	enum lp_status s = lp_tiebreak(ws->lp[LP2], ws->c2, TOL_TIE, &solved);
-	r->lps += solved;
-	if (s == LP_ERROR)
-		rebuild(ws);
-	return s;
+	return tiebreak(ws, LP2, ws->c2, r);
 }
 
 /* Step 2b: the stabilised SLP from the capacities in ws->c.  Leaves the
  * converged stress field in ws->x and the load factor in r->lambda_max. */
+/* One evaluation of the SLP's map at the capacities ws->c: LP1, and LP2
+ * unless LP1's optimum is unique.  Leaves N(c)'s stress field in ws->x,
+ * the load factor in *lam and max_k |N_k - c_k| in *diff. */
+static enum sample_status slp_map(struct sample_ws *ws,
+				  const struct sample_opts *o,
+				  struct sample_result *r, double *lam,
+				  double *diff)
+{
+	int m = ws->m;
+	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
+	for (int k = 0; k < m; k++)
+		lp_set_col_bounds(P, 3 * k + 2, -capacity(ws, k), capacity(ws, k));
+	/* LP1: the maximum load with fixed capacities (only bounds changed
+	 * since the last LP1: a few dual simplex pivots) */
+	enum lp_status s = solve(ws, LP1, LP_DUAL, r);
+	if (s == LP_UNBOUNDED)
+		return SAMPLE_UNBOUNDED;
+	if (s == LP_INFEASIBLE)
+		return SAMPLE_NOT_CONVERGED;
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	*lam = lp_obj(P);
+	struct lp *X = P;	/* where the stress field is read */
+	/* LP2: of the optimal stress fields, the one whose normal forces
+	 * are closest (L1) to c; skipped when LP1's optimal face is a single
+	 * point.  Only bounds change between two LP2s, so the dual simplex
+	 * from LP2's own last basis is short (the primal simplex from LP1's
+	 * optimum walks the degenerate face for hundreds of pivots). */
+	if (o->stabilise && !lp_unique(P, TOL_FACE)) {
+		face_bounds(ws);
+		s = solve(ws, LP2, LP_DUAL, r);
+		if (s != LP_OPTIMAL)
+			return SAMPLE_NUMERICAL;
+		if (lp2_tiebreak(ws, r) != LP_OPTIMAL)
+			return SAMPLE_NUMERICAL;
+		/* on the face the load is LP1's but for the columns whose
+		 * reduced costs count as zero (measured: 2e-9) */
+		double lam2 = lp_col(Q, COL_LAMBDA(ws));
+		if (!(fabs(lam2 - *lam) <= o->tol * fmax(1, fabs(*lam))))
+			return SAMPLE_NUMERICAL;
+		*lam = lam2;
+		X = Q;
+	}
+	*diff = 0;
+	for (int j = 0; j < 3 * m; j++)
+		ws->x[j] = lp_col(X, j);
+	for (int k = 0; k < m; k++)
+		*diff = fmax(*diff, fabs(ws->x[3 * k] + ws->x[3 * k + 1] - ws->c[k]));
+	return SAMPLE_ACCEPTED;
+}
+
+/* The bases LP1 and LP2 ended at: while they stay, the SLP's map is one
+ * affine piece. */
+static unsigned long slp_piece(const struct sample_ws *ws)
+{
+	return lp_basis_hash(ws->lp[LP1]) * 31 + lp_basis_hash(ws->lp[LP2]);
+}
+
+
+/* The Anderson step (type II) from the iterates of h, the newest last:
+ * gamma minimises |f_t - dF gamma| (dF's columns f_{i+1} - f_i; GSL's QR
+ * least squares), and c <- c_t + omega f_t - (dC + omega dF) gamma.  On
+ * an affine piece N(c) = P c + q this is GMRES on (I - P) c = q: exact
+ * once the memory spans the residuals' Krylov space.  Returns 0 (and
+ * leaves c alone) if the least-squares problem is degenerate. */
+static int anderson_step(struct sample_ws *ws, const struct slp_history *h,
+			 double omega, double *c)
+{
+	int m = ws->m, k = h->len - 1, t = h->len - 1;
+	gsl_matrix *A = gsl_matrix_alloc((size_t)m, (size_t)k);
+	gsl_vector *b = gsl_vector_alloc((size_t)m), *tau = gsl_vector_alloc((size_t)k);
+	gsl_vector *g = gsl_vector_alloc((size_t)k), *res = gsl_vector_alloc((size_t)m);
+	for (int i = 0; i < m; i++) {
+		gsl_vector_set(b, (size_t)i, h->f[t][i]);
+		for (int j = 0; j < k; j++)
+			gsl_matrix_set(A, (size_t)i, (size_t)j, h->f[j + 1][i] - h->f[j][i]);
+	}
+	int ok = gsl_linalg_QR_decomp(A, tau) == 0;
+	for (int j = 0; ok && j < k; j++)	/* a rank-deficient memory */
+		ok = fabs(gsl_matrix_get(A, (size_t)j, (size_t)j)) > 1e-12;
+	ok = ok && gsl_linalg_QR_lssolve(A, tau, b, g, res) == 0;
+	for (int i = 0; ok && i < m; i++) {
+		double v = h->c[t][i] + omega * h->f[t][i];
+		for (int j = 0; j < k; j++) {
+			double dc = h->c[j + 1][i] - h->c[j][i];
+			double df = h->f[j + 1][i] - h->f[j][i];
+			v -= (dc + omega * df) * gsl_vector_get(g, (size_t)j);
+		}
+		c[i] = v;
+	}
+	gsl_matrix_free(A);
+	gsl_vector_free(b);
+	gsl_vector_free(tau);
+	gsl_vector_free(g);
+	gsl_vector_free(res);
+	return ok;
+}
+
+/* Add (c, N(c) - c) to h, dropping the oldest iterate when it is full. */
+static void history_push(struct slp_history *h, const struct sample_ws *ws)
+{
+	int m = ws->m;
+	if (h->len == SLP_MEMORY + 1) {
+		double *c0 = h->c[0], *f0 = h->f[0];
+		for (int i = 0; i < SLP_MEMORY; i++) {
+			h->c[i] = h->c[i + 1];
+			h->f[i] = h->f[i + 1];
+		}
+		h->c[SLP_MEMORY] = c0;
+		h->f[SLP_MEMORY] = f0;
+		h->len--;
+	}
+	for (int k = 0; k < m; k++) {
+		h->c[h->len][k] = ws->c[k];
+		h->f[h->len][k] = ws->x[3 * k] + ws->x[3 * k + 1] - ws->c[k];
+	}
+	h->len++;
+}
+
+/* Step 2b: the stabilised SLP from the capacities in ws->c.  The plain
+ * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN).
+ * The default accelerates it.  While LP1 and LP2 end at the same bases,
+ * the map is one affine piece N(c) = P c + q, and the plain iteration
+ * converges on it linearly (rate 1 - omega (1 - rho(P)), about 0.75 on
+ * Ferris & Tin-Loi wall 1: 20-30 iterations for the last digits).  After
+ * SLP_SETTLE iterations on one piece, the steps are Anderson's (memory
+ * SLP_MEMORY, iterates of this piece only), which on an affine map reach
+ * its fixed point in a few steps.  A step that does not shrink the
+ * residual max |N - c| is undone: the plain step from the last accepted
+ * iterate is taken instead and the memory cleared.  (The landing point
+ * itself is often on another piece - the limit lies on a boundary, where
+ * a dying force reaches 0 - so "same piece" is not required of it.)
+ * After SLP_TRIES accelerated steps without convergence, the plain
+ * iteration starts again from LP-max's capacities (the iterations count
+ * on).
+ * docs/method.md has the measured agreement with the plain iteration.
+ * Leaves the converged stress field in ws->x and the load factor in
+ * r->lambda_max. */
 static enum sample_status slp(struct sample_ws *ws,
 			      const struct sample_opts *o,
 			      struct sample_result *r)
 {
-	int m = ws->m;
-	double lam_prev = NAN;
-	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
+	int m = ws->m, settled = 0, trial = 0, tries = 0;
+	double lam_prev = NAN, lam, diff, diff_prev = HUGE_VAL;
+	unsigned long piece = 0;
+	struct slp_history *h = &ws->hist;
+	h->len = 0;
+	int accel = o->slp == SAMPLE_SLP_ANDERSON;
+	if (accel)	/* the start, for a plain restart */
+		memcpy(ws->c0, ws->c, sizeof(double) * (size_t)m);
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
-		for (int k = 0; k < m; k++)
-			lp_set_col_bounds(P, 3 * k + 2, -capacity(ws, k),
-					  capacity(ws, k));
-		/* LP1: the maximum load with fixed capacities (only bounds
-		 * changed since the last LP1: a few dual simplex pivots) */
-		enum lp_status s = solve(ws, P, LP_DUAL, r);
-		if (s == LP_UNBOUNDED)
-			return SAMPLE_UNBOUNDED;
-		if (s == LP_INFEASIBLE)
-			return SAMPLE_NOT_CONVERGED;
-		if (s != LP_OPTIMAL)
-			return SAMPLE_NUMERICAL;
-		double lam = lp_obj(P);
-		struct lp *X = P;	/* where the stress field is read */
-		/* LP2: of the optimal stress fields, the one whose normal
-		 * forces are closest (L1) to c; skipped when LP1's optimal
-		 * face is a single point.  Only bounds change between two
-		 * LP2s, so the dual simplex from LP2's own last basis is
-		 * short (the primal simplex from LP1's optimum walks the
-		 * degenerate face for hundreds of pivots). */
-		if (o->stabilise && !lp_unique(P, TOL_FACE)) {
-			face_bounds(ws);
-			s = solve(ws, Q, LP_DUAL, r);
-			if (s != LP_OPTIMAL)
-				return SAMPLE_NUMERICAL;
-			if (lp2_tiebreak(ws, r) != LP_OPTIMAL)
-				return SAMPLE_NUMERICAL;
-			/* on the face the load is LP1's but for the columns
-			 * whose reduced costs count as zero (measured: 2e-9) */
-			double lam2 = lp_col(Q, COL_LAMBDA(ws));
-			if (!(fabs(lam2 - lam) <= o->tol * fmax(1, fabs(lam))))
-				return SAMPLE_NUMERICAL;
-			lam = lam2;
-			X = Q;
+		if (accel && tries == SLP_TRIES) {
+			/* no convergence within the accelerated steps: the
+			 * plain iteration from the start, so that the sample
+			 * reaches the plain iteration's fixed point */
+			memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
+			accel = 0;
+			trial = 0;
+			lam_prev = NAN;
 		}
-		double diff = 0;
-		for (int j = 0; j < 3 * m; j++)
-			ws->x[j] = lp_col(X, j);
-		for (int k = 0; k < m; k++) {
-			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
-			diff = fmax(diff, fabs(nk - ws->c[k]));
+		enum sample_status st = slp_map(ws, o, r, &lam, &diff);
+		if (st != SAMPLE_ACCEPTED)
+			return st;
+		unsigned long pc = slp_piece(ws);
+		if (trial && !(diff < diff_prev)) {
+			/* undo the accelerated step: back to the last
+			 * accepted iterate, then its plain step */
+			memcpy(ws->c, h->c[h->len - 1], sizeof(double) * (size_t)m);
+			for (int k = 0; k < m; k++)
+				ws->c[k] += o->omega * h->f[h->len - 1][k];
+			h->len = 0;
+			settled = 0;
+			trial = 0;
+			continue;
 		}
 		r->lambda_max = lam;
 		if (diff < o->tol && fabs(lam - lam_prev) < o->tol * fmax(1, fabs(lam))) {
@@ -839,6 +1024,19 @@ static enum sample_status slp(struct sample_ws *ws,
 			return SAMPLE_ACCEPTED;
 		}
 		lam_prev = lam;
+		diff_prev = diff;
+		if (pc != piece)
+			h->len = 0;
+		settled = pc == piece ? settled + 1 : 0;
+		piece = pc;
+		history_push(h, ws);
+		trial = 0;
+		if (accel && settled >= SLP_SETTLE && h->len >= 2 &&
+		    anderson_step(ws, h, o->omega, ws->c)) {
+			trial = 1;
+			tries++;
+			continue;
+		}
 		for (int k = 0; k < m; k++) {
 			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
 			ws->c[k] += o->omega * (nk - ws->c[k]);
@@ -854,7 +1052,7 @@ static enum sample_status slp(struct sample_ws *ws,
 static enum lp_status kin_tiebreak(struct sample_ws *ws,
 				   struct sample_result *r)
 {
-	int m = ws->m, solved;
+	int m = ws->m;
 	double *g = ws->c2;
 	memset(g, 0, sizeof(double) * ((size_t)ws->R + 2 * (size_t)m));
 	for (int j = 0; j < 3 * m; j++) {
@@ -869,11 +1067,7 @@ static enum lp_status kin_tiebreak(struct sample_ws *ws,
 	}
 	for (int k = 0; k < m; k++)
 		g[KCOL_SP(ws, k)] = g[KCOL_SM(ws, k)] = ws->r[2 * m + k];
-	enum lp_status s = lp_tiebreak(ws->lp[KIN], g, TOL_TIE, &solved);
-	r->lps += solved;
-	if (s == LP_ERROR)
-		rebuild(ws);
-	return s;
+	return tiebreak(ws, KIN, g, r);
 }
 
 /* Step 3's LP: of the mechanisms whose motions the bounds of KIN allow
@@ -883,7 +1077,7 @@ static enum sample_status mechanism(struct sample_ws *ws,
 				    struct sample_result *r)
 {
 	struct lp *K = ws->lp[KIN];
-	enum lp_status s = solve(ws, K, LP_DUAL, r);
+	enum lp_status s = solve(ws, KIN, LP_DUAL, r);
 	if (s == LP_INFEASIBLE)
 		return SAMPLE_NO_MECHANISM;
 	if (s != LP_OPTIMAL)
@@ -970,13 +1164,13 @@ static enum sample_status lp_min(struct sample_ws *ws, enum lp_method method,
 				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
 		}
 	}
-	enum lp_status s = solve(ws, P, method, r);
+	enum lp_status s = solve(ws, AMIN, method, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	r->lambda_min = lp_obj(P);
 	/* the reported stress field: one of LP-min's optima, by the
 	 * tie-break */
-	if (assoc_tiebreak(ws, P, r) != LP_OPTIMAL)
+	if (assoc_tiebreak(ws, AMIN, r) != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	assoc_field(ws, P, ws->x);
 	return SAMPLE_ACCEPTED;
@@ -1171,4 +1365,21 @@ enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 	free(v);
 	free(x);
 	return r->status = st;
+}
+
+static const char *const role_names[SAMPLE_ROLE_COUNT] = {
+	"LP-max", "standing", "LP-min", "LP1", "LP2", "kinematic",
+	"LP-max tie", "standing tie", "LP-min tie", "LP1 tie", "LP2 tie",
+	"kinematic tie",
+};
+
+const char *sample_role_name(int role)
+{
+	return role >= 0 && role < SAMPLE_ROLE_COUNT ? role_names[role] : "?";
+}
+
+void sample_ws_stats(const struct sample_ws *ws,
+		     struct sample_lp_stats out[SAMPLE_ROLE_COUNT])
+{
+	memcpy(out, ws->stats, sizeof ws->stats);
 }

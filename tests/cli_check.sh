@@ -10,27 +10,28 @@ ok_if() { if [ "$1" = 0 ]; then ok "$2"; else not_ok "$2"; fi; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# The demo wall by hand: 8 courses of 0.20 m blocks in a 0.80 m wall,
-# half-start courses [0.1 0.2 0.2 0.2 0.1] (5 blocks) and full ones (4):
-# 4*5 + 4*4 = 36 blocks.  Head joints 4*4 + 4*3 = 28; between two courses
-# the joints at every 0.1 m split the bed into 8 segments, 7 pairs = 56;
-# 5 blocks on the ground.  89 interfaces.
+# The demo wall by hand: 8 courses of 0.20 x 0.15 m blocks in a 0.60 m
+# wall, half-start courses [0.1 0.2 0.2 0.1] (4 blocks) and full ones
+# [0.2 0.2 0.2] (3): 4*4 + 4*3 = 28 blocks.  Head joints 4*3 + 4*2 = 20;
+# between two courses the joints at every 0.1 m split the bed into 6
+# segments, 7 pairs = 42; 4 blocks on the ground.  66 interfaces.
 "$bin" check --json walls/demo.yaml > "$tmp/demo.json"
 ok_if $? "check --json demo wall exits 0"
 python3 - "$tmp/demo.json" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 free = [b for b in d["blocks"] if not b["fixed"]]
-assert len(free) == 36, len(free)
-assert len(d["interfaces"]) == 89, len(d["interfaces"])
+assert len(free) == 28, len(free)
+assert len(d["interfaces"]) == 66, len(d["interfaces"])
 head = [i for i in d["interfaces"] if i["kind"] == "head"]
-assert len(head) == 28, len(head)
-# weight of a full block: 19620 * 0.2 * 0.1 * 0.1 = 39.24 N
-w = [b["weight"] for b in free if abs(b["area"] - 0.02) < 1e-12]
-assert all(abs(x - 39.24) < 1e-9 for x in w) and len(w) == 28, (len(w), w[:3])
-assert d["loads"][0]["type"] == "point" and d["loads"][0]["block"] == "c4b4", d["loads"][0]
+assert len(head) == 20, len(head)
+# weight of a full block: 19620 * 0.2 * 0.15 * 0.1 = 58.86 N; 20 of them
+# (3 in each full course, 2 in each half-start one)
+w = [b["weight"] for b in free if abs(b["area"] - 0.03) < 1e-12]
+assert all(abs(x - 58.86) < 1e-9 for x in w) and len(w) == 20, (len(w), w[:3])
+assert d["loads"][0]["type"] == "point" and d["loads"][0]["block"] == "c4b3", d["loads"][0]
 PY
-ok_if $? "demo wall: 36 blocks, 89 interfaces (28 head), 39.24 N blocks, load on c4b4"
+ok_if $? "demo wall: 28 blocks, 66 interfaces (20 head), 58.86 N blocks, load on c4b3"
 
 "$bin" check walls/ferris-tinloi-1.yaml > "$tmp/ft1.txt"
 grep -q "33 free" "$tmp/ft1.txt"

@@ -61,8 +61,8 @@ std=$("$bin" solve $demo --method standard --json | python3 -c '
 import json, sys; print("%.5g" % json.load(sys.stdin)["load_factor"])')
 check "Fig. 10 draws the standard solution ($std N)" \
 	grep -q ">standard $std N<" "$tmp/r1/single-solutions.svg"
-check "global is not run on 36 blocks, and the report says so" \
-	grep -q "| global | — | not run: 36 blocks" "$tmp/r1/report.md"
+check "global is not run on 28 blocks, and the report says so" \
+	grep -q "| global | — | not run: 28 blocks" "$tmp/r1/report.md"
 check "the tests file is used (5 loads)" \
 	grep -q "| Experimental tests | 5 |" "$tmp/r1/report.md"
 check "the command to reproduce it" grep -q \

@@ -9,7 +9,8 @@
 # SIGINT and SIGTERM give the summary of what was done, exit 1, and a
 # file with exactly those rows; --until-ci stops reproducibly when the
 # interval is narrow enough; no accepted sample is exit 1; the demo wall
-# reproduces SPEC section 5 (acceptance, mechanisms, p95/p05).  TAP output.
+# shows the spread of SPEC section 5 (mechanisms, p95/p05, no dominant
+# value).  TAP output.
 # Needs python3 (JSON and the independent percentile).
 
 bin=${1:?usage: cli_run.sh SLIPWALL}
@@ -245,21 +246,25 @@ else
 fi
 
 # ---- SPEC section 5: the demo wall shows the spread it exists for ---------
-# An independent implementation of the method found, on this wall at depth
-# 0.25: every sample accepted, 7 distinct mechanisms in 100 samples,
-# p95/p05 = 6.7.  Two plausible engines that get it wrong: LP-max by the
-# dual simplex (p95/p05 2.2), LP-max from the classical solution's basis
-# (p95/p05 1.0, one mechanism).
-"$bin" run $demo -n 100 --seed 1 --json >"$tmp/spec5.json" 2>/dev/null
-res=$(python3 -c 'import json,sys
+# With one answer per sample, the spread must come from the contacts: at
+# the default depth, 1,000 samples show at least 5 distinct mechanisms,
+# p95/p05 >= 1.3, and no value of lambda_min is held by more than 20 % of
+# the accepted samples (counted from the CSV, independently of the JSON).
+# The demo before this (a pull on the end of a course of 0.10 m blocks)
+# fails the last: 85 % of its samples pulled the end block out at one
+# sliding load, 35.316 N.
+"$bin" run $demo -n 1000 --seed 1 --json --samples "$tmp/spec5.csv" >"$tmp/spec5.json" 2>/dev/null
+res=$(python3 -c 'import json,sys,csv,collections
 d=json.load(open(sys.argv[1])); l=d["lambda"]; r=l["p95"]/l["p05"]
 m=len(d["mechanisms"])
-print("%d accepted, %d mechanisms, p95/p05 %.2f" % (d["accepted"], m, r))
-sys.exit(not (d["accepted"] == 100 and 6 <= m <= 8 and 6.0 <= r <= 7.5))' "$tmp/spec5.json" 2>&1)
+v=[float(x["lambda_min"]) for x in csv.DictReader(open(sys.argv[2])) if x["status"]=="accepted"]
+top=collections.Counter("%.9g" % x for x in v).most_common(1)[0][1] / len(v)
+print("%d accepted, %d mechanisms, p95/p05 %.2f, most frequent value %.1f %%" % (d["accepted"], m, r, 100 * top))
+sys.exit(not (d["accepted"] >= 950 and m >= 5 and r >= 1.3 and top <= 0.20))' "$tmp/spec5.json" "$tmp/spec5.csv" 2>&1)
 if [ $? -eq 0 ]; then
-	ok "demo wall, 100 samples (SPEC section 5: 100 %, 7 mechanisms, p95/p05 6.7): $res"
+	ok "demo wall, 1,000 samples (SPEC section 5: >= 5 mechanisms, p95/p05 >= 1.3, no value > 20 %): $res"
 else
-	not_ok "demo wall reproduces SPEC section 5" "$res"
+	not_ok "demo wall shows the spread SPEC section 5 asks for" "$res"
 fi
 
 tap_end

@@ -70,6 +70,10 @@ struct lp_basis {
 void lp_basis_save(const struct lp *p, struct lp_basis *b);
 void lp_basis_load(struct lp *p, const struct lp_basis *b);
 void lp_basis_free(struct lp_basis *b);
+/* A hash of the current basis (every row's and column's status): two
+ * solves that end with the same hash almost surely ended at the same
+ * basis. */
+unsigned long lp_basis_hash(const struct lp *p);
 
 double lp_obj(const struct lp *p);
 double lp_col(const struct lp *p, int col);

@@ -41,12 +41,19 @@ const char *sample_status_text(enum sample_status s);	/* for people */
 /* The status of a name, or -1. */
 int sample_status_parse(const char *name);
 
+/* The SLP's iteration (docs/method.md): plain, c <- c + omega (N(c) - c)
+ * until it converges; or, the default, accelerated by Anderson's steps
+ * while the LP bases stay the same (the map is then affine), with a
+ * safeguard that keeps the plain iteration's fixed point. */
+enum sample_slp { SAMPLE_SLP_PLAIN, SAMPLE_SLP_ANDERSON };
+
 struct sample_opts {
 	double omega;		/* SLP relaxation, default 0.5 */
 	int max_iter;		/* SLP iteration limit, default 1000 */
 	double tol;		/* convergence, relative to the mean block
 				 * weight, default 1e-7 */
 	int stabilise;		/* the L1-closest optimal stress field (1) */
+	enum sample_slp slp;	/* how the SLP iterates (default ANDERSON) */
 };
 void sample_opts_default(struct sample_opts *o);
 
@@ -142,6 +149,20 @@ enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
  * (ACCEPTED when an optimum was found). */
 enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
 				   struct sample_result *r);
+
+/* What the LPs of a workspace cost, by role, since it was made (its
+ * canonical sample included): the six LP roles of docs/method.md (LP-max,
+ * standing, LP-min, LP1, LP2, kinematic), then each one's tie-break.  A
+ * solve that the LP layer answers from the basis it held counts as an LP
+ * of no iterations. */
+#define SAMPLE_ROLE_COUNT 12
+struct sample_lp_stats {
+	long lps, iterations;
+	double seconds;		/* inside lp_solve, monotonic clock */
+};
+const char *sample_role_name(int role);
+void sample_ws_stats(const struct sample_ws *ws,
+		     struct sample_lp_stats out[SAMPLE_ROLE_COUNT]);
 
 /* The statics of the workspace (scales, operator), for the global
  * method which builds its own problem on the same operator. */
