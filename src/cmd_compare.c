@@ -472,7 +472,7 @@ int cmd_compare(int argc, char **argv)
 		json_string(&j, a.samples ? a.samples : "run");
 		if (!a.samples) {
 			json_key(&j, "seed");
-			json_int(&j, (long long)cfg.seed);
+			json_uint(&j, cfg.seed);
 			json_key(&j, "depth");
 			if (w->anywhere)
 				json_null(&j);

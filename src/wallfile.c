@@ -719,7 +719,7 @@ static int read_analysis(struct reader *r, yaml_node_t *n)
 		r->w->samples = (int)x;
 	}
 	if (v[1]) {
-		if (reader_integer(r, v[1], "seed", 0, ULONG_MAX, &x))
+		if (reader_integer(r, v[1], "seed", 0, WALL_SEED_MAX, &x))
 			return -1;
 		r->w->seed = (unsigned long)x;
 	}

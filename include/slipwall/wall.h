@@ -18,6 +18,8 @@
 #ifndef SLIPWALL_WALL_H
 #define SLIPWALL_WALL_H
 
+#include <limits.h>
+
 #include "slipwall/status.h"
 
 enum joint_kind { JOINT_BED, JOINT_HEAD, JOINT_OTHER };
@@ -90,7 +92,7 @@ struct wall {
 	double depth;		/* contacts.depth, 0..0.5 */
 	int anywhere;		/* contacts.positions: anywhere */
 	int samples;		/* analysis.samples */
-	unsigned long seed;	/* analysis.seed */
+	unsigned long seed;	/* analysis.seed, 0..WALL_SEED_MAX */
 	double *tests;		/* experimental collapse loads, N; owned */
 	int ntests;
 
@@ -103,6 +105,13 @@ struct wall {
 	double mean_size;	/* m, sqrt(mean free block area) (length scale) */
 	int finished;
 };
+
+/* The one range of seeds: the wall file, the command line (--seed), the
+ * JSON outputs (an exact integer) and the report all take and write every
+ * seed from 0 to 2^64 - 1. */
+#define WALL_SEED_MAX 18446744073709551615ULL
+_Static_assert(ULONG_MAX >= WALL_SEED_MAX,
+	       "a seed is an unsigned long of 64 bits");
 
 /* A new empty wall with the defaults of docs/wall-format.md. */
 struct wall *wall_new(void);

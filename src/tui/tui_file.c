@@ -132,7 +132,7 @@ static void tui_file_json(struct tui *t, FILE *f, const char *wallpath)
 	else
 		json_null(&j);
 	json_key(&j, "seed");
-	json_int(&j, (long long)w->seed);
+	json_uint(&j, w->seed);
 	json_key(&j, "threads");
 	json_int(&j, t->threads);
 	json_key(&j, "target");

@@ -1,0 +1,88 @@
+#!/bin/bash
+# cli_answers.sh - the "silently wrong answers" of issue 16 through the
+# real binary (docs/reliability.md, "Silently wrong answers"): seeds in
+# one range written exactly, time limits bounded, a samples file checked
+# against its wall, a split edge giving one interface.  Expected values
+# come from the program's own outputs or from closed forms, never from a
+# recorded run.
+set -u
+bin=$1
+cd "$(dirname "$0")/.." || exit 1
+. tests/tap.sh
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+# status_is WANT TEXT COMMAND...: ok when COMMAND exits with WANT (its
+# stderr is kept in $tmp/err)
+status_is() {
+	local want=$1 text=$2 rc
+	shift 2
+	"$@" >"$tmp/out" 2>"$tmp/err" </dev/null
+	rc=$?
+	if [ "$rc" = "$want" ]; then
+		ok "$text"
+	else
+		not_ok "$text" "exit $rc, not $want" "$(head -c 600 "$tmp/err")"
+	fi
+}
+# a copy of the single-block wall with another analysis.seed
+with_seed() {
+	sed "s/^  seed: 1\$/  seed: $1/" walls/single-block.yaml
+}
+
+# ---- seeds: one range, 0 .. 2^64-1, written exactly ------------------
+max=18446744073709551615
+big=9223372036854775813		# 2^63 + 5
+with_seed $max >"$tmp/max.yaml"
+with_seed $big >"$tmp/big.yaml"
+"$bin" check --json "$tmp/max.yaml" >"$tmp/max.json"
+"$bin" run "$tmp/big.yaml" -n 3 --json >"$tmp/big.json"
+python3 - "$tmp/max.json" "$tmp/big.json" "$max" "$big" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1])); r = json.load(open(sys.argv[2]))
+assert c["analysis"]["seed"] == int(sys.argv[3]), c["analysis"]["seed"]
+assert r["seed"] == int(sys.argv[4]), r["seed"]
+PY
+check "a wall seed of 2^64-1 and of 2^63+5 is written exactly in JSON" test $? = 0
+"$bin" run "$tmp/big.yaml" -n 4 --samples "$tmp/wall-seed.csv" >/dev/null 2>&1
+"$bin" run walls/single-block.yaml -n 4 --seed $big \
+	--samples "$tmp/cli-seed.csv" >/dev/null 2>"$tmp/err"
+check "--seed 2^63+5 gives the samples of a wall seed 2^63+5" \
+	cmp -s "$tmp/wall-seed.csv" "$tmp/cli-seed.csv"
+"$bin" run walls/single-block.yaml -n 4 --seed $max >/dev/null 2>&1
+check "--seed 2^64-1 is accepted" test $? = 0
+for s in 18446744073709551616 -1 0x10 " 5" 1e3 ""; do
+	status_is 2 "--seed '$s' is refused (exit 2)" \
+		"$bin" run walls/single-block.yaml -n 1 --seed "$s"
+done
+"$bin" report "$tmp/big.yaml" -n 5 --out "$tmp/rep" >/dev/null 2>&1
+cmd=$(sed -n 's/^    slipwall report //p' "$tmp/rep/report.md" | head -n 1)
+case $cmd in
+*"--seed $big "*) ok "report: the command to reproduce carries seed 2^63+5" ;;
+*) not_ok "report: the command to reproduce carries seed 2^63+5" "$cmd" ;;
+esac
+eval "set -- $cmd"
+"$bin" report "$@" >/dev/null 2>"$tmp/err"
+check "report: the command to reproduce runs (exit 0)" test $? = 0
+
+# ---- --time-limit: GLPK counts int milliseconds ----------------------
+for t in 2147484 1e7 1e300 0 -1; do
+	status_is 2 "solve --time-limit $t is refused (exit 2)" \
+		"$bin" solve walls/single-block.yaml --method global --time-limit $t
+	grep -q -- "--time-limit" "$tmp/err" ||
+		not_ok "solve --time-limit $t: the message names the option"
+done
+status_is 2 "report --time-limit 2147484 is refused (exit 2)" \
+	"$bin" report walls/single-block.yaml -n 2 --time-limit 2147484 \
+	--out "$tmp/rep2"
+# the largest limit still solves: tipping about the toe, P = W b / (2 a)
+"$bin" solve walls/single-block.yaml --method global --time-limit 1e6 \
+	--json >"$tmp/g.json"
+python3 - "$tmp/g.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+W = 19620 * 0.4 * 0.8 * 0.1
+assert abs(r["load_factor"] - W * 0.4 / (2 * 0.6)) < 1e-6 * W, r["load_factor"]
+PY
+check "solve --time-limit 1e6 (the bound) still finds P = W b / 2a" test $? = 0
+
+tap_end
