@@ -85,4 +85,99 @@ assert abs(r["load_factor"] - W * 0.4 / (2 * 0.6)) < 1e-6 * W, r["load_factor"]
 PY
 check "solve --time-limit 1e6 (the bound) still finds P = W b / 2a" test $? = 0
 
+# ---- a vertex in the middle of an edge changes nothing ---------------
+# Two stacked blocks, and the same two with vertices in the middle of
+# the shared bed (one on each block, at different places, and one list
+# starting at such a vertex) and of the bottom block's bed on the
+# ground; then a block on a slope of 1:2 with a vertex on its sloping
+# edge.  The interfaces (check --json) and the samples (byte for byte)
+# must be the same.
+plain() {
+	cat <<YAML
+material: {friction: 0.6, unit_weight: 19620, thickness: 0.1}
+blocks:
+  - {id: bottom, vertices: $1}
+  - {id: top, vertices: $2}
+supports:
+  - ground: {y: 0}
+loads:
+  - body: {direction: [1, 0]}
+analysis: {samples: 40, seed: 11}
+YAML
+}
+plain "[[0, 0], [0.4, 0], [0.4, 0.2], [0, 0.2]]" \
+	"[[0, 0.2], [0.4, 0.2], [0.4, 0.4], [0, 0.4]]" >"$tmp/stack.yaml"
+plain "[[0, 0], [0.25, 0], [0.4, 0], [0.4, 0.2], [0.3, 0.2], [0, 0.2]]" \
+	"[[0.1, 0.2], [0.4, 0.2], [0.4, 0.4], [0, 0.4], [0, 0.2]]" \
+	>"$tmp/stack-split.yaml"
+slope() {
+	cat <<YAML
+material: {friction: 0.6, unit_weight: 19620, thickness: 0.1}
+blocks:
+  - {id: block, vertices: $1}
+supports:
+  - {id: slope, vertices: [[0, 0], [1, 0], [1, 0.5]]}
+loads:
+  - point: {at: [0.5, 0.45], direction: [-1, 0]}
+analysis: {samples: 40, seed: 11}
+YAML
+}
+slope "[[0.2, 0.1], [0.8, 0.4], [0.6, 0.8]]" >"$tmp/slope.yaml"
+slope "[[0.2, 0.1], [0.3, 0.15], [0.8, 0.4], [0.6, 0.8]]" \
+	>"$tmp/slope-split.yaml"
+for w in stack slope; do
+	"$bin" check --json "$tmp/$w.yaml" >"$tmp/$w.json" 2>"$tmp/err" &&
+	"$bin" check --json "$tmp/$w-split.yaml" >"$tmp/$w-split.json" \
+		2>>"$tmp/err"
+	python3 - "$tmp/$w.json" "$tmp/$w-split.json" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1])); b = json.load(open(sys.argv[2]))
+assert a["interfaces"] == b["interfaces"], (a["interfaces"], b["interfaces"])
+key = lambda d: [(x["id"], x["centroid"], x["area"], x["weight"])
+                 for x in d["blocks"]]
+assert key(a) == key(b), (key(a), key(b))
+assert a["total_weight"] == b["total_weight"]
+PY
+	check "$w: a vertex in the middle of an edge gives the same interfaces, centroids and weights" test $? = 0
+	"$bin" run "$tmp/$w.yaml" --samples "$tmp/$w.csv" >/dev/null 2>&1
+	"$bin" run "$tmp/$w-split.yaml" --samples "$tmp/$w-split.csv" \
+		>/dev/null 2>&1
+	if [ "$(wc -l <"$tmp/$w.csv")" -eq 41 ] &&
+		cmp -s "$tmp/$w.csv" "$tmp/$w-split.csv"; then
+		ok "$w: ... and the same 40 samples, byte for byte"
+	else
+		not_ok "$w: ... and the same 40 samples, byte for byte" \
+			"$(head -c 300 "$tmp/$w.csv")" \
+			"$(head -c 300 "$tmp/$w-split.csv")"
+	fi
+done
+
+# ---- friction: refused above 1000, exact up to it --------------------
+# (tests/bad/friction-*.yaml: the refusal.)  On Ferris & Tin-Loi wall 1
+# friction 100 already forbids sliding, so at 1000 (the bound) every
+# sample must be accepted with the load of friction 100; before the
+# bound existed, 1e5 gave "numerical" samples and wrong loads.
+for mu in 100 1000; do
+	sed "s/^  friction: 0.65\$/  friction: $mu/" walls/ferris-tinloi-1.yaml \
+		>"$tmp/ft-$mu.yaml"
+	"$bin" run "$tmp/ft-$mu.yaml" -n 8 --seed 3 --samples "$tmp/ft-$mu.csv" \
+		>/dev/null 2>"$tmp/err"
+done
+python3 - "$tmp/ft-100.csv" "$tmp/ft-1000.csv" <<'PY'
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1])))
+b = list(csv.DictReader(open(sys.argv[2])))
+assert len(a) == len(b) == 8, (len(a), len(b))
+for x, y in zip(a, b):
+    assert x["status"] == y["status"] == "accepted", (x["status"], y["status"])
+    la, lb = float(x["lambda_min"]), float(y["lambda_min"])
+    assert abs(la - lb) <= 1e-6 * abs(la), (la, lb)
+PY
+check "friction 1000 (the bound): every sample accepted, with the loads of friction 100" test $? = 0
+sed "s/^  friction: 0.65\$/  friction: 1000.001/" walls/ferris-tinloi-1.yaml \
+	>"$tmp/ft-over.yaml"
+status_is 2 "friction 1000.001 is refused (exit 2)" "$bin" run "$tmp/ft-over.yaml" -n 1
+grep -q "ft-over.yaml:14:13: .*to forbid sliding use friction: 1000" "$tmp/err"
+check "... at FILE:LINE:COL, saying what to do instead" test $? = 0
+
 tap_end
