@@ -425,7 +425,7 @@ int cmd_compare(int argc, char **argv)
 	struct model *md = &one;
 	if (a.samples) {
 		long n;
-		if (runlog_read_loads(a.samples, &one.lam, &n, err) != SW_OK) {
+		if (runlog_read_loads(a.samples, w, &one.lam, &n, err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			status = 2;
 			goto out;

@@ -277,7 +277,7 @@ int cmd_report(int argc, char **argv)
 	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	if (a.samples) {
 		long rows;
-		if (runlog_read_loads(a.samples, &lam, &nlam, err) != SW_OK ||
+		if (runlog_read_loads(a.samples, w, &lam, &nlam, err) != SW_OK ||
 		    runlog_read_positions(a.samples, w, &xi, &rows, err) !=
 		    SW_OK) {
 			fprintf(stderr, "%s\n", err);

@@ -180,4 +180,25 @@ status_is 2 "friction 1000.001 is refused (exit 2)" "$bin" run "$tmp/ft-over.yam
 grep -q "ft-over.yaml:14:13: .*to forbid sliding use friction: 1000" "$tmp/err"
 check "... at FILE:LINE:COL, saying what to do instead" test $? = 0
 
+# ---- a samples file belongs to its wall ------------------------------
+# run on the two-block stack (2 interfaces) and on the single block (1):
+# compare and report take each file with its own wall only
+printf '300\n320\n' >"$tmp/tests.txt"
+"$bin" run walls/two-block-stack.yaml -n 6 --samples "$tmp/two.csv" >/dev/null 2>&1
+"$bin" run walls/single-block.yaml -n 6 --samples "$tmp/one.csv" >/dev/null 2>&1
+status_is 0 "compare --samples with the file's own wall: exit 0" \
+	"$bin" compare walls/single-block.yaml --samples "$tmp/one.csv" \
+	--tests "$tmp/tests.txt"
+for pair in "single-block two" "two-block-stack one"; do
+	set -- $pair
+	status_is 2 "compare --samples: a file of another wall ($2 -> $1) is refused" \
+		"$bin" compare walls/$1.yaml --samples "$tmp/$2.csv" \
+		--tests "$tmp/tests.txt"
+	grep -q "^$tmp/$2.csv:1:[0-9]*: .*another wall" "$tmp/err"
+	check "... with FILE:LINE:COL and 'another wall'" test $? = 0
+	status_is 2 "report --samples: a file of another wall ($2 -> $1) is refused" \
+		"$bin" report walls/$1.yaml --samples "$tmp/$2.csv" \
+		--out "$tmp/rep-$2"
+done
+
 tap_end
