@@ -66,15 +66,12 @@ static uint64_t mix(uint64_t z)
 void mc_rng_seed(struct mc_rng *r, unsigned long seed, unsigned long index)
 {
 	uint64_t x = mix(mix((uint64_t)seed) ^ (uint64_t)index);
-	/* splitmix64 expands the sample seed into the state; its words are
-	 * never all zero (the first alone is a bijection of x, and the
-	 * four are distinct outputs of one sequence) */
+	/* splitmix64 expands the sample seed into the state: its outputs
+	 * mix(x), mix(x + g), ... (each a bijection of x, so the state is
+	 * never all zero) */
 	for (int k = 0; k < 4; k++) {
+		r->s[k] = mix(x);
 		x += 0x9e3779b97f4a7c15ULL;
-		uint64_t z = x;
-		z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-		z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-		r->s[k] = z ^ (z >> 31);
 	}
 }
 
