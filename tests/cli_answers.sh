@@ -1,8 +1,10 @@
 #!/bin/bash
 # cli_answers.sh - the "silently wrong answers" of issue 16 through the
 # real binary (docs/reliability.md, "Silently wrong answers"): seeds in
-# one range written exactly, time limits bounded, a samples file checked
-# against its wall, a split edge giving one interface.  Expected values
+# one range written exactly, time limits bounded, a split edge giving
+# one interface, friction exact up to its bound, a samples file checked
+# against its wall (tests/bad/ holds the walls refused at load time:
+# overflows, reserved names, overlaps, friction).  Expected values
 # come from the program's own outputs or from closed forms, never from a
 # recorded run.
 set -u
