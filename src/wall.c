@@ -304,8 +304,9 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		if (!isfinite(b->area) || !isfinite(b->cx) || !isfinite(b->cy)) {
 			free(corners);
 			return sw_fail(err, SW_EINPUT,
-				       "%s%s '%s' is too large: its area "
-				       "overflows a double",
+				       "%s%s '%s' is too large: its centroid "
+				       "overflows a double (blocks up to about "
+				       "1e100 m work)",
 				       WHERE(b->mark),
 				       b->fixed ? "support" : "block", b->id);
 		}

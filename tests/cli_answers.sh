@@ -203,4 +203,41 @@ for pair in "single-block two" "two-block-stack one"; do
 		--out "$tmp/rep-$2"
 done
 
+# ---- large numbers: finite, or refused at the input ------------------
+# (tests/bad/*-overflow.yaml: the refusals.)  The single block at 1e20
+# times its size with a unit weight of 1e250 N/m^3: its weight, 3.2e290 N,
+# and every derived number are finite, but a moment (weight x size) is
+# not, and once made the equilibrium rows NaN ("collapses under any
+# load").  The tipping load W b / (2 a) must come out.
+cat >"$tmp/heavy.yaml" <<'YAML'
+material: {friction: 0.6, unit_weight: 1e250, thickness: 0.1}
+blocks:
+  - vertices: [[0, 0], [4e20, 0], [4e20, 8e20], [0, 8e20]]
+supports:
+  - ground: {y: 0}
+loads:
+  - point: {at: [0, 6e20], direction: [1, 0]}
+YAML
+"$bin" solve "$tmp/heavy.yaml" --method standard --json >"$tmp/heavy.json" \
+	2>"$tmp/err"
+python3 - "$tmp/heavy.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+W = 1e250 * 0.1 * (4e20 * 8e20)
+P = W * (4e20 / (2 * 6e20))
+assert abs(r["load_factor"] / P - 1) < 1e-9, (r["load_factor"], P)
+PY
+check "a wall of weight 3.2e290 N and size 8e20 m: solve finds W b / 2a" test $? = 0
+"$bin" run "$tmp/heavy.yaml" -n 5 --json >"$tmp/heavy-run.json" 2>"$tmp/err"
+python3 - "$tmp/heavy-run.json" <<'PY'
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+P = 1e250 * 0.1 * (4e20 * 8e20) * (4e20 / (2 * 6e20))
+lam = r["lambda"]
+assert r["accepted"] == 5, r
+assert all(math.isfinite(lam[k]) for k in ("min", "max", "mean", "std")), lam
+assert 0 < lam["min"] <= lam["max"] <= P * (1 + 1e-9), (lam, P)
+PY
+check "... and run: 5 samples accepted, finite loads below it, a finite std" test $? = 0
+
 tap_end
