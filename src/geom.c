@@ -23,31 +23,49 @@
 
 #include "slipwall/geom.h"
 
+/* The power of two nearest above the largest |v| of n numbers (1 for
+ * none, zeros or non-finite ones).  Scaling by it is exact, so sums of
+ * products of scaled numbers round exactly as the unscaled ones would,
+ * but neither overflow nor underflow for polygons of 1e-150 or 1e100 m. */
+static double pow2_scale(const double *v, int n, double sub0, double sub1)
+{
+	double m = 0;
+	for (int i = 0; i < n; i++)
+		m = fmax(m, fabs(v[i] - (i % 2 ? sub1 : sub0)));
+	if (!(m > 0) || !isfinite(m))
+		return 1;
+	int e;
+	frexp(m, &e);
+	return ldexp(1, e);
+}
+
 double geom_area(const double *xy, int nv)
 {
-	double a = 0;
+	double s = pow2_scale(xy, 2 * nv, 0, 0), a = 0;
 	for (int i = 0; i < nv; i++) {
 		int j = (i + 1) % nv;
-		a += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+		a += (xy[2 * i] / s) * (xy[2 * j + 1] / s) -
+		     (xy[2 * j] / s) * (xy[2 * i + 1] / s);
 	}
-	return a / 2;
+	return a / 2 * s * s;
 }
 
 void geom_centroid(const double *xy, int nv, double *cx, double *cy)
 {
 	/* relative to the first vertex, for accuracy far from the origin */
 	double x0 = xy[0], y0 = xy[1], a = 0, sx = 0, sy = 0;
+	double s = pow2_scale(xy, 2 * nv, x0, y0);
 	for (int i = 0; i < nv; i++) {
 		int j = (i + 1) % nv;
-		double xi = xy[2 * i] - x0, yi = xy[2 * i + 1] - y0;
-		double xj = xy[2 * j] - x0, yj = xy[2 * j + 1] - y0;
+		double xi = (xy[2 * i] - x0) / s, yi = (xy[2 * i + 1] - y0) / s;
+		double xj = (xy[2 * j] - x0) / s, yj = (xy[2 * j + 1] - y0) / s;
 		double c = xi * yj - xj * yi;
 		a += c;
 		sx += (xi + xj) * c;
 		sy += (yi + yj) * c;
 	}
-	*cx = x0 + sx / (3 * a);
-	*cy = y0 + sy / (3 * a);
+	*cx = x0 + sx / (3 * a) * s;
+	*cy = y0 + sy / (3 * a) * s;
 }
 
 enum geom_shape geom_check_polygon(const double *xy, int nv, double tol)

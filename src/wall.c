@@ -301,14 +301,16 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		int nc = geom_prune(b->xy, b->nv, tol, corners);
 		b->area = geom_area(corners, nc);
 		geom_centroid(corners, nc, &b->cx, &b->cy);
-		if (!isfinite(b->area) || !isfinite(b->cx) || !isfinite(b->cy)) {
+		if (!isfinite(b->area) || !isfinite(b->cx) || !isfinite(b->cy) ||
+		    !isnormal(b->area)) {
 			free(corners);
 			return sw_fail(err, SW_EINPUT,
-				       "%s%s '%s' is too large: its centroid "
-				       "overflows a double (blocks up to about "
-				       "1e100 m work)",
-				       WHERE(b->mark),
-				       b->fixed ? "support" : "block", b->id);
+				       "%s%s '%s' is too %s: its area (%g m^2) "
+				       "is beyond the normal doubles (%g to "
+				       "%g): use other units", WHERE(b->mark),
+				       b->fixed ? "support" : "block", b->id,
+				       isnormal(b->area) ? "large" : "small",
+				       b->area, DBL_MIN, DBL_MAX);
 		}
 	}
 	free(corners);
@@ -372,6 +374,14 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		b->eq = w->nfree++;
 		w->total_weight += b->weight;
 		area_sum += b->area;
+		if (isfinite(b->weight) && !isnormal(b->weight))
+			return sw_fail(err, SW_EINPUT,
+				       "%sthe weight of block '%s' (%g N) is "
+				       "below the normal doubles (%g): use "
+				       "larger units or values",
+				       WHERE(mark_or(w->unit_weight_mark,
+						     b->mark)),
+				       b->id, b->weight, DBL_MIN);
 		if (!isfinite(b->weight) || !isfinite(w->total_weight) ||
 		    !isfinite(area_sum))
 			return sw_fail(err, SW_EINPUT,
@@ -465,6 +475,16 @@ enum sw_status wall_finish(struct wall *w, char *err)
 				       ld->kind == LOAD_POINT ? ""
 					       : " x the weight of the wall");
 	}
+	/* the LPs scale the live load to the weights: their ratio must be
+	 * a normal double both ways */
+	if (!isnormal(live / w->mean_weight) ||
+	    !isnormal(w->mean_weight / live))
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe live load (%g N at load factor 1) and "
+			       "the weights (%g N a block) are too far apart "
+			       "for a double: use a magnitude nearer the "
+			       "weights", WHERE(w->loads[0].mark), live,
+			       w->mean_weight);
 	w->finished = 1;
 	return SW_OK;
 }

@@ -203,41 +203,45 @@ for pair in "single-block two" "two-block-stack one"; do
 		--out "$tmp/rep-$2"
 done
 
-# ---- large numbers: finite, or refused at the input ------------------
-# (tests/bad/*-overflow.yaml: the refusals.)  The single block at 1e20
-# times its size with a unit weight of 1e250 N/m^3: its weight, 3.2e290 N,
-# and every derived number are finite, but a moment (weight x size) is
-# not, and once made the equilibrium rows NaN ("collapses under any
-# load").  The tipping load W b / (2 a) must come out.
-cat >"$tmp/heavy.yaml" <<'YAML'
-material: {friction: 0.6, unit_weight: 1e250, thickness: 0.1}
+# ---- large and small numbers: exact, or refused at the input --------
+# (tests/bad/*-overflow.yaml, *-underflow.yaml: the refusals.)  The
+# single block (0.4 x 0.8 of its unit, pulled at 0.6) at other scales:
+# 1e20 m with a unit weight of 1e250 N/m^3 (weight 3.2e290 N: its moment
+# overflowed, "collapses under any load"), 1e-150 m (the centroid
+# underflowed to a corner: the block slid at mu W instead of tipping)
+# and 1e140 m at 1e-200 N/m^3 (the centroid overflowed).  solve must
+# find the tipping load W b / (2 a) = W / 3 and run accept every sample
+# below it, with finite statistics.
+for case in "1e20 1e250" "1e-150 19620" "1e140 1e-200"; do
+	set -- $case
+	python3 - "$1" "$2" >"$tmp/scaled.yaml" <<'PY'
+import sys
+s, g = float(sys.argv[1]), sys.argv[2]
+print(f"""material: {{friction: 0.6, unit_weight: {g}, thickness: 0.1}}
 blocks:
-  - vertices: [[0, 0], [4e20, 0], [4e20, 8e20], [0, 8e20]]
+  - vertices: [[0, 0], [{0.4 * s!r}, 0], [{0.4 * s!r}, {0.8 * s!r}], [0, {0.8 * s!r}]]
 supports:
-  - ground: {y: 0}
+  - ground: {{y: 0}}
 loads:
-  - point: {at: [0, 6e20], direction: [1, 0]}
-YAML
-"$bin" solve "$tmp/heavy.yaml" --method standard --json >"$tmp/heavy.json" \
-	2>"$tmp/err"
-python3 - "$tmp/heavy.json" <<'PY'
-import json, sys
-r = json.load(open(sys.argv[1]))
-W = 1e250 * 0.1 * (4e20 * 8e20)
-P = W * (4e20 / (2 * 6e20))
-assert abs(r["load_factor"] / P - 1) < 1e-9, (r["load_factor"], P)
+  - point: {{at: [0, {0.6 * s!r}], direction: [1, 0]}}""")
 PY
-check "a wall of weight 3.2e290 N and size 8e20 m: solve finds W b / 2a" test $? = 0
-"$bin" run "$tmp/heavy.yaml" -n 5 --json >"$tmp/heavy-run.json" 2>"$tmp/err"
-python3 - "$tmp/heavy-run.json" <<'PY'
+	"$bin" solve "$tmp/scaled.yaml" --method standard --json \
+		>"$tmp/scaled.json" 2>"$tmp/err"
+	"$bin" run "$tmp/scaled.yaml" -n 5 --json >"$tmp/scaled-run.json" \
+		2>>"$tmp/err"
+	python3 - "$tmp/scaled.json" "$tmp/scaled-run.json" "$1" "$2" <<'PY'
 import json, math, sys
-r = json.load(open(sys.argv[1]))
-P = 1e250 * 0.1 * (4e20 * 8e20) * (4e20 / (2 * 6e20))
-lam = r["lambda"]
-assert r["accepted"] == 5, r
+r = json.load(open(sys.argv[1])); m = json.load(open(sys.argv[2]))
+s, g = float(sys.argv[3]), float(sys.argv[4])
+P = g * 0.1 * (0.4 * s) * (0.8 * s) / 3     # W b / (2 a), b / 2a = 1/3
+assert abs(r["load_factor"] / P - 1) < 1e-9, (r["load_factor"], P)
+lam = m["lambda"]
+assert m["accepted"] == 5, m
 assert all(math.isfinite(lam[k]) for k in ("min", "max", "mean", "std")), lam
 assert 0 < lam["min"] <= lam["max"] <= P * (1 + 1e-9), (lam, P)
 PY
-check "... and run: 5 samples accepted, finite loads below it, a finite std" test $? = 0
+	check "block of $1 m, unit weight $2: solve finds W b / 2a, run accepts 5 samples below it" \
+		test $? = 0
+done
 
 tap_end

@@ -25,6 +25,17 @@ static void polygons(void)
 	tap_near(cx - 1e6, 0.1, 1e-9, "centroid 1e6 m from the origin: x");
 	tap_near(cy - 1e6, 0.05, 1e-9, "centroid 1e6 m from the origin: y");
 
+	/* nor underflow or overflow for polygons of 1e-150 and 1e140 m */
+	for (int k = 0; k < 2; k++) {
+		double f = k ? 1e140 : 1e-150, t[6] = {0, 0, 2 * f, 0, 0, f};
+		geom_centroid(t, 3, &cx, &cy);
+		tap_ok(fabs(geom_area(t, 3) / (f * f) - 1) < 1e-15 &&
+		       fabs(cx / f - 2.0 / 3) < 1e-15 &&
+		       fabs(cy / f - 1.0 / 3) < 1e-15,
+		       "the triangle at %g times its size: area and centroid "
+		       "scale", f);
+	}
+
 	double cw[8] = {0, 0, 0, 1, 1, 1, 1, 0};
 	double lshape[12] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
 	double bowtie[8] = {0, 0, 1, 1, 1, 0, 0, 1};
