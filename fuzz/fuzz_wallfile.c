@@ -26,6 +26,7 @@
 #include <string.h>
 
 #include "slipwall/lp.h"
+#include "slipwall/mc.h"
 #include "slipwall/sample.h"
 #include "slipwall/statics.h"
 #include "slipwall/wallfile.h"
@@ -50,7 +51,7 @@ static void touch_statics(const struct wall *w)
 	struct statics s;
 	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
 	double *v = calloc((size_t)3 * (size_t)w->nfree + 1, sizeof(double));
-	sample_positions(w, 1, 0, -1, xi);
+	mc_positions(w, 1, 0, -1, xi);
 	statics_init(&s, w);
 	statics_set_points(&s, xi);
 	/* a finished wall gives a finite operator: GLPK refuses (aborts on)
@@ -87,7 +88,7 @@ static void touch_sample(const struct wall *w)
 	/* sample_ws_new solves one sample at the classical contact */
 	struct sample_ws *ws = sample_ws_new(w);
 	sample_result_init(&r, w);
-	sample_positions(w, 7, 3, -1, xi);
+	mc_positions(w, 7, 3, -1, xi);
 	enum sample_status st = sample_standard(ws, xi, &r);
 	if ((unsigned)st >= SAMPLE_STATUS_COUNT)
 		abort();

@@ -78,6 +78,29 @@ int cli_parse_double(const char *s, double *out)
 	return 0;
 }
 
+int cli_parse_seed(const char *s, unsigned long *out)
+{
+	/* digits only: strtoull would take "-1" as 2^64-1, and " 5" */
+	if (!*s || strspn(s, "0123456789") != strlen(s))
+		return -1;
+	char *end;
+	errno = 0;
+	unsigned long long v = strtoull(s, &end, 10);
+	if (errno || *end || v > WALL_SEED_MAX)
+		return -1;
+	*out = (unsigned long)v;
+	return 0;
+}
+
+int cli_parse_time_limit(const char *s, double *out)
+{
+	double v;
+	if (cli_parse_double(s, &v) || !(v > 0) || v > CLI_TIME_LIMIT_MAX)
+		return -1;
+	*out = v;
+	return 0;
+}
+
 const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
 			  int *missing)
 {
@@ -108,10 +131,10 @@ int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
 					       "sample count (1 to 10^9)", v);
 		*n_set = 1;
 	} else if ((v = cli_opt_value(argc, argv, i, "--seed", missing))) {
-		if (cli_parse_long(v, 0, 0x7fffffffL, &l))
+		if (cli_parse_seed(v, seed))
 			return cli_usage_error(cmd, "--seed: '%s' is not a "
-					       "whole number from 0 to 2^31-1", v);
-		*seed = (unsigned long)l;
+					       "whole number from 0 to %llu "
+					       "(2^64-1)", v, WALL_SEED_MAX);
 		*seed_set = 1;
 	} else if ((v = cli_opt_value(argc, argv, i, "--threads", missing))) {
 		if (cli_parse_long(v, 1, 1024, &l))

@@ -34,6 +34,14 @@ int cli_usage_error(const char *cmd, const char *fmt, ...)
 /* Parse a whole number / a finite double; 0 on success. */
 int cli_parse_long(const char *s, long lo, long hi, long *out);
 int cli_parse_double(const char *s, double *out);
+/* A seed: decimal digits only, 0 to WALL_SEED_MAX (the range of the wall
+ * file's analysis.seed); 0 on success. */
+int cli_parse_seed(const char *s, unsigned long *out);
+/* --time-limit of solve and report: seconds, > 0 and at most
+ * CLI_TIME_LIMIT_MAX (GLPK counts its limit in int milliseconds, which
+ * end at 2^31-1 ms = 24.8 days); 0 on success. */
+#define CLI_TIME_LIMIT_MAX 1e6
+int cli_parse_time_limit(const char *s, double *out);
 /* Option scanning for the commands' own loops: if argv[*i] is the
  * option `name` ("-n", "--seed"), its value ("--seed=5", or the next
  * argument, advancing *i); NULL if argv[*i] is another option, or with

@@ -131,7 +131,7 @@ static void print_json(const struct wall *w)
 	json_key(&j, "samples");
 	json_int(&j, w->samples);
 	json_key(&j, "seed");
-	json_int(&j, (long long)w->seed);
+	json_uint(&j, w->seed);
 	json_object_end(&j);
 	json_key(&j, "tests");
 	json_array_begin(&j);

@@ -11,7 +11,7 @@
  *
  * --fit-depth calibrates the one free parameter of the contact model,
  * the imperfection depth d: a run per d on a grid over [0, 0.5], then a
- * finer grid around the best, all with the same seed.  sample_positions
+ * finer grid around the best, all with the same seed.  mc_positions
  * draws the same uniforms for every d and scales them by d (common
  * random numbers), so the profile of the KS distance against d is
  * smooth rather than noisy.  The best d has the least KS distance (ties:
@@ -425,7 +425,7 @@ int cmd_compare(int argc, char **argv)
 	struct model *md = &one;
 	if (a.samples) {
 		long n;
-		if (runlog_read_loads(a.samples, &one.lam, &n, err) != SW_OK) {
+		if (runlog_read_loads(a.samples, w, &one.lam, &n, err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			status = 2;
 			goto out;
@@ -472,7 +472,7 @@ int cmd_compare(int argc, char **argv)
 		json_string(&j, a.samples ? a.samples : "run");
 		if (!a.samples) {
 			json_key(&j, "seed");
-			json_int(&j, (long long)cfg.seed);
+			json_uint(&j, cfg.seed);
 			json_key(&j, "depth");
 			if (w->anywhere)
 				json_null(&j);

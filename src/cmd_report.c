@@ -85,11 +85,11 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
 					  &missing))) {
-			if (cli_parse_double(v, &a->time_limit) ||
-			    !(a->time_limit > 0))
+			if (cli_parse_time_limit(v, &a->time_limit))
 				return cli_usage_error(CMD, "--time-limit: '%s' is "
-						       "not a positive number of "
-						       "seconds", v);
+						       "not a number of seconds "
+						       "> 0 and <= %g", v,
+						       CLI_TIME_LIMIT_MAX);
 		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
 			if (!*v)
 				return cli_usage_error(CMD, "--samples: empty file name");
@@ -277,7 +277,7 @@ int cmd_report(int argc, char **argv)
 	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	if (a.samples) {
 		long rows;
-		if (runlog_read_loads(a.samples, &lam, &nlam, err) != SW_OK ||
+		if (runlog_read_loads(a.samples, w, &lam, &nlam, err) != SW_OK ||
 		    runlog_read_positions(a.samples, w, &xi, &rows, err) !=
 		    SW_OK) {
 			fprintf(stderr, "%s\n", err);

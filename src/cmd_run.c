@@ -495,7 +495,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_string(&j, r->a->positions ? "replay" :
 		    r->w->anywhere ? "anywhere" : "depth");
 	json_key(&j, "seed");
-	json_int(&j, (long long)r->cfg->seed);
+	json_uint(&j, r->cfg->seed);
 	json_key(&j, "depth");
 	if (r->a->positions || r->w->anywhere)
 		json_null(&j);

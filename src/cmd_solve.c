@@ -215,9 +215,10 @@ int cmd_solve(int argc, char **argv)
 						       optarg);
 			break;
 		case 't':
-			if (cli_parse_double(optarg, &tlim) || tlim <= 0)
+			if (cli_parse_time_limit(optarg, &tlim))
 				return cli_usage_error("solve",
-						       "--time-limit takes a positive number of seconds");
+						       "--time-limit: '%s' is not a number of seconds "
+						       "> 0 and <= %g", optarg, CLI_TIME_LIMIT_MAX);
 			break;
 		case 'h':
 			usage(stdout);

@@ -11,6 +11,11 @@
  * until the grid has no more cells than about four per item, so the cost
  * is linear for walls of similar-sized blocks (a long ground edge just
  * covers many cells).
+ *
+ * Tolerances are relative to the blocks involved (wall_block.size), never
+ * to the whole wall: a support far away must not make a real overlap or a
+ * gap pass.  Contacts are found between the corners of each polygon
+ * (geom_prune), so a vertex in the middle of an edge changes nothing.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -18,31 +23,49 @@
 
 #include "slipwall/geom.h"
 
+/* The power of two nearest above the largest |v| of n numbers (1 for
+ * none, zeros or non-finite ones).  Scaling by it is exact, so sums of
+ * products of scaled numbers round exactly as the unscaled ones would,
+ * but neither overflow nor underflow for polygons of 1e-150 or 1e100 m. */
+static double pow2_scale(const double *v, int n, double sub0, double sub1)
+{
+	double m = 0;
+	for (int i = 0; i < n; i++)
+		m = fmax(m, fabs(v[i] - (i % 2 ? sub1 : sub0)));
+	if (!(m > 0) || !isfinite(m))
+		return 1;
+	int e;
+	frexp(m, &e);
+	return ldexp(1, e);
+}
+
 double geom_area(const double *xy, int nv)
 {
-	double a = 0;
+	double s = pow2_scale(xy, 2 * nv, 0, 0), a = 0;
 	for (int i = 0; i < nv; i++) {
 		int j = (i + 1) % nv;
-		a += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+		a += (xy[2 * i] / s) * (xy[2 * j + 1] / s) -
+		     (xy[2 * j] / s) * (xy[2 * i + 1] / s);
 	}
-	return a / 2;
+	return a / 2 * s * s;
 }
 
 void geom_centroid(const double *xy, int nv, double *cx, double *cy)
 {
 	/* relative to the first vertex, for accuracy far from the origin */
 	double x0 = xy[0], y0 = xy[1], a = 0, sx = 0, sy = 0;
+	double s = pow2_scale(xy, 2 * nv, x0, y0);
 	for (int i = 0; i < nv; i++) {
 		int j = (i + 1) % nv;
-		double xi = xy[2 * i] - x0, yi = xy[2 * i + 1] - y0;
-		double xj = xy[2 * j] - x0, yj = xy[2 * j + 1] - y0;
+		double xi = (xy[2 * i] - x0) / s, yi = (xy[2 * i + 1] - y0) / s;
+		double xj = (xy[2 * j] - x0) / s, yj = (xy[2 * j + 1] - y0) / s;
 		double c = xi * yj - xj * yi;
 		a += c;
 		sx += (xi + xj) * c;
 		sy += (yi + yj) * c;
 	}
-	*cx = x0 + sx / (3 * a);
-	*cy = y0 + sy / (3 * a);
+	*cx = x0 + sx / (3 * a) * s;
+	*cy = y0 + sy / (3 * a) * s;
 }
 
 enum geom_shape geom_check_polygon(const double *xy, int nv, double tol)
@@ -80,6 +103,44 @@ enum geom_shape geom_check_polygon(const double *xy, int nv, double tol)
 	if (fabs(turn - 2 * M_PI) > 1e-6)
 		return GEOM_NONCONVEX;
 	return GEOM_OK;
+}
+
+int geom_prune(const double *xy, int nv, double tol, double *out)
+{
+	char *corner = sw_xmalloc((size_t)nv + 1);
+	int start = -1, m = 0;
+	for (int i = 0; i < nv; i++) {
+		const double *p = xy + 2 * ((i + nv - 1) % nv), *q = xy + 2 * i,
+			     *r = xy + 2 * ((i + 1) % nv);
+		double ex = r[0] - p[0], ey = r[1] - p[1];
+		double cr = ex * (q[1] - p[1]) - ey * (q[0] - p[0]);
+		/* q's distance from the line p r, and q between p and r */
+		double dt = ex * (q[0] - p[0]) + ey * (q[1] - p[1]);
+		corner[i] = !(fabs(cr) <= tol * hypot(ex, ey) && dt > 0 &&
+			      dt < ex * ex + ey * ey);
+		if (!corner[i])
+			continue;
+		m++;
+		if (start < 0 || q[1] < xy[2 * start + 1] ||
+		    (q[1] == xy[2 * start + 1] && q[0] < xy[2 * start]))
+			start = i;
+	}
+	if (m < 3) {		/* not a polygon to prune: keep it whole */
+		memcpy(out, xy, sizeof(double) * 2 * (size_t)nv);
+		free(corner);
+		return nv;
+	}
+	m = 0;
+	for (int k = 0; k < nv; k++) {
+		int i = (start + k) % nv;
+		if (!corner[i])
+			continue;
+		out[2 * m] = xy[2 * i];
+		out[2 * m + 1] = xy[2 * i + 1];
+		m++;
+	}
+	free(corner);
+	return m;
 }
 
 const char *geom_shape_text(enum geom_shape s)
@@ -283,7 +344,7 @@ static int grid_pairs(const struct box *bx, int n,
 
 struct overlap_ctx {
 	const struct wall *w;
-	double tol;
+	double rel;		/* tolerance, relative to the smaller block */
 	int i, j;
 };
 
@@ -293,7 +354,8 @@ static int overlap_pair(int a, int b, void *vctx)
 	const struct wall_block *A = &c->w->blocks[a], *B = &c->w->blocks[b];
 	if (A->fixed && B->fixed)
 		return 0;
-	if (!geom_overlap(A->xy, A->nv, B->xy, B->nv, c->tol))
+	double tol = c->rel * fmin(A->size, B->size);
+	if (!geom_overlap(A->xy, A->nv, B->xy, B->nv, tol))
 		return 0;
 	c->i = a < b ? a : b;
 	c->j = a < b ? b : a;
@@ -316,12 +378,12 @@ static struct box poly_box(const double *xy, int nv, double pad)
 	return b;
 }
 
-int geom_find_overlap(const struct wall *w, double tol, int *i, int *j)
+int geom_find_overlap(const struct wall *w, double rel, int *i, int *j)
 {
 	struct box *bx = sw_xmalloc(sizeof *bx * (size_t)(w->nblocks + 1));
 	for (int k = 0; k < w->nblocks; k++)
 		bx[k] = poly_box(w->blocks[k].xy, w->blocks[k].nv, 0);
-	struct overlap_ctx c = {w, tol, -1, -1};
+	struct overlap_ctx c = {w, rel, -1, -1};
 	int found = grid_pairs(bx, w->nblocks, overlap_pair, &c);
 	free(bx);
 	if (found) {
@@ -338,12 +400,12 @@ struct edge {
 	double p[2], q[2];	/* p -> q counter-clockwise along the body */
 	double t[2];		/* unit direction */
 	double len;
+	double tol;		/* the body's tolerance, m */
 };
 
 struct contact_ctx {
 	const struct wall *w;
 	const struct edge *e;
-	double tol;
 	struct wall_interface *out;
 	int n, cap;
 };
@@ -359,17 +421,18 @@ static int contact_pair(int ea, int eb, void *vctx)
 	/* opposite directions: outward normals opposite */
 	if (A->t[0] * B->t[0] + A->t[1] * B->t[1] > -1 + 1e-9)
 		return 0;
+	double tol = fmin(A->tol, B->tol);
 	/* collinear: B's ends on A's line */
 	double nx = A->t[1], ny = -A->t[0];	/* outward normal of A */
 	double d1 = (B->p[0] - A->p[0]) * nx + (B->p[1] - A->p[1]) * ny;
 	double d2 = (B->q[0] - A->p[0]) * nx + (B->q[1] - A->p[1]) * ny;
-	if (fabs(d1) > c->tol || fabs(d2) > c->tol)
+	if (fabs(d1) > tol || fabs(d2) > tol)
 		return 0;
 	/* overlap along A's direction */
 	double s1 = (B->q[0] - A->p[0]) * A->t[0] + (B->q[1] - A->p[1]) * A->t[1];
 	double s2 = (B->p[0] - A->p[0]) * A->t[0] + (B->p[1] - A->p[1]) * A->t[1];
 	double lo = fmax(0, fmin(s1, s2)), hi = fmin(A->len, fmax(s1, s2));
-	if (hi - lo <= c->tol)
+	if (hi - lo <= tol)
 		return 0;
 	/* a = the lower-numbered body, n its outward normal */
 	const struct edge *E = A->body < B->body ? A : B;
@@ -425,24 +488,34 @@ static int iface_cmp(const void *pa, const void *pb)
 	return (sa > sb) - (sa < sb);
 }
 
-int geom_contacts(const struct wall *w, double tol, struct wall_interface **out)
+int geom_contacts(const struct wall *w, double rel,
+		  struct wall_interface **out)
 {
-	int ne = 0;
-	for (int k = 0; k < w->nblocks; k++)
+	int ne = 0, maxnv = 0;
+	for (int k = 0; k < w->nblocks; k++) {
 		ne += w->blocks[k].nv;
+		if (w->blocks[k].nv > maxnv)
+			maxnv = w->blocks[k].nv;
+	}
 	struct edge *e = sw_xmalloc(sizeof *e * (size_t)(ne + 1));
 	struct box *bx = sw_xmalloc(sizeof *bx * (size_t)(ne + 1));
+	double *xy = sw_xmalloc(sizeof(double) * 2 * (size_t)(maxnv + 1));
 	int m = 0;
 	for (int k = 0; k < w->nblocks; k++) {
 		const struct wall_block *B = &w->blocks[k];
-		for (int i = 0; i < B->nv; i++) {
-			int j = (i + 1) % B->nv;
+		/* the corners only: a vertex in the middle of an edge would
+		 * split one shared boundary into two interfaces */
+		double tol = rel * B->size;
+		int nv = geom_prune(B->xy, B->nv, GEOM_PRUNE_REL * B->size, xy);
+		for (int i = 0; i < nv; i++) {
+			int j = (i + 1) % nv;
 			struct edge *E = &e[m];
 			E->body = k;
-			E->p[0] = B->xy[2 * i];
-			E->p[1] = B->xy[2 * i + 1];
-			E->q[0] = B->xy[2 * j];
-			E->q[1] = B->xy[2 * j + 1];
+			E->tol = tol;
+			E->p[0] = xy[2 * i];
+			E->p[1] = xy[2 * i + 1];
+			E->q[0] = xy[2 * j];
+			E->q[1] = xy[2 * j + 1];
 			E->len = hypot(E->q[0] - E->p[0], E->q[1] - E->p[1]);
 			if (E->len <= 0)
 				continue;
@@ -453,8 +526,9 @@ int geom_contacts(const struct wall *w, double tol, struct wall_interface **out)
 			m++;
 		}
 	}
-	struct contact_ctx c = {w, e, tol, NULL, 0, 0};
+	struct contact_ctx c = {w, e, NULL, 0, 0};
 	grid_pairs(bx, m, contact_pair, &c);
+	free(xy);
 	free(e);
 	free(bx);
 	if (c.n > 1)

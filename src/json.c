@@ -120,6 +120,12 @@ void json_int(struct json *j, long long v)
 	fprintf(j->f, "%lld", v);
 }
 
+void json_uint(struct json *j, unsigned long long v)
+{
+	pre_value(j);
+	fprintf(j->f, "%llu", v);
+}
+
 void json_bool(struct json *j, int v)
 {
 	pre_value(j);

@@ -329,6 +329,20 @@ static enum sw_status check_row(struct reader *r, int m, int *status,
 	return SW_OK;
 }
 
+/* The header's interfaces are the wall's: a file of another wall is
+ * refused, not read as this one's. */
+static enum sw_status check_wall(const struct reader *r, int m,
+				 const struct wall *w, char *err)
+{
+	if (m == w->nifaces)
+		return SW_OK;
+	char msg[200];
+	snprintf(msg, sizeof msg, "the file has the contact positions of %d "
+		 "interfaces, the wall has %d: a samples file of another wall?",
+		 m, w->nifaces);
+	return at(r, FIXED_COLS, err, msg);
+}
+
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 				     double **xi, long *rows, char *err)
 {
@@ -337,13 +351,8 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 		return SW_EINPUT;
 	int m;
 	enum sw_status st = read_header(&r, &m, err);
-	if (st == SW_OK && m != w->nifaces) {
-		char msg[160];
-		snprintf(msg, sizeof msg, "the file has the contact positions "
-			 "of %d interfaces, the wall has %d: a samples file of "
-			 "another wall?", m, w->nifaces);
-		st = at(&r, FIXED_COLS, err, msg);
-	}
+	if (st == SW_OK)
+		st = check_wall(&r, m, w, err);
 	double *x = NULL;
 	long n = 0, cap = 0;
 	size_t per = 2 * (size_t)m;
@@ -391,14 +400,16 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 	return SW_OK;
 }
 
-enum sw_status runlog_read_loads(const char *path, double **lam, long *n,
-				 char *err)
+enum sw_status runlog_read_loads(const char *path, const struct wall *w,
+				 double **lam, long *n, char *err)
 {
 	struct reader r;
 	if (reader_open(&r, path, err))
 		return SW_EINPUT;
 	int m;
 	enum sw_status st = read_header(&r, &m, err);
+	if (st == SW_OK)
+		st = check_wall(&r, m, w, err);
 	double *x = NULL;
 	long k = 0, cap = 0;
 	while (st == SW_OK) {

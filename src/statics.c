@@ -56,10 +56,14 @@ void statics_init(struct statics *s, const struct wall *w)
 				px = b->cx;
 				py = b->cy;
 			}
-			double m = (px - b->cx) * fy - (py - b->cy) * fx;
+			/* the moment with its lever over L, times S / F: the
+			 * products S * m and F * L overflow on a wall whose
+			 * weights and sizes are large (1e290 N and 1e20 m) */
+			double m = (px - b->cx) / s->L * fy -
+				   (py - b->cy) / s->L * fx;
 			s->fL[3 * b->eq] += s->S * fx / s->F;
 			s->fL[3 * b->eq + 1] += s->S * fy / s->F;
-			s->fL[3 * b->eq + 2] += s->S * m / (s->F * s->L);
+			s->fL[3 * b->eq + 2] += s->S / s->F * m;
 		}
 	}
 	for (int k = 0; k < w->nblocks; k++) {

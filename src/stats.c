@@ -175,6 +175,16 @@ void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 	s->mean = gsl_stats_mean(v, 1, n);
 	if (n >= 2)
 		s->std = gsl_stats_sd_m(v, 1, n, s->mean);
+	if (n >= 2 && !isfinite(s->std)) {
+		/* loads near the top of the doubles (a wall in odd units):
+		 * the squares overflow, so square them scaled */
+		double sc = fmax(fabs(v[0]), fabs(v[n - 1])), q = 0;
+		for (size_t i = 0; i < n; i++) {
+			double d = v[i] / sc - s->mean / sc;
+			q += d * d;
+		}
+		s->std = sc * sqrt(q / (double)(n - 1));
+	}
 	size_t lo, hi;
 	if (stats_quantile_ci_ranks(n, 0.05, STATS_P05_CONF, &lo, &hi) == 0) {
 		s->has_ci = 1;

@@ -4,7 +4,12 @@
  * The readers (wallfile.c, layout.c) and the tests add blocks and loads;
  * wall_finish() then derives everything the solvers read and refuses
  * models that are geometrically impossible, pointing at the offending
- * item of the file.  Tolerances are relative to the wall's size.
+ * item of the file.  Tolerances are relative to the blocks involved (a
+ * block's size: its largest extent), never to the whole wall, whose span
+ * a far support can make as large as it likes.  Every derived number
+ * (extent, area, centroid, weight, their sums, the reference load) is
+ * checked finite, so that an overflow is a message naming the input and
+ * not a NaN in the results.
  */
 #include <float.h>
 #include <math.h>
@@ -93,15 +98,27 @@ void wall_where(const struct wall *w, struct wall_mark m, char *buf,
 
 #define WHERE(m) (wall_where(w, (m), where, sizeof where), where)
 
+int wall_id_reserved(const char *id)
+{
+	return !strcmp(id, "ground");
+}
+
+/* The mark of a material value, or the block's when it was not given. */
+static struct wall_mark mark_or(struct wall_mark m, struct wall_mark other)
+{
+	return m.line > 0 ? m : other;
+}
+
 /* The block that a point load at p in direction d acts on: the one that
  * contains p; on a shared boundary, the one the force pushes into, else
  * the one it pulls out of. */
 static int load_block(const struct wall *w, const double *p, const double *d,
-		      double tol)
+		      double rel)
 {
 	int first = -1;
 	for (int k = 0; k < w->nblocks; k++) {
 		const struct wall_block *b = &w->blocks[k];
+		double tol = rel * b->size;
 		if (!geom_contains(b->xy, b->nv, p[0], p[1], tol))
 			continue;
 		if (first < 0)
@@ -115,7 +132,7 @@ static int load_block(const struct wall *w, const double *p, const double *d,
 		return -1;
 	for (int k = 0; k < w->nblocks; k++) {
 		const struct wall_block *b = &w->blocks[k];
-		double eps = 1e3 * tol;
+		double tol = rel * b->size, eps = 1e3 * tol;
 		if (geom_contains(b->xy, b->nv, p[0], p[1], tol) &&
 		    geom_contains(b->xy, b->nv, p[0] - eps * d[0],
 				  p[1] - eps * d[1], -tol))
@@ -200,41 +217,103 @@ enum sw_status wall_finish(struct wall *w, char *err)
 	if (w->finished)
 		return SW_OK;
 
-	/* size of the wall, for tolerances */
+	/* the extent of the wall (for the ground) and of each block (for
+	 * its tolerances) */
 	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-	int nfree = 0;
+	int nfree = 0, maxnv = 0;
 	for (int k = 0; k < w->nblocks; k++) {
-		const struct wall_block *b = &w->blocks[k];
+		struct wall_block *b = &w->blocks[k];
+		double bx0 = INFINITY, by0 = INFINITY, bx1 = -INFINITY,
+		       by1 = -INFINITY;
 		for (int i = 0; i < b->nv; i++) {
 			if (!isfinite(b->xy[2 * i]) || !isfinite(b->xy[2 * i + 1]))
 				return sw_fail(err, SW_EINPUT,
 					       "%sblock '%s' has a vertex that is not a finite number",
 					       WHERE(b->mark), b->id);
-			x0 = fmin(x0, b->xy[2 * i]);
-			y0 = fmin(y0, b->xy[2 * i + 1]);
-			x1 = fmax(x1, b->xy[2 * i]);
-			y1 = fmax(y1, b->xy[2 * i + 1]);
+			bx0 = fmin(bx0, b->xy[2 * i]);
+			by0 = fmin(by0, b->xy[2 * i + 1]);
+			bx1 = fmax(bx1, b->xy[2 * i]);
+			by1 = fmax(by1, b->xy[2 * i + 1]);
 		}
+		b->size = fmax(bx1 - bx0, by1 - by0);
+		if (!isfinite(b->size))
+			return sw_fail(err, SW_EINPUT,
+				       "%s%s '%s' is too large: its coordinates "
+				       "span more than a double can hold",
+				       WHERE(b->mark),
+				       b->fixed ? "support" : "block", b->id);
+		if (wall_id_reserved(b->id))
+			return sw_fail(err, SW_EINPUT,
+				       "%s'%s' is a reserved name (the program's "
+				       "own foundation support): give this %s "
+				       "another id", WHERE(b->mark), b->id,
+				       b->fixed ? "support" : "block");
+		x0 = fmin(x0, bx0);
+		y0 = fmin(y0, by0);
+		x1 = fmax(x1, bx1);
+		y1 = fmax(y1, by1);
 		nfree += !b->fixed;
+		if (b->nv > maxnv)
+			maxnv = b->nv;
 	}
 	if (nfree == 0)
 		return sw_fail(err, SW_EINPUT, "%sthe wall has no blocks",
 			       WHERE(none));
 	double span = fmax(x1 - x0, y1 - y0);
-	double tol = 1e-9 * span;
+	if (!isfinite(span) || !isfinite(1.2 * span + fmax(fabs(x0), fabs(x1))))
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe wall is too large: its coordinates span "
+			       "more than a double can hold", WHERE(none));
+	for (int f = 0; f < 2; f++) {
+		double mu = f ? w->mu_head : w->mu_bed;
+		if (mu > WALL_FRICTION_MAX)
+			return sw_fail(err, SW_EINPUT,
+				       "%sfriction %g is above %g: larger "
+				       "coefficients change nothing physically "
+				       "and are beyond the accuracy of the LPs; "
+				       "to forbid sliding use friction: %g",
+				       WHERE(w->friction_mark[f]), mu,
+				       WALL_FRICTION_MAX, WALL_FRICTION_MAX);
+	}
 
-	/* each polygon: convex, counter-clockwise; ids unique */
+	/* each polygon: convex, counter-clockwise; ids unique.  Area and
+	 * centroid of its corners alone (geom_prune), so that a vertex in
+	 * the middle of an edge does not change them by a rounding. */
+	double *corners = sw_xmalloc(sizeof(double) * 2 * (size_t)(maxnv + 1));
 	for (int k = 0; k < w->nblocks; k++) {
 		struct wall_block *b = &w->blocks[k];
+		double tol = GEOM_PRUNE_REL * b->size;
+		if (!isfinite(geom_area(b->xy, b->nv))) {
+			free(corners);
+			return sw_fail(err, SW_EINPUT,
+				       "%s%s '%s' is too large: its area "
+				       "overflows a double", WHERE(b->mark),
+				       b->fixed ? "support" : "block", b->id);
+		}
 		enum geom_shape s = geom_check_polygon(b->xy, b->nv, tol);
-		if (s != GEOM_OK)
+		if (s != GEOM_OK) {
+			free(corners);
 			return sw_fail(err, SW_EINPUT, "%s%s '%s' is %s",
 				       WHERE(b->mark),
 				       b->fixed ? "support" : "block", b->id,
 				       geom_shape_text(s));
-		b->area = geom_area(b->xy, b->nv);
-		geom_centroid(b->xy, b->nv, &b->cx, &b->cy);
+		}
+		int nc = geom_prune(b->xy, b->nv, tol, corners);
+		b->area = geom_area(corners, nc);
+		geom_centroid(corners, nc, &b->cx, &b->cy);
+		if (!isfinite(b->area) || !isfinite(b->cx) || !isfinite(b->cy) ||
+		    !isnormal(b->area)) {
+			free(corners);
+			return sw_fail(err, SW_EINPUT,
+				       "%s%s '%s' is too %s: its area (%g m^2) "
+				       "is beyond the normal doubles (%g to "
+				       "%g): use other units", WHERE(b->mark),
+				       b->fixed ? "support" : "block", b->id,
+				       isnormal(b->area) ? "large" : "small",
+				       b->area, DBL_MIN, DBL_MAX);
+		}
 	}
+	free(corners);
 	int dup = duplicate_id(w);
 	if (dup >= 0)
 		return sw_fail(err, SW_EINPUT, "%sblock id '%s' is used twice",
@@ -244,6 +323,7 @@ enum sw_status wall_finish(struct wall *w, char *err)
 	if (w->has_ground) {
 		for (int k = 0; k < w->nblocks; k++) {
 			const struct wall_block *b = &w->blocks[k];
+			double tol = GEOM_PRUNE_REL * b->size;
 			for (int i = 0; i < b->nv && !b->fixed; i++)
 				if (b->xy[2 * i + 1] < w->ground_y - tol)
 					return sw_fail(err, SW_EINPUT,
@@ -252,6 +332,11 @@ enum sw_status wall_finish(struct wall *w, char *err)
 						       w->ground_y);
 		}
 		double pad = 0.1 * span, depth = 0.1 * span;
+		if (!isfinite(w->ground_y - depth))
+			return sw_fail(err, SW_EINPUT,
+				       "%sthe ground at y = %g is too far down: "
+				       "its slab overflows a double",
+				       WHERE(w->ground_mark), w->ground_y);
 		double g[8] = {x0 - pad, w->ground_y - depth,
 			       x1 + pad, w->ground_y - depth,
 			       x1 + pad, w->ground_y,
@@ -259,12 +344,13 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		w->ground_block = wall_add_block(w, "ground", g, 4, 1,
 						 w->ground_mark);
 		struct wall_block *gb = &w->blocks[w->ground_block];
+		gb->size = fmax(x1 - x0 + 2 * pad, depth);
 		gb->area = geom_area(g, 4);
 		geom_centroid(g, 4, &gb->cx, &gb->cy);
 	}
 
 	int oi, oj;
-	if (geom_find_overlap(w, 1e-6 * span, &oi, &oj)) {
+	if (geom_find_overlap(w, 1e-6, &oi, &oj)) {
 		const struct wall_block *b = &w->blocks[oj];
 		if (w->blocks[oj].fixed && !w->blocks[oi].fixed)
 			b = &w->blocks[oi];
@@ -288,6 +374,25 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		b->eq = w->nfree++;
 		w->total_weight += b->weight;
 		area_sum += b->area;
+		if (isfinite(b->weight) && !isnormal(b->weight))
+			return sw_fail(err, SW_EINPUT,
+				       "%sthe weight of block '%s' (%g N) is "
+				       "below the normal doubles (%g): use "
+				       "larger units or values",
+				       WHERE(mark_or(w->unit_weight_mark,
+						     b->mark)),
+				       b->id, b->weight, DBL_MIN);
+		if (!isfinite(b->weight) || !isfinite(w->total_weight) ||
+		    !isfinite(area_sum))
+			return sw_fail(err, SW_EINPUT,
+				       "%sthe weight of %s overflows a double "
+				       "(unit_weight %g N/m^3 x area %g m^2 x "
+				       "thickness %g m): use smaller units or "
+				       "values", WHERE(mark_or(w->unit_weight_mark,
+							      b->mark)),
+				       isfinite(b->weight) ? "the blocks"
+							   : "a block",
+				       w->unit_weight, b->area, w->thickness);
 	}
 	w->mean_weight = w->total_weight / w->nfree;
 	w->mean_size = sqrt(area_sum / w->nfree);
@@ -296,9 +401,9 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			       "%sthe blocks weigh nothing (unit weight %g N/m^3, thickness %g m)",
 			       WHERE(none), w->unit_weight, w->thickness);
 
-	/* interfaces; tolerance relative to the block size */
+	/* interfaces; tolerance relative to the blocks involved */
 	free(w->ifaces);
-	w->nifaces = geom_contacts(w, 1e-6 * w->mean_size, &w->ifaces);
+	w->nifaces = geom_contacts(w, 1e-6, &w->ifaces);
 	int nsupports = 0;
 	for (int k = 0; k < w->nblocks; k++)
 		nsupports += w->blocks[k].fixed;
@@ -343,7 +448,7 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			ld->block = -1;
 			continue;
 		}
-		ld->block = load_block(w, ld->at, ld->dir, tol);
+		ld->block = load_block(w, ld->at, ld->dir, GEOM_PRUNE_REL);
 		if (ld->block < 0)
 			return sw_fail(err, SW_EINPUT,
 				       "%sload point (%g, %g) is outside every block",
@@ -354,6 +459,32 @@ enum sw_status wall_finish(struct wall *w, char *err)
 				       WHERE(ld->mark), ld->at[0], ld->at[1],
 				       w->blocks[ld->block].id);
 	}
+	/* the reference live load, summed (the body loads scale the total
+	 * weight): finite, or every load factor is a NaN */
+	double live = 0;
+	for (int l = 0; l < w->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		live += ld->kind == LOAD_POINT ? ld->magnitude
+					       : ld->magnitude * w->total_weight;
+		if (!isfinite(live))
+			return sw_fail(err, SW_EINPUT,
+				       "%sthe live load overflows a double "
+				       "(magnitude %g%s): use a smaller "
+				       "magnitude", WHERE(ld->mark),
+				       ld->magnitude,
+				       ld->kind == LOAD_POINT ? ""
+					       : " x the weight of the wall");
+	}
+	/* the LPs scale the live load to the weights: their ratio must be
+	 * a normal double both ways */
+	if (!isnormal(live / w->mean_weight) ||
+	    !isnormal(w->mean_weight / live))
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe live load (%g N at load factor 1) and "
+			       "the weights (%g N a block) are too far apart "
+			       "for a double: use a magnitude nearer the "
+			       "weights", WHERE(w->loads[0].mark), live,
+			       w->mean_weight);
 	w->finished = 1;
 	return SW_OK;
 }

@@ -472,15 +472,20 @@ static int read_material(struct reader *r, yaml_node_t *n)
 		    reader_number_in(r, f[1], "friction (head)", 0, 0, INFINITY,
 				     &w->mu_head))
 			return -1;
+		w->friction_mark[0] = mark_of(f[0]);
+		w->friction_mark[1] = mark_of(f[1]);
 	} else if (v[0]) {
 		if (reader_number_in(r, v[0], "friction", 0, 0, INFINITY,
 				     &w->mu_bed))
 			return -1;
 		w->mu_head = w->mu_bed;
+		w->friction_mark[0] = w->friction_mark[1] = mark_of(v[0]);
 	}
 	if (v[1] && reader_number_in(r, v[1], "unit_weight", 0, 1, INFINITY,
 				     &w->unit_weight))
 		return -1;
+	if (v[1])
+		w->unit_weight_mark = mark_of(v[1]);
 	if (v[2] && reader_number_in(r, v[2], "thickness", 0, 1, INFINITY,
 				     &w->thickness))
 		return -1;
@@ -564,6 +569,10 @@ static int read_blocks(struct reader *r, yaml_node_t *n)
 			return -1;
 		if (v[0] && !(id = reader_string(r, v[0], "id")))
 			return -1;
+		if (id && wall_id_reserved(id))
+			return FAIL(r, v[0], "'%s' is a reserved name (the "
+				    "program's own foundation support): give "
+				    "this block another id", id);
 		if (!v[1])
 			return FAIL(r, b, "a block needs 'vertices'");
 		if (reader_polygon(r, v[1], "vertices", &xy, &nv))
@@ -612,6 +621,11 @@ static int read_supports(struct reader *r, yaml_node_t *n, int polygons)
 			int nv;
 			if (v[2] && !(id = reader_string(r, v[2], "id")))
 				return -1;
+			if (id && wall_id_reserved(id))
+				return FAIL(r, v[2], "'%s' is a reserved name "
+					    "(the program's own foundation "
+					    "support): give this support "
+					    "another id", id);
 			if (reader_polygon(r, v[1], "vertices", &xy, &nv))
 				return -1;
 			wall_add_block(w, id, xy, nv, 1, mark_of(s));
@@ -719,7 +733,7 @@ static int read_analysis(struct reader *r, yaml_node_t *n)
 		r->w->samples = (int)x;
 	}
 	if (v[1]) {
-		if (reader_integer(r, v[1], "seed", 0, ULONG_MAX, &x))
+		if (reader_integer(r, v[1], "seed", 0, WALL_SEED_MAX, &x))
 			return -1;
 		r->w->seed = (unsigned long)x;
 	}

@@ -18,6 +18,8 @@ cd "$(dirname "$0")/.." || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 demo=walls/demo.yaml
+# the hand-made samples files below have one interface: the single block's
+one=walls/single-block.yaml
 
 # ---- KS against a brute-force permutation test --------------------------------
 # model x = {1, 2, 2, 3, 5} (two rejected rows are skipped),
@@ -33,7 +35,7 @@ sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1
 6,accepted,9,5,3,0.1,0.9
 EOF
 printf '# experimental loads, N\n2\n3   # two equal loads\n\n  3\n4\n' >"$tmp/tests.txt"
-"$bin" compare $demo --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
 	--json >"$tmp/ks.json" 2>"$tmp/ks.err"
 rc=$?
 check "compare --samples --tests --json: exit 0" [ $rc -eq 0 ]
@@ -83,14 +85,14 @@ check "model = 5 accepted loads of the file, tests = 4 loads of the file" \
 sys.exit(not (d["model"]["accepted"]==5 and d["tests"]["n"]==4 and d["tests"]["lambda"]["p50"]==3 and d["tests"]["p05_ci99"] is None))' "$tmp/ks.json"
 
 # the same loads from the wall's tests: key
-{ cat $demo; printf 'tests:\n  loads: [2, 3, 3, 4]\n'; } >"$tmp/withtests.yaml"
+{ cat $one; printf 'tests:\n  loads: [2, 3, 3, 4]\n'; } >"$tmp/withtests.yaml"
 "$bin" compare "$tmp/withtests.yaml" --samples "$tmp/model.csv" --json \
 	>"$tmp/ks2.json" 2>/dev/null
 check "the wall's tests: key gives the same KS result as the file" \
 	python3 -c 'import json,sys; a=json.load(open(sys.argv[1]))["ks"]; b=json.load(open(sys.argv[2]))["ks"]; sys.exit(a!=b)' \
 	"$tmp/ks.json" "$tmp/ks2.json"
 
-"$bin" compare $demo --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
 	>"$tmp/ks.txt" 2>&1
 ok_txt=1
 for s in "p05 (characteristic)" "99 % interval" "no interval: needs at least 90 values" \

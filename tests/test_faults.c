@@ -35,6 +35,7 @@
 #include <unistd.h>
 
 #include "slipwall/lp.h"
+#include "slipwall/mc.h"
 #include "slipwall/sample.h"
 #include "slipwall/wallfile.h"
 #include "tap.h"
@@ -168,7 +169,7 @@ static void one_sample_init(struct one_sample *x, const struct wall *w,
 	sample_result_init(&x->r0, w);
 	sample_result_init(&x->r, w);
 	x->xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	sample_positions(w, 1, index, -1, x->xi);
+	mc_positions(w, 1, index, -1, x->xi);
 	x->ws = sample_ws_new(w);
 	sample_run(x->ws, x->xi, &x->o, &x->r0);
 }
@@ -294,7 +295,7 @@ static void sample_at_scale(double f, int point, struct sample_result *rs)
 	struct sample_ws *ws = sample_ws_new(w);
 	for (int k = 0; k < SCALE_SAMPLES; k++) {
 		sample_result_init(&rs[k], w);
-		sample_positions(w, 5, (unsigned long)k, -1, xi);
+		mc_positions(w, 5, (unsigned long)k, -1, xi);
 		sample_run(ws, xi, &o, &rs[k]);
 		if (point) {	/* the load per unit weight */
 			rs[k].lambda_min /= w->total_weight;

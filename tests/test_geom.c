@@ -25,6 +25,17 @@ static void polygons(void)
 	tap_near(cx - 1e6, 0.1, 1e-9, "centroid 1e6 m from the origin: x");
 	tap_near(cy - 1e6, 0.05, 1e-9, "centroid 1e6 m from the origin: y");
 
+	/* nor underflow or overflow for polygons of 1e-150 and 1e140 m */
+	for (int k = 0; k < 2; k++) {
+		double f = k ? 1e140 : 1e-150, t[6] = {0, 0, 2 * f, 0, 0, f};
+		geom_centroid(t, 3, &cx, &cy);
+		tap_ok(fabs(geom_area(t, 3) / (f * f) - 1) < 1e-15 &&
+		       fabs(cx / f - 2.0 / 3) < 1e-15 &&
+		       fabs(cy / f - 1.0 / 3) < 1e-15,
+		       "the triangle at %g times its size: area and centroid "
+		       "scale", f);
+	}
+
 	double cw[8] = {0, 0, 0, 1, 1, 1, 1, 0};
 	double lshape[12] = {0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2};
 	double bowtie[8] = {0, 0, 1, 1, 1, 0, 0, 1};
@@ -47,6 +58,31 @@ static void polygons(void)
 	double over[8] = {0.9, 0, 2, 0, 2, 1, 0.9, 1};
 	tap_ok(!geom_overlap(sq, 4, right, 4, 1e-9), "squares sharing an edge do not overlap");
 	tap_ok(geom_overlap(sq, 4, over, 4, 1e-9), "squares overlapping by 0.1 overlap");
+}
+
+/* geom_prune: the corners of a polygon, whatever vertices lie on its
+ * edges and wherever its list starts. */
+static void corners(void)
+{
+	/* the unit square with a vertex in the middle of two edges, its list
+	 * starting at one of them, and two consecutive ones on the top */
+	double split[16] = {0.5, 0, 1, 0, 1, 0.3, 1, 1, 0.75, 1, 0.25, 1,
+			    0, 1, 0, 0};
+	double want[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+	double out[16];
+	int n = geom_prune(split, 8, 1e-12, out);
+	int same = n == 4;
+	for (int i = 0; same && i < 8; i++)
+		same = out[i] == want[i];
+	tap_ok(same, "a square with 4 vertices on its edges: its 4 corners, "
+	       "from the lower left (got %d)", n);
+	/* a vertex off the line by more than the tolerance is a corner */
+	double bent[10] = {0, 0, 0.5, -1e-6, 1, 0, 1, 1, 0, 1};
+	tap_ok(geom_prune(bent, 5, 1e-9, out) == 5 &&
+	       geom_prune(bent, 5, 1e-5, out) == 4,
+	       "a vertex 1e-6 off the edge: a corner at tolerance 1e-9, not "
+	       "at 1e-5");
+	tap_ok(geom_area(out, 4) == 1, "... and the pruned square's area is 1");
 }
 
 /* Ferris & Tin-Loi wall 1, by hand: 33 blocks.  Head joints: three
@@ -111,6 +147,7 @@ static void large(void)
 int main(void)
 {
 	polygons();
+	corners();
 	ferris_tinloi_contacts();
 	large();
 	return tap_done();

@@ -5,8 +5,11 @@
  * ends the stream with a gap-free prefix; the counters add up; a pool
  * that computes a share (first, first + stride, ...: an MPI rank's)
  * gives exactly those samples of the whole run; and the positions scale
- * with the depth (the common random numbers of compare --fit-depth).
+ * with the depth (the common random numbers of compare --fit-depth);
+ * a million samples of one run draw from a million distinct streams.
  */
+#include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -134,9 +137,9 @@ static void test_order(const struct wall *w)
 
 	/* positions depend on (seed, index) only */
 	double *xi = malloc(nxi * sizeof(double));
-	sample_positions(w, 12345, 17, -1, xi);
+	mc_positions(w, 12345, 17, -1, xi);
 	tap_ok(!memcmp(xi, r3.xi + 17 * nxi, nxi * sizeof(double)),
-	       "sample 17's positions are sample_positions(seed, 17)");
+	       "sample 17's positions are mc_positions(seed, 17)");
 	free(xi);
 	free_run(&r1);
 	free_run(&r3);
@@ -256,9 +259,9 @@ static void test_depth(const struct wall *w)
 	double *z = malloc(nxi * sizeof(double));
 	int ok = 1;
 	for (unsigned long i = 0; i < 20; i++) {
-		sample_positions(w, 3, i, 0.1, a);
-		sample_positions(w, 3, i, 0.4, b);
-		sample_positions(w, 3, i, 0.0, z);
+		mc_positions(w, 3, i, 0.1, a);
+		mc_positions(w, 3, i, 0.4, b);
+		mc_positions(w, 3, i, 0.0, z);
 		for (size_t k = 0; k < nxi; k += 2) {
 			/* xa = d u1, xb = 1 - d u2 with the same u for every d */
 			ok &= fabs(4 * a[k] - b[k]) < 1e-15;
@@ -274,6 +277,69 @@ static void test_depth(const struct wall *w)
 	free(z);
 }
 
+static int pair_cmp(const void *pa, const void *pb)
+{
+	const double *a = pa, *b = pb;
+	if (a[0] != b[0])
+		return a[0] < b[0] ? -1 : 1;
+	return (a[1] > b[1]) - (a[1] < b[1]);
+}
+
+/* Pairs equal to their successor in a sorted array of n pairs. */
+static long equal_pairs(double *p, long n)
+{
+	qsort(p, (size_t)n, 2 * sizeof(double), pair_cmp);
+	long eq = 0;
+	for (long i = 1; i < n; i++)
+		eq += p[2 * i] == p[2 * i - 2] && p[2 * i + 1] == p[2 * i - 1];
+	return eq;
+}
+
+/* Each sample's stream is seeded with its full 64-bit seed: a million
+ * samples of one run are a million distinct streams (32 bits of seed, as
+ * GSL's mt19937 kept, give about 116 equal pairs: n^2 / 2^33).  Checked
+ * on the streams' first two uniforms and on the positions themselves,
+ * for a seed with high bits set. */
+#define MANY 1000000L
+static void test_streams(void)
+{
+	struct mc_rng r;
+	/* the reference outputs of xoshiro256** from the state {1, 2, 3, 4} */
+	memcpy(r.s, (uint64_t[4]){1, 2, 3, 4}, sizeof r.s);
+	uint64_t x0 = mc_rng_next(&r), x1 = mc_rng_next(&r);
+	uint64_t x2 = mc_rng_next(&r), x3 = mc_rng_next(&r);
+	tap_ok(x0 == 11520 && x1 == 0 && x2 == 1509978240 &&
+	       x3 == 1215971899390074240ULL,
+	       "xoshiro256** gives its reference outputs");
+
+	char err[SW_ERRLEN];
+	struct wall *one;
+	if (wallfile_load(SRCDIR "/walls/single-block.yaml", &one, err) != SW_OK) {
+		tap_ok(0, "single-block wall: %s", err);
+		return;
+	}
+	double *u = malloc(sizeof(double) * 2 * MANY);
+	double *xi = malloc(sizeof(double) * 2 * MANY);
+	unsigned long seeds[] = {809873, 0xfedcba9876543210UL};
+	for (int s = 0; s < 2; s++) {
+		for (long i = 0; i < MANY; i++) {
+			mc_rng_seed(&r, seeds[s], (unsigned long)i);
+			u[2 * i] = mc_rng_uniform(&r);
+			u[2 * i + 1] = mc_rng_uniform(&r);
+			mc_positions(one, seeds[s], (unsigned long)i, -1,
+				     xi + 2 * i);
+		}
+		long eu = equal_pairs(u, MANY), ex = equal_pairs(xi, MANY);
+		tap_ok(eu == 0 && ex == 0 && one->nifaces == 1,
+		       "seed %lu: a million samples, a million distinct "
+		       "streams (%ld equal first pairs, %ld equal positions)",
+		       seeds[s], eu, ex);
+	}
+	free(u);
+	free(xi);
+	wall_free(one);
+}
+
 int main(void)
 {
 	char err[SW_ERRLEN];
@@ -286,6 +352,7 @@ int main(void)
 	test_stop(w);
 	test_share(w);
 	test_depth(w);
+	test_streams();
 	wall_free(w);
 	return tap_done();
 }

@@ -138,7 +138,7 @@ static void test_round_trip(void)
 	free(want);
 
 	double *lam = NULL;
-	st = runlog_read_loads(p, &lam, &n, err);
+	st = runlog_read_loads(p, &fake, &lam, &n, err);
 	int ok = st == SW_OK && n == 40;
 	for (long i = 0, k = 0; ok && i < rows; i++)
 		if (i % 5)
@@ -157,7 +157,7 @@ static void refused(const char *name, const char *text, int loads,
 	spit(p, text);
 	double *x = NULL;
 	long n = -1;
-	enum sw_status st = loads ? runlog_read_loads(p, &x, &n, err) :
+	enum sw_status st = loads ? runlog_read_loads(p, &fake, &x, &n, err) :
 			    runlog_read_positions(p, &fake, &x, &n, err);
 	char prefix[300];
 	snprintf(prefix, sizeof prefix, "%s:%s: ", p, where);
@@ -184,6 +184,15 @@ static void test_errors(void)
 	refused("otherwall.csv", "sample,status,lambda_max,lambda_min,"
 		"iterations,xa_1,xb_1\n0,accepted,1,1,1,0,1\n", 0, "1:48",
 		"of 1 interfaces, the wall has 2");
+	/* compare --samples and report --samples read the loads: a file of
+	 * another wall is refused there too, with fewer or more interfaces */
+	refused("otherwall-loads.csv", "sample,status,lambda_max,lambda_min,"
+		"iterations,xa_1,xb_1\n0,accepted,1,1,1,0,1\n", 1, "1:48",
+		"of 1 interfaces, the wall has 2");
+	refused("biggerwall-loads.csv", "sample,status,lambda_max,lambda_min,"
+		"iterations,xa_1,xb_1,xa_2,xb_2,xa_3,xb_3\n"
+		"0,accepted,1,1,1,0,1,0,1,0,1\n", 1, "1:48",
+		"of 3 interfaces, the wall has 2");
 	refused("norows.csv", HDR, 0, "2:1", "no samples");
 	refused("short.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2\n", 0, "2:29",
 		"8 fields, the header has 9");

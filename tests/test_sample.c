@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "slipwall/lp.h"
+#include "slipwall/mc.h"
 #include "slipwall/sample.h"
 #include "tap.h"
 #include "walls.h"
@@ -185,7 +186,7 @@ static void acceptance(void)
 		double *xi = malloc(sizeof(double) * 2 * (size_t)w->nifaces);
 		int count[SAMPLE_STATUS_COUNT] = {0};
 		for (int i = 0; i < 200; i++) {
-			sample_positions(w, 1, (unsigned long)i, -1, xi);
+			mc_positions(w, 1, (unsigned long)i, -1, xi);
 			sample_run(ws, xi, &o, &r);
 			count[r.status]++;
 		}
@@ -211,9 +212,9 @@ static void positions(void)
 	struct wall *w = tw_load_file("walls/ferris-tinloi-1.yaml");
 	size_t n = 2 * (size_t)w->nifaces;
 	double *a = malloc(sizeof(double) * n), *b = malloc(sizeof(double) * n);
-	sample_positions(w, 7, 42, -1, a);
-	sample_positions(w, 7, 41, -1, b);
-	sample_positions(w, 7, 42, -1, b);
+	mc_positions(w, 7, 42, -1, a);
+	mc_positions(w, 7, 41, -1, b);
+	mc_positions(w, 7, 42, -1, b);
 	int same = 1, in = 1;
 	for (size_t i = 0; i < n; i++) {
 		same &= a[i] == b[i];
@@ -224,7 +225,7 @@ static void positions(void)
 	}
 	tap_ok(same, "positions of (seed 7, sample 42) are reproducible");
 	tap_ok(in, "xi_a in [0, d], xi_b in [1 - d, 1] for d = 0.25");
-	sample_positions(w, 8, 42, -1, b);
+	mc_positions(w, 8, 42, -1, b);
 	tap_ok(a[0] != b[0], "another seed gives other positions");
 	free(a);
 	free(b);
@@ -239,8 +240,8 @@ static void history_free(void)
 	struct wall *w = tw_load_file("walls/demo.yaml");
 	size_t n = 2 * (size_t)w->nifaces;
 	double *a = malloc(sizeof(double) * n), *b = malloc(sizeof(double) * n);
-	sample_positions(w, 1, 5, -1, a);
-	sample_positions(w, 1, 6, -1, b);
+	mc_positions(w, 1, 5, -1, a);
+	mc_positions(w, 1, 6, -1, b);
 	struct sample_opts o;
 	sample_opts_default(&o);
 	struct sample_ws *ws = sample_ws_new(w), *fresh = sample_ws_new(w);
@@ -299,7 +300,7 @@ static void properties(void)
 		double *xi = classical(w);
 		sample_standard(ws, xi, &s);
 		double lam_std = s.lambda_max;
-		sample_positions(w, 99, (unsigned long)c, -1, xi);
+		mc_positions(w, 99, (unsigned long)c, -1, xi);
 		sample_run(ws, xi, &o, &r);
 		if (r.status == SAMPLE_ACCEPTED) {
 			accepted++;

@@ -11,6 +11,7 @@
 #include <stdlib.h>
 
 #include "slipwall/lp.h"
+#include "slipwall/mc.h"
 #include "slipwall/solve.h"
 #include "tap.h"
 #include "walls.h"
@@ -169,7 +170,7 @@ static void global_walls(void)
 		struct sample_result r;
 		sample_result_init(&r, w);
 		double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-		sample_positions(w, 3, (unsigned long)c, 0, xi);
+		mc_positions(w, 3, (unsigned long)c, 0, xi);
 		sample_run(ws, xi, &so, &r);
 		double smp = r.status == SAMPLE_ACCEPTED ? r.lambda_min : NAN;
 		double tol = 1e-6 * fmax(1, fabs(gil));

@@ -149,6 +149,17 @@ static void test_summary(void)
 	       "summary p05 99%% interval of 1..100 is [X(1), X(13)] = [1, 13]");
 	tap_ok(x[0] == 100 && x[99] == 1, "summary leaves its input alone");
 
+	/* loads near the top of the doubles (a wall in odd units): the
+	 * squares of the deviations overflow, the sd must not */
+	double huge[100];
+	for (int i = 0; i < 100; i++)
+		huge[i] = 1e306 * x[i];
+	struct stats_summary sb;
+	stats_summarise(huge, 100, &sb);
+	tap_near(sb.std, 1e306 * 29.011491975882016, 1e-12,
+		 "summary sd of 1e306 x (1..100) is 1e306 x sqrt(n(n+1)/12)");
+	tap_near(sb.mean, 1e306 * 50.5, 1e-13, "... and the mean is finite");
+
 	stats_summarise(x, 89, &s);
 	tap_ok(!s.has_ci && isnan(s.p05_lo) && isnan(s.p05_hi),
 	       "summary of 89 values has no p05 interval");

@@ -436,6 +436,13 @@ static void test_save(void)
 		   "analysis: {samples: 77, seed: 12345678901234}\n"
 		   "tests: {loads: [0.1, 312, 1e-3]}\n",
 		   "a layout wall with every section");
+	/* the largest seed (WALL_SEED_MAX) saves and loads exactly */
+	round_trip("material: {friction: 0.6}\n"
+		   "blocks: [{vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}]\n"
+		   "supports: [{ground: {y: 0}}]\n"
+		   "loads: [{point: {at: [0, 0.5], direction: [1, 0]}}]\n"
+		   "analysis: {seed: 18446744073709551615}\n",
+		   "seed 2^64 - 1");
 
 	char err[SW_ERRLEN];
 	struct wall *w = parse(small, err);

@@ -2,8 +2,8 @@
  * geom.h - plane geometry of convex polygons and contact detection.
  *
  * Polygons are arrays of 2*nv doubles (x0,y0,x1,y1,...).  Knows nothing of
- * YAML or LPs.  Tolerances are absolute lengths; callers pass one scaled
- * to the block size.
+ * YAML or LPs.  Tolerances of single polygons are absolute lengths;
+ * the wall-wide searches take them relative to each block's size.
  */
 #ifndef SLIPWALL_GEOM_H
 #define SLIPWALL_GEOM_H
@@ -27,25 +27,39 @@ enum geom_shape {
 enum geom_shape geom_check_polygon(const double *xy, int nv, double tol);
 const char *geom_shape_text(enum geom_shape s);
 
+/* The corners of a convex CCW polygon: its vertices without those that
+ * lie on the segment between their neighbours (within tol), starting at
+ * the lowest (then leftmost) corner, so that the same shape gives the
+ * same list whatever redundant vertices it carries and wherever its list
+ * starts.  out has room for 2*nv numbers; returns the count (nv, with
+ * the polygon copied as it is, when fewer than 3 corners remain). */
+int geom_prune(const double *xy, int nv, double tol, double *out);
+/* The tolerance of geom_prune relative to the polygon's size. */
+#define GEOM_PRUNE_REL 1e-9
+
 /* 1 if (px,py) lies in the closed convex CCW polygon (within tol). */
 int geom_contains(const double *xy, int nv, double px, double py, double tol);
 /* 1 if the interiors of two convex polygons overlap by more than tol
  * (separating-axis test). */
 int geom_overlap(const double *a, int na, const double *b, int nb, double tol);
 
-/* Find a pair of blocks of w whose interiors overlap by more than tol
- * (grid over bounding boxes, near-linear).  Returns 1 and sets *i < *j,
- * or 0 when no two blocks overlap. */
-int geom_find_overlap(const struct wall *w, double tol, int *i, int *j);
+/* Find a pair of blocks of w whose interiors overlap by more than rel
+ * times the size of the smaller of the two (wall_block.size; grid over
+ * bounding boxes, near-linear).  Returns 1 and sets *i < *j, or 0 when
+ * no two blocks overlap. */
+int geom_find_overlap(const struct wall *w, double rel, int *i, int *j);
 
 /* Find every interface between the blocks of w (shared boundary segments
  * of collinear edges with opposite outward normals, overlap longer than
- * tol).  Supports never touch supports.  Uses a uniform grid over edge
+ * the tolerance rel times the smaller block's size).  Edges run between
+ * corners (geom_prune), so one shared boundary of two bodies is one
+ * interface whatever vertices lie along it.  Supports never touch
+ * supports.  Uses a uniform grid over edge
  * bounding boxes, so the cost is linear in the number of edges for walls
  * of similar-sized blocks.  Fills a, b, p1, p2, len, t, n, kind; mu is
  * set from w->mu_bed / w->mu_head by kind (mu_bed for JOINT_OTHER).
  * Returns the count; *out is malloc'd (NULL when 0). */
-int geom_contacts(const struct wall *w, double tol,
+int geom_contacts(const struct wall *w, double rel,
 		  struct wall_interface **out);
 
 #endif

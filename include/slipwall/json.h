@@ -27,6 +27,8 @@ void json_key(struct json *j, const char *k);
 void json_string(struct json *j, const char *s);
 void json_double(struct json *j, double v);
 void json_int(struct json *j, long long v);
+/* An unsigned integer written exactly (seeds: up to 2^64 - 1). */
+void json_uint(struct json *j, unsigned long long v);
 void json_bool(struct json *j, int v);
 void json_null(struct json *j);
 /* Finish: newline after the top-level value. */

@@ -31,12 +31,14 @@ const char *runlog_path(const struct runlog *l);
 
 /* Read the contact positions of a samples file (for --positions):
  * *rows rows of 2 * w->nifaces numbers, malloc'd into *xi.  Errors are
- * "FILE:LINE:COLUMN: message", SW_EINPUT. */
+ * "FILE:LINE:COLUMN: message", SW_EINPUT; a file whose header has
+ * another number of interfaces than w is refused (another wall's). */
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 				     double **xi, long *rows, char *err);
-/* Read the accepted lambda_min column of a samples file (for report
- * and compare). */
-enum sw_status runlog_read_loads(const char *path, double **lam, long *n,
-				 char *err);
+/* Read the accepted lambda_min column of a samples file of wall w (for
+ * report and compare); refused like runlog_read_positions when its
+ * header does not have w's interfaces. */
+enum sw_status runlog_read_loads(const char *path, const struct wall *w,
+				 double **lam, long *n, char *err);
 
 #endif

@@ -18,6 +18,8 @@
 #ifndef SLIPWALL_WALL_H
 #define SLIPWALL_WALL_H
 
+#include <limits.h>
+
 #include "slipwall/status.h"
 
 enum joint_kind { JOINT_BED, JOINT_HEAD, JOINT_OTHER };
@@ -36,6 +38,7 @@ struct wall_block {
 	int fixed;		/* 1 for a support */
 	struct wall_mark mark;	/* where the block was declared */
 	/* derived by wall_finish(): */
+	double size;		/* m, largest extent (its tolerances' scale) */
 	double area;		/* m^2 */
 	double cx, cy;		/* centroid, m */
 	double weight;		/* N (0 for a support) */
@@ -76,6 +79,9 @@ struct wall {
 	double mu_bed, mu_head;	/* friction of bed and head joints */
 	double unit_weight;	/* gamma, N/m^3 */
 	double thickness;	/* out-of-plane t, m */
+	/* where friction (bed, head) and unit_weight were given, for the
+	 * messages of wall_finish (0: not given) */
+	struct wall_mark friction_mark[2], unit_weight_mark;
 	struct wall_layout layout;
 	int has_ground;
 	double ground_y;
@@ -90,7 +96,7 @@ struct wall {
 	double depth;		/* contacts.depth, 0..0.5 */
 	int anywhere;		/* contacts.positions: anywhere */
 	int samples;		/* analysis.samples */
-	unsigned long seed;	/* analysis.seed */
+	unsigned long seed;	/* analysis.seed, 0..WALL_SEED_MAX */
 	double *tests;		/* experimental collapse loads, N; owned */
 	int ntests;
 
@@ -103,6 +109,25 @@ struct wall {
 	double mean_size;	/* m, sqrt(mean free block area) (length scale) */
 	int finished;
 };
+
+/* The one range of seeds: the wall file, the command line (--seed), the
+ * JSON outputs (an exact integer) and the report all take and write every
+ * seed from 0 to 2^64 - 1. */
+#define WALL_SEED_MAX 18446744073709551615ULL
+_Static_assert(ULONG_MAX >= WALL_SEED_MAX,
+	       "a seed is an unsigned long of 64 bits");
+
+/* The largest friction coefficient a wall may have.  Larger ones are
+ * beyond the accuracy of the LPs (measured: Ferris & Tin-Loi wall 1 has
+ * "numerical" samples from 1e5) and change nothing physically: at 1000 a
+ * joint slides only within 0.06 degrees of the direction of its contact
+ * force.  docs/wall-format.md. */
+#define WALL_FRICTION_MAX 1000.0
+
+/* Ids the program gives bodies of its own ("ground", the foundation of
+ * `supports: [{ground: ...}]`): a block or support may not take one.
+ * Returns 1 for a reserved id. */
+int wall_id_reserved(const char *id);
 
 /* A new empty wall with the defaults of docs/wall-format.md. */
 struct wall *wall_new(void);

@@ -132,7 +132,7 @@ static void tui_file_json(struct tui *t, FILE *f, const char *wallpath)
 	else
 		json_null(&j);
 	json_key(&j, "seed");
-	json_int(&j, (long long)w->seed);
+	json_uint(&j, w->seed);
 	json_key(&j, "threads");
 	json_int(&j, t->threads);
 	json_key(&j, "target");
@@ -274,7 +274,7 @@ static void tui_file_report_to(struct tui *t, const char *dir)
 		return;
 	}
 	if (!t->run.csv[0] ||
-	    runlog_read_loads(t->run.csv, &lam, &n, err) != SW_OK) {
+	    runlog_read_loads(t->run.csv, t->w, &lam, &n, err) != SW_OK) {
 		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
 		return;
 	}

@@ -108,9 +108,9 @@ static void tui_run_spawn(struct tui *t)
 			return;
 		}
 		for (long i = 0; i < n; i++)
-			sample_positions(w, r->cfg.seed,
-					 (unsigned long)(r->done + i), -1,
-					 r->table + i * row);
+			mc_positions(w, r->cfg.seed,
+				     (unsigned long)(r->done + i), -1,
+				     r->table + i * row);
 		r->cfg.n = n;
 		r->cfg.positions = r->table;
 	}
