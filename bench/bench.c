@@ -106,7 +106,7 @@ static int bench_roles(const struct wall *w, long n, unsigned long seed)
 	long accepted = 0, iters = 0;
 	double t0 = now();
 	for (long i = 0; i < n; i++) {
-		sample_positions(w, seed, (unsigned long)i, -1, xi);
+		mc_positions(w, seed, (unsigned long)i, -1, xi);
 		sample_run(ws, xi, &o, &r);
 		accepted += r.status == SAMPLE_ACCEPTED;
 		iters += r.iterations;

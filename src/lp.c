@@ -43,6 +43,7 @@
  * is discarded, not reported (lp_thread_interrupted).
  */
 #include <glpk.h>
+#include <limits.h>
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
@@ -733,7 +734,9 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	glp_iocp ip;
 	glp_init_iocp(&ip);
 	ip.msg_lev = GLP_MSG_OFF;
-	ip.tm_lim = (int)(time_limit * 1000);
+	/* milliseconds in an int: clamped here, whatever the caller checked */
+	ip.tm_lim = !(time_limit > 0) ? 1 :
+		    time_limit >= INT_MAX / 1000.0 ? INT_MAX : (int)(time_limit * 1000);
 	ip.br_tech = GLP_BR_PCH;
 	ip.bt_tech = GLP_BT_BLB;
 	ip.gmi_cuts = GLP_ON;

@@ -49,7 +49,6 @@
  * says why.
  */
 #include <gsl/gsl_linalg.h>
-#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdint.h>
@@ -480,38 +479,6 @@ static void rebuild(struct sample_ws *ws)
 	build(ws);
 }
 
-/* splitmix64: a seed for sample `index` that no other (seed, index) pair
- * of a run shares in practice. */
-static unsigned long mix(unsigned long long z)
-{
-	z += 0x9e3779b97f4a7c15ULL;
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return (unsigned long)(z ^ (z >> 31));
-}
-
-void sample_positions(const struct wall *w, unsigned long seed,
-		      unsigned long index, double depth, double *xi)
-{
-	gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
-	gsl_rng_set(r, mix(mix(seed) ^ index));
-	if (depth < 0)
-		depth = w->depth;
-	for (int k = 0; k < w->nifaces; k++) {
-		/* two uniforms per interface, always drawn, so that the
-		 * positions are continuous in the depth (common random
-		 * numbers for --fit-depth) */
-		double u1 = gsl_rng_uniform(r), u2 = gsl_rng_uniform(r);
-		if (w->anywhere) {
-			xi[2 * k] = fmin(u1, u2);
-			xi[2 * k + 1] = fmax(u1, u2);
-		} else {
-			xi[2 * k] = depth * u1;
-			xi[2 * k + 1] = 1 - depth * u2;
-		}
-	}
-	gsl_rng_free(r);
-}
 
 /* One LP of role `role` (or of its tie-break: role + ROLES), counted in
  * r and in the workspace's statistics; the problem is rebuilt after a
@@ -660,20 +627,24 @@ static void put_lp2_objective(struct sample_ws *ws)
  * each role at the classical contact (sample_ws_new): a function of the
  * wall alone, so that the CSV is byte-identical whatever the thread
  * count, which `previous` (the basis the thread's last sample left)
- * cannot promise to the last bit.  The problems are built once; every
- * sample rewrites all the columns (rows, for KIN) that the points
- * change, always in the same order: GLPK keeps each row's elements in
- * the order they were written, its factorisation's pivot search follows
- * that order, and the order after a full rewrite is the same whatever
- * was written before (writing a column twice moved 15 of 200 demo
- * samples to other optimal vertices, before the tie-breaks). */
+ * cannot promise to the last bit.  For the same reason every start but
+ * `previous` builds fresh problems at its points: GLPK's storage keeps a
+ * history that shows in the last digits of a solution.  (Measured:
+ * rewriting the point-dependent columns of the same problems instead
+ * changed sample 7 of the demo wall, seed 3, between 1 and 2 threads:
+ * lambda_max in the 9th digit, 19 SLP iterations or 30.  It costs about
+ * 3 % of a sample of Ferris & Tin-Loi wall 1.) */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
 	statics_set_points(&ws->st, xi);
 	tie_weights(ws, xi);
-	for (int j = 0; j < 3 * ws->m; j++)
-		put_column(ws, j);
-	put_kin_objective(ws);
+	if (ws->start == SAMPLE_START_PREVIOUS) {
+		for (int j = 0; j < 3 * ws->m; j++)
+			put_column(ws, j);
+		put_kin_objective(ws);
+	} else {
+		rebuild(ws);
+	}
 	put_lp2_objective(ws);
 	for (int p = 0; p < ROLES; p++) {
 		switch (ws->start) {

@@ -116,11 +116,6 @@ struct sample_ws *sample_ws_new_start(const struct wall *w,
 				      enum sample_start start);
 void sample_ws_free(struct sample_ws *ws);
 
-/* The contact positions of sample `index` of a run with `seed`: depend on
- * (seed, index) only.  xi gets 2 * nifaces numbers (xi_a, xi_b per
- * interface, in interface order).  depth < 0 means the wall's. */
-void sample_positions(const struct wall *w, unsigned long seed,
-		      unsigned long index, double depth, double *xi);
 
 /* Steps 2-5 of SPEC section 2 for the contact positions xi.  Fills r
  * (which must have been sample_result_init'ed for the same wall). */
