@@ -281,6 +281,9 @@ int tui_main(const char *path)
 	getmaxyx(stdscr, t->rows, t->cols);
 
 	t->w = w;
+	undo_init(&t->undo, TUI_UNDO_STEPS);
+	snprintf(t->next_what, sizeof t->next_what, "opened %s",
+		 w->path ? w->path : path);
 	t->cur_x = t->cur_y = NAN;	/* placed on a block by Tab */
 	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
 		    t->threads);
@@ -346,6 +349,7 @@ int tui_main(const char *path)
 	}
 	free(t->csvs);
 	fflush(stdout);
+	undo_free(&t->undo);
 	wall_free(t->w);
 	return 0;
 }

@@ -26,10 +26,12 @@
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
 #include "slipwall/tally.h"
+#include "slipwall/undo.h"
 #include "slipwall/wall.h"
 
 #define TUI_MIN_COLS 80
 #define TUI_MIN_ROWS 24
+#define TUI_UNDO_STEPS 100	/* edits that u can take back */
 #define TUI_FRAME 0.1		/* seconds between redraws (10 Hz at most) */
 
 /* One sampling run: one wall, one samples file, one tally.  The pool may
@@ -52,6 +54,7 @@ struct tui_run {
 	char *latest_joint;	/* mechanism of the latest accepted sample */
 	double *latest_vel;
 	long latest_index;	/* -1: none yet */
+	char what[96];		/* what this run changed (the history) */
 	double active;		/* seconds spent sampling before t_start */
 	double t_start;		/* when the current pool started */
 };
@@ -73,6 +76,8 @@ typedef void (*tui_prompt_done)(struct tui *t, const char *text);
 
 struct tui {
 	struct wall *w;		/* the wall being sampled (finished) */
+	struct undo undo;	/* the walls before and after (u, U) */
+	char next_what[96];	/* what the next run changes */
 	struct tui_run run;
 	int runno;		/* runs started in this session */
 	char **csvs;		/* every samples file of the session */
@@ -175,9 +180,11 @@ void tui_prompt(struct tui *t, const char *label, const char *initial,
  * to leave out (-1: none).  NULL + err on failure. */
 struct wall *tui_edit_copy(const struct wall *w,
 			   const struct wall_layout *regen, int skip, char *err);
-/* Finish nw and switch to it; on failure show the message, free nw and
- * keep the current wall.  Returns 0 on success. */
-int tui_edit_apply(struct tui *t, struct wall *nw);
+/* Finish nw and switch to it (the current wall goes on the undo stack;
+ * `what` names the edit in the message and the history); on failure
+ * show the message, free nw and keep the current wall.  Returns 0 on
+ * success. */
+int tui_edit_apply(struct tui *t, struct wall *nw, const char *what);
 
 /* tui_file.c */
 void tui_file_save(struct tui *t);	/* asks for a path */

@@ -25,6 +25,7 @@
 #include <curses.h>
 
 #include "cli.h"
+#include "slipwall/geom.h"
 #include "slipwall/layout.h"
 #include "tui/tui.h"
 
@@ -81,7 +82,7 @@ struct wall *tui_edit_copy(const struct wall *w, const struct wall_layout *regen
 	return c;
 }
 
-int tui_edit_apply(struct tui *t, struct wall *nw)
+int tui_edit_apply(struct tui *t, struct wall *nw, const char *what)
 {
 	char err[SW_ERRLEN];
 	if (wall_finish(nw, err) != SW_OK) {
@@ -89,8 +90,27 @@ int tui_edit_apply(struct tui *t, struct wall *nw)
 		wall_free(nw);
 		return -1;
 	}
+	undo_edit(&t->undo, t->w);
+	snprintf(t->next_what, sizeof t->next_what, "%s", what);
 	tui_set_wall(t, nw);
 	return 0;
+}
+
+/* u and U (Ctrl-R): back to the wall before the last edit, or forward
+ * again; a new run on it, with the same seed, so the same samples. */
+static void tui_edit_undo(struct tui *t, int redo)
+{
+	struct wall *p = redo ? undo_redo(&t->undo, t->w)
+			      : undo_undo(&t->undo, t->w);
+	if (!p) {
+		tui_message(t, 0, "nothing to %s", redo ? "redo" : "undo");
+		return;
+	}
+	snprintf(t->next_what, sizeof t->next_what, "%s", redo ? "redo" : "undo");
+	tui_set_wall(t, p);
+	tui_message(t, 0, "%s: sampling again (run %d; %d more to undo, %d to redo)",
+		    redo ? "redone" : "undone", t->runno, t->undo.npast,
+		    t->undo.nfuture);
 }
 
 /* Copy, let the caller change, apply; with a message on success. */
@@ -105,7 +125,7 @@ static struct wall *tui_edit_begin(struct tui *t)
 
 static void tui_edit_done(struct tui *t, struct wall *nw, const char *what)
 {
-	if (tui_edit_apply(t, nw) == 0)
+	if (tui_edit_apply(t, nw, what) == 0)
 		tui_message(t, 0, "%s: sampling again (run %d)", what, t->runno);
 }
 
@@ -394,6 +414,39 @@ static void tui_edit_block_size(const struct wall *w, double *bw, double *bh)
 	}
 }
 
+/* The block of w's layout under (x, y) that w does not have (one removed
+ * from the courses), as the last block of a wall holding the layout's
+ * blocks; NULL when there is none. */
+static struct wall *tui_edit_missing(const struct wall *w, double x, double y)
+{
+	char err[SW_ERRLEN];
+	struct wall_mark none = {0, 0};
+	if (!w->layout.present || !isfinite(x) || !isfinite(y))
+		return NULL;
+	struct wall *g = wall_new();
+	g->layout = w->layout;
+	if (layout_generate(g, none, err) != SW_OK) {
+		wall_free(g);
+		return NULL;
+	}
+	double tol = 1e-6 * fmax(w->layout.block_w, w->layout.block_h);
+	for (int k = 0; k < g->nblocks; k++) {
+		const struct wall_block *b = &g->blocks[k];
+		int have = 0;
+		for (int j = 0; j < w->nblocks && !have; j++)
+			have = !strcmp(w->blocks[j].id, b->id);
+		if (have || !geom_contains(b->xy, b->nv, x, y, tol))
+			continue;
+		/* move it to the end */
+		struct wall_block tmp = g->blocks[k];
+		g->blocks[k] = g->blocks[g->nblocks - 1];
+		g->blocks[g->nblocks - 1] = tmp;
+		return g;
+	}
+	wall_free(g);
+	return NULL;
+}
+
 static void tui_edit_add_block(struct tui *t)
 {
 	double bw, bh;
@@ -405,6 +458,21 @@ static void tui_edit_add_block(struct tui *t)
 	double y = gy + floor((t->cur_y - gy) / bh + 1e-9) * bh;
 	double xy[8] = {x, y, x + bw, y, x + bw, y + bh, x, y + bh};
 	char id[32];
+	struct wall *lay = tui_edit_missing(w, t->cur_x, t->cur_y);
+	if (lay) {
+		/* a block of the courses, removed: it comes back as it was */
+		const struct wall_block *b = &lay->blocks[lay->nblocks - 1];
+		struct wall *nw = tui_edit_begin(t);
+		char what[128];
+		if (nw) {
+			struct wall_mark none = {0, 0};
+			wall_add_block(nw, b->id, b->xy, b->nv, 0, none);
+			snprintf(what, sizeof what, "block %s restored", b->id);
+			tui_edit_done(t, nw, what);
+		}
+		wall_free(lay);
+		return;
+	}
 	for (int k = 1;; k++) {
 		int used = 0;
 		snprintf(id, sizeof id, "u%d", k);
@@ -438,6 +506,18 @@ static void tui_edit_remove_block(struct tui *t)
 		return;
 	}
 	tui_edit_done(t, nw, what);
+}
+
+static void tui_edit_cursor(struct tui *t, int dx, int dy);
+
+/* The block cursor is within a block's size of the wall. */
+static int tui_edit_cursor_near(struct tui *t)
+{
+	if (!isfinite(t->cur_x) || !isfinite(t->cur_y))
+		return 0;
+	double x = t->cur_x, y = t->cur_y;
+	tui_edit_cursor(t, 0, 0);
+	return x == t->cur_x && y == t->cur_y;
 }
 
 /* Move the block cursor by half a block across, a block up or down; it
@@ -528,12 +608,23 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	case 'i':
 		tui_edit_depth(t, w->depth, !w->anywhere);
 		break;
+	case 'u':
+		tui_edit_undo(t, 0);
+		break;
+	case 'U':
+	case 18:	/* Ctrl-R */
+		tui_edit_undo(t, 1);
+		break;
 	case KEY_UP:
 	case KEY_DOWN:
 	case KEY_LEFT:
-	case KEY_RIGHT: {
-		int dx = ch == KEY_RIGHT ? 1 : ch == KEY_LEFT ? -1 : 0;
-		int dy = ch == KEY_UP ? 1 : ch == KEY_DOWN ? -1 : 0;
+	case KEY_RIGHT:
+	case 'h':
+	case 'j':
+	case 'k':
+	case 'l': {
+		int dx = ch == KEY_RIGHT || ch == 'l' ? 1 : ch == KEY_LEFT || ch == 'h' ? -1 : 0;
+		int dy = ch == KEY_UP || ch == 'k' ? 1 : ch == KEY_DOWN || ch == 'j' ? -1 : 0;
 		if (t->cursor_mode)
 			tui_edit_cursor(t, dx, dy);
 		else
@@ -546,7 +637,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	case 'D':
 		tui_edit_load_turn(t, -1);
 		break;
-	case 'l': {
+	case 'P': {
 		int l = tui_edit_point_load(w);
 		if (l < 0) {
 			tui_message(t, 1, "this wall has no point load");
@@ -561,7 +652,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		snprintf(buf, sizeof buf, "%d", w->layout.courses);
 		tui_prompt(t, "courses", buf, tui_edit_courses_typed);
 		break;
-	case 'k':
+	case 'L':
 		snprintf(buf, sizeof buf, "%.4g",
 			 w->layout.block_w > 0 ? w->layout.length / w->layout.block_w : 0);
 		tui_prompt(t, "blocks per course", buf, tui_edit_per_course_typed);
@@ -578,7 +669,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 								  : "stack bond");
 		break;
 	}
-	case 'h': {
+	case 'B': {
 		struct wall_layout lay = w->layout;
 		lay.first_half = !lay.first_half;
 		tui_edit_layout(t, &lay, lay.first_half ? "first course starts half"
@@ -587,8 +678,9 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	}
 	case '\t':
 		t->cursor_mode = !t->cursor_mode;
-		if (t->cursor_mode && (!isfinite(t->cur_x) ||
-				       tui_wall_block_at(w, t->cur_x, t->cur_y) < 0)) {
+		/* the cursor stays where it was; placed on a block the first
+		 * time (and when the wall changed so that it is far off) */
+		if (t->cursor_mode && !tui_edit_cursor_near(t)) {
 			for (int k = 0; k < w->nblocks; k++)
 				if (!w->blocks[k].fixed) {
 					t->cur_x = w->blocks[k].cx;
@@ -655,8 +747,9 @@ void tui_main_draw(struct tui *t)
 	else
 		snprintf(dtext, sizeof dtext, "depth %.3g", w->depth);
 	snprintf(buf, sizeof buf,
-		 " slipwall | %s | %s %.3g/%.3g | %s | run %d %s | %s",
-		 w->name ? w->name : (w->path ? w->path : "wall"), tui_mu(t),
+		 " slipwall | %s%s | %s %.3g/%.3g | %s | run %d %s | %s",
+		 w->name ? w->name : (w->path ? w->path : "wall"),
+		 undo_modified(&t->undo) ? " *" : "", tui_mu(t),
 		 w->mu_bed, w->mu_head, dtext, t->runno, tui_run_state(t),
 		 csv[0] ? csv : "(no samples file)");
 	tui_main_bar(t, 0, buf);
@@ -699,8 +792,8 @@ void tui_main_draw(struct tui *t)
 	if (t->prompting)
 		keys = " Enter accept  Esc cancel  Ctrl-U clear";
 	else if (t->cursor_mode)
-		keys = " Tab load mode  arrows cursor  a add block  x remove block  ? help  q quit";
+		keys = " Tab load mode  arrows/hjkl cursor  a add block  x remove block  u undo  ? help  q quit";
 	else
-		keys = " q quit ? help spc pause m mech f/F mu e/E depth arrows load d turn s save o open";
+		keys = " q quit ? help spc pause u undo H history f/F mu e/E depth arrows load s save o open";
 	tui_main_bar(t, R - 1, keys);
 }

@@ -218,6 +218,7 @@ static void tui_file_save_to(struct tui *t, const char *path)
 		tui_message(t, 1, "saved %s; summary: %s", path, err);
 		return;
 	}
+	undo_saved(&t->undo);
 	tui_message(t, 0, "saved %s and %s; samples: %s", path, json,
 		    t->run.csv[0] ? t->run.csv : "(none)");
 }
@@ -252,6 +253,8 @@ static void tui_file_open_path(struct tui *t, const char *path)
 		tui_message(t, 1, "%s", err);
 		return;
 	}
+	undo_reset(&t->undo);
+	snprintf(t->next_what, sizeof t->next_what, "opened %s", path);
 	tui_set_wall(t, nw);
 	tui_message(t, 0, "opened %s: sampling (run %d)", path, t->runno);
 }

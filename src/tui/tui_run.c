@@ -140,6 +140,8 @@ void tui_run_start(struct tui *t)
 	tally_init(&r->tally, w);
 	mc_item_init(&r->item, w);
 	t->runno++;
+	snprintf(r->what, sizeof r->what, "%s", t->next_what[0] ? t->next_what : "reset");
+	t->next_what[0] = 0;
 	if (tui_file_csv_path(t, r->csv, sizeof r->csv, err) == 0) {
 		r->log = runlog_open(r->csv, w, err);
 		if (!r->log)
