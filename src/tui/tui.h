@@ -23,6 +23,9 @@
 
 #include <limits.h>
 
+#include <stdio.h>
+
+#include "slipwall/history.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
 #include "slipwall/tally.h"
@@ -63,7 +66,12 @@ struct tui;
 struct tui_solve;
 
 /* The screens behind the dispatcher in tui.c. */
-enum tui_screen_id { TUI_SCREEN_MAIN, TUI_SCREEN_HELP, TUI_SCREEN_COUNT };
+enum tui_screen_id {
+	TUI_SCREEN_MAIN,
+	TUI_SCREEN_HELP,
+	TUI_SCREEN_HISTORY,
+	TUI_SCREEN_COUNT
+};
 
 /* key() answers one key and returns the screen to show next. */
 struct tui_screen {
@@ -80,8 +88,15 @@ struct tui {
 	char next_what[96];	/* what the next run changes */
 	struct tui_run run;
 	int runno;		/* runs started in this session */
-	char **csvs;		/* every samples file of the session */
-	int ncsvs;
+	char **files;		/* every file the session wrote, as */
+	int nfiles;		/* "samples: PATH", "wall: PATH", ... */
+	char session[24];	/* when the session started (the history) */
+	struct history_row *hist;	/* this session's finished runs */
+	int nhist;
+	char hist_path[PATH_MAX];	/* the index file, or "" */
+	double *prev_lam;	/* the previous run's accepted loads, sorted */
+	size_t prev_n;
+	int prev_run;
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
 
@@ -113,6 +128,8 @@ struct tui {
 };
 
 /* tui.c */
+/* A file the session wrote (kind: "samples", "wall", ...), printed at q. */
+void tui_note_file(struct tui *t, const char *kind, const char *path);
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 /* Replace the wall (t takes nw, finished) and restart sampling on it. */
@@ -192,6 +209,19 @@ void tui_file_open(struct tui *t);	/* asks for a path */
 void tui_file_report(struct tui *t);	/* asks for a directory */
 /* The directory and name of the next samples file. */
 int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err);
+
+/* tui_history.c */
+void tui_history_record(struct tui *t);	/* the current run ends */
+void tui_history_lines(const struct tui *t, const struct history_row *h,
+		       char *a, size_t alen, char *b, size_t blen);
+void tui_history_print(const struct tui *t, FILE *f);
+void tui_history_free(void);
+void tui_history_init(struct tui *t);
+enum tui_screen_id tui_history_key(struct tui *t, int ch);
+void tui_history_draw(struct tui *t);
+/* s in at most w columns, its middle cut ("/home/…/demo-1.csv"). */
+void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s,
+		int w);
 
 /* tui_help.c */
 void tui_help_init(struct tui *t);

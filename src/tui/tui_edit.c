@@ -567,6 +567,8 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		break;
 	case '?':
 		return TUI_SCREEN_HELP;
+	case 'H':
+		return TUI_SCREEN_HISTORY;
 	case ' ':
 	case 'p':
 		tui_run_pause(t, !t->run.paused);

@@ -150,11 +150,7 @@ void tui_run_start(struct tui *t)
 		tui_message(t, 1, "%s", err);
 	}
 	if (r->log) {
-		char **v = realloc(t->csvs, sizeof *v * (size_t)(t->ncsvs + 1));
-		if (v) {
-			t->csvs = v;
-			t->csvs[t->ncsvs++] = strdup(r->csv);
-		}
+		tui_note_file(t, "samples", r->csv);
 	} else {
 		r->csv[0] = 0;
 	}
@@ -172,6 +168,7 @@ void tui_run_end(struct tui *t)
 	if (r->log && runlog_close(r->log, err) != SW_OK)
 		tui_message(t, 1, "samples file: %s", err);
 	r->log = NULL;
+	tui_history_record(t);
 	tally_free(&r->tally);
 	mc_item_free(&r->item);
 	free(r->latest_joint);
