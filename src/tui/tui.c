@@ -152,6 +152,7 @@ void tui_set_wall(struct tui *t, struct wall *nw)
 	t->mech_sel = 0;
 	tui_run_start(t);
 	t->solve = tui_solve_start(nw);
+	t->solve_t0 = tui_now();
 }
 
 static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
@@ -324,6 +325,7 @@ int tui_main(const char *path)
 		    t->threads);
 	tui_run_start(t);
 	t->solve = tui_solve_start(w);
+	t->solve_t0 = tui_now();
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
 
 	double last_draw = -1;
@@ -365,6 +367,10 @@ int tui_main(const char *path)
 			t->solve_done = 1;
 			dirty = 1;
 		}
+		/* the clocks of slow samples and of the solve thread tick */
+		if ((t->run.mc || (t->solve && !t->solve_done)) &&
+		    tui_now() - last_draw >= 1)
+			dirty = 1;
 		if (dirty && tui_now() - last_draw >= TUI_FRAME) {
 			tui_draw(t);
 			last_draw = tui_now();

@@ -103,6 +103,7 @@ struct tui {
 	struct tui_solve *solve;/* standard/gilbert for this wall */
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
+	double solve_t0;	/* when the solve thread started */
 	double lam_std, lam_gil;
 
 	int utf8;		/* the locale's codeset is UTF-8 */
@@ -155,6 +156,10 @@ int tui_run_pump(struct tui *t, double budget);	/* pop what is ready */
 void tui_run_pause(struct tui *t, int pause);
 void tui_run_set_target(struct tui *t, long n);
 double tui_run_rate(const struct tui *t);	/* samples per second */
+/* The samples in progress (0 when no pool runs). */
+int tui_run_progress(struct tui *t, struct mc_progress *p);
+/* "12 s", "3:05", "1:02:03" (or "?"). */
+void tui_duration(char *buf, size_t len, double s);
 const char *tui_run_state(const struct tui *t);	/* "running", ... */
 
 /* tui_solve.c: standard and gilbert on a private copy of the wall */
@@ -162,6 +167,9 @@ struct tui_solve *tui_solve_start(const struct wall *w);
 /* 1 when finished (values filled; has_* say which exist), else 0. */
 int tui_solve_poll(struct tui_solve *s, int *has_std, double *std,
 		   int *has_gil, double *gil);
+/* The values as text: 1 with both filled ("235.4", "n/a"), or 0 with
+ * sv saying how long they have been computing ("computing... 12 s"). */
+int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len);
 /* The caller lets go: the thread frees everything when it ends. */
 void tui_solve_abandon(struct tui_solve *s);
 

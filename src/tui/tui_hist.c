@@ -210,12 +210,12 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (rc > mc + (int)strlen(m))
 		tui_text(ya + 1, x0 + rc, w - rc, r);
 
-	char sv[32] = "...", gv[32] = "...";
-	if (t->solve_done) {
-		snprintf(sv, sizeof sv, t->has_std ? "%.4g" : "n/a", t->lam_std);
-		snprintf(gv, sizeof gv, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
-	}
-	int len = snprintf(buf, sizeof buf, "S standard %s  G gilbert %s", sv, gv);
+	char sv[32], gv[32];
+	int len;
+	if (tui_solve_text(t, sv, gv, sizeof sv))
+		len = snprintf(buf, sizeof buf, "S standard %s  G gilbert %s", sv, gv);
+	else
+		len = snprintf(buf, sizeof buf, "S G: %s", sv);
 	if (wall->ntests && len > 0 && (size_t)len < sizeof buf)
 		snprintf(buf + len, sizeof buf - (size_t)len, "  T tests (%d)",
 			 wall->ntests);

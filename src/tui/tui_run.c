@@ -19,6 +19,7 @@
  * and closes the file (which stays on disk).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -226,6 +227,30 @@ void tui_run_set_target(struct tui *t, long n)
 		tui_run_drain(t);
 	else
 		tui_run_spawn(t);
+}
+
+int tui_run_progress(struct tui *t, struct mc_progress *p)
+{
+	memset(p, 0, sizeof *p);
+	if (!t->run.mc)
+		return 0;
+	mc_progress(t->run.mc, p);
+	return 1;
+}
+
+void tui_duration(char *buf, size_t len, double s)
+{
+	if (!isfinite(s) || s < 0) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	long v = (long)(s + 0.5);
+	if (v < 60)
+		snprintf(buf, len, "%ld s", v);
+	else if (v < 3600)
+		snprintf(buf, len, "%ld:%02ld", v / 60, v % 60);
+	else
+		snprintf(buf, len, "%ld:%02ld:%02ld", v / 3600, v / 60 % 60, v % 60);
 }
 
 double tui_run_rate(const struct tui *t)

@@ -39,11 +39,41 @@ void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		 t->run.target, tui_run_state(t));
 	if (y < end)
 		tui_text(y++, x0, w, line);
+	/* Speed: samples per second, or seconds per sample when they are
+	 * slow; samples in progress with their age and the time left when
+	 * one takes more than a second (a large wall: minutes a sample). */
 	double rate = tui_run_rate(t);
-	snprintf(line, sizeof line, "speed    %s /s on %d threads",
-		 tui_stats_num(a, sizeof a, rate), t->threads);
+	struct mc_progress pg;
+	tui_run_progress(t, &pg);
+	if (ta->samples > 0 && rate < 1)
+		snprintf(line, sizeof line, "speed    %.3g s per sample on %d threads",
+			 1 / rate, t->threads);
+	else if (ta->samples > 0 || pg.oldest < 1)
+		snprintf(line, sizeof line, "speed    %s /s on %d threads",
+			 tui_stats_num(a, sizeof a, rate), t->threads);
+	else
+		snprintf(line, sizeof line, "speed    no sample finished yet, %d threads",
+			 t->threads);
 	if (y < end)
 		tui_text(y++, x0, w, line);
+	if (pg.busy > 0 && pg.oldest >= 1) {
+		long left = t->run.target - ta->samples;
+		tui_duration(a, sizeof a, pg.oldest);
+		if (ta->samples > 0) {
+			tui_duration(b, sizeof b, (double)left / rate);
+			snprintf(line, sizeof line, "working  %d in progress, oldest %s; left ~%s",
+				 pg.busy, a, b);
+		} else {
+			/* nothing finished: every worker is on its first
+			 * sample, so each takes at least `oldest` */
+			long rounds = (left + t->threads - 1) / t->threads;
+			tui_duration(b, sizeof b, (double)rounds * pg.oldest);
+			snprintf(line, sizeof line, "working  %d in progress for %s; left > %s",
+				 pg.busy, a, b);
+		}
+		if (y < end)
+			tui_text(y++, x0, w, line);
+	}
 	snprintf(line, sizeof line, "accepted %ld (%.1f %%)", ta->accepted,
 		 ta->samples ? 100.0 * (double)ta->accepted / (double)ta->samples
 			     : 0.0);
@@ -101,12 +131,11 @@ void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (y < end)
 		tui_text(y++, x0, w, line);
 
-	char sv[32] = "...", gv[32] = "...";
-	if (t->solve_done) {
-		snprintf(sv, sizeof sv, t->has_std ? "%.4g" : "n/a", t->lam_std);
-		snprintf(gv, sizeof gv, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
-	}
-	snprintf(line, sizeof line, "standard %s  gilbert %s", sv, gv);
+	char sv[32], gv[32];
+	if (tui_solve_text(t, sv, gv, sizeof sv))
+		snprintf(line, sizeof line, "standard %s  gilbert %s", sv, gv);
+	else
+		snprintf(line, sizeof line, "standard, gilbert: %s", sv);
 	if (y < end)
 		tui_text(y++, x0, w, line);
 
