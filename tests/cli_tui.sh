@@ -115,14 +115,14 @@ T send-keys -t t:w o
 wait_for w 'open wall file:' 5
 T send-keys -t t:w -l "$tmp/slider.yaml"
 T send-keys -t t:w Enter
-if wait_for w 'Sliding slab' 5 && wait_samples w 20 20 && wait_for w ' p50  188\.4 ' 5; then
+if wait_for w 'Sliding slab' 5 && wait_samples w 20 20 && wait_for w ' p50  188\.4( |$)' 5; then
 	ok "o opens another wall; its median is mu W = 188.4 N"
 else
 	not_ok "o opens another wall; its median is mu W = 188.4 N" "$(screen w)"
 fi
 m0=$(median w)
 T send-keys -t t:w f
-if wait_for w 'μ 0.65/0.65' 5 && wait_samples w 20 20 && wait_for w ' p50  204 ' 5; then
+if wait_for w 'μ 0.65/0.65' 5 && wait_samples w 20 20 && wait_for w ' p50  204( |$)' 5; then
 	ok "f raises the friction to 0.65 and the median to mu W = 204 N ($m0 -> $(median w))"
 else
 	not_ok "f raises the friction to 0.65 and the median to 204 N" "$(screen w)"

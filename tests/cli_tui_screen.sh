@@ -25,16 +25,87 @@ tui_server "slipwall-screen-$$" 100 30 || {
 	exit 0
 }
 
+# --- 80x24 on the demo wall: the loaded course, the load, whole numbers ---
+start d LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+T resize-window -t t:d -x 80 -y 24
+wait_samples d 1 20
+# a run of 100 samples from sample 0, the one `slipwall run -n 100` makes
+T send-keys -t t:d n C-u 100 Enter r
+if wait_run d 2 done 60 && [ "$(screen d | wc -l)" -eq 24 ] && [ "$(screen d | head -n 1 | wc -m)" -le 81 ]; then
+	ok "80x24: a run of 100 samples"
+else
+	not_ok "80x24: a run of 100 samples" "$(screen d)"
+fi
+pane=$(screen d | sed 's/\(.*\)│.*/\1/')	# the wall pane
+load_row=$(printf '%s\n' "$pane" | grep '●')
+left_of_load=${load_row%%●*}
+if [ -n "$load_row" ] && printf '%s\n' "$load_row" | grep -q '●──→' &&
+   printf '%s\n' "$left_of_load" | grep -q '│' &&
+   ! printf '%s\n' "$left_of_load" | grep -q '[─┼├┤┬┴]'; then
+	ok "80x24: the load and its arrow on a row of the loaded course, not on a joint line"
+else
+	not_ok "80x24: the load on a row of the loaded course" "$pane"
+fi
+if printf '%s\n' "$pane" | grep -q '┌' && printf '%s\n' "$pane" | grep -q '░░░'; then
+	ok "80x24: the whole wall, top to ground"
+else
+	not_ok "80x24: the whole wall, top to ground" "$pane"
+fi
+"$bin" run walls/demo.yaml -n 100 --json >"$tmp/demo.json" 2>/dev/null
+want=$(python3 -c '
+import json, sys
+j = json.load(open(sys.argv[1]))
+l = j["lambda"]
+f = lambda v: "%.4g" % v
+print(" ".join(f(l[k]) for k in ("min", "max", "p05", "p50", "p95", "mean", "std")),
+      f(j["p05_ci99"][0]), f(j["p05_ci99"][1]))' "$tmp/demo.json")
+stats=$(screen d | sed -n 's/.*│//p')
+got=$(printf '%s\n' "$stats" | awk '
+	/min .* max / { mn = $3; mx = $5 }
+	/ p05 .* p50 / { p05 = $2; p50 = $4 }
+	/ p95 .* mean / { p95 = $2; mean = $4 }
+	/^ *sd / { sd = $2 }
+	/99 % interval \[/ { gsub(/[][,]/, " "); lo = $4; hi = $5 }
+	END { print mn, mx, p05, p50, p95, mean, sd, lo, hi }')
+if [ -n "$want" ] && [ "$got" = "$want" ]; then
+	ok "80x24: every number whole, as in the JSON of slipwall run -n 100 ($got)"
+else
+	not_ok "80x24: every number whole, as in the JSON of slipwall run -n 100" "pane: $got" "json: $want" "$stats"
+fi
+if screen d | tail -n 1 | grep -q ' q quit' && [ "$(screen d | head -n 1 | wc -m)" -le 81 ] &&
+   screen d | head -n 1 | grep -q 'run 2 done'; then
+	ok "80x24: the title keeps its numbers and state"
+else
+	not_ok "80x24: the title keeps its numbers and state" "$(screen d | head -n 1)"
+fi
+T send-keys -t t:d s
+wait_for d 'save wall as:' 5
+T send-keys -t t:d C-u
+T send-keys -t t:d -l "$tmp/a/long/directory/name/to/see/the/path/is/not/cut/saved-at-80x24.yaml"
+mkdir -p "$tmp/a/long/directory/name/to/see/the/path/is/not/cut"
+T send-keys -t t:d Enter
+if wait_for d 'saved ' 5 &&
+   screen d | tr -d '\n' | grep -q "saved $tmp/a/long/directory/name/to/see/the/path/is/not/cut/saved-at-80x24.yaml"; then
+	ok "80x24: the saved path is shown whole (wrapped)"
+else
+	not_ok "80x24: the saved path is shown whole" "$(screen d)"
+fi
+T send-keys -t t:d q
+wait_for d '^history: ' 10
+
 # --- a large wall: honest progress ---
 start big LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/large.yaml
-if wait_for big 'working  [0-9]+ in progress (for|, oldest) [0-9]+ s; left [>~] ?[0-9:]+( s)?' 10; then
+if wait_for big 'working  [0-9]+ samples?, oldest [0-9]+ s' 10 && wait_for big 'left     [>~] ?[0-9:]+( s)? \((at least|estimate)\)' 10; then
 	ok "large wall: samples in progress, their age, the time left, within 10 s"
 else
 	not_ok "large wall: samples in progress, their age, the time left, within 10 s" "$(screen big)"
 fi
-a1=$(screen big | sed -n 's/.*working .* \([0-9][0-9]*\) s; left.*/\1/p')
-within 5 eval '[ "$(screen big | sed -n "s/.*working .* \([0-9][0-9]*\) s; left.*/\1/p")" != "$a1" ]'
-a2=$(screen big | sed -n 's/.*working .* \([0-9][0-9]*\) s; left.*/\1/p')
+age() {
+	screen big | sed -n 's/.*working .*oldest \([0-9][0-9]*\) s.*/\1/p'
+}
+a1=$(age)
+within 5 eval '[ "$(age)" != "$a1" ]'
+a2=$(age)
 if [ -n "$a1" ] && [ -n "$a2" ] && [ "$a2" -gt "$a1" ]; then
 	ok "the age of the samples in progress ticks ($a1 s -> $a2 s)"
 else

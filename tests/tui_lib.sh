@@ -72,7 +72,7 @@ wait_samples() {
 	within "$3" samples_reach "$1" "$2"
 }
 wait_run() {
-	within "$4" screen_has "$1" "\| run $2 $3 \|"
+	within "$4" screen_has "$1" "\\| run $2 $3( \\||$)"
 }
 last_has() {
 	screen "$1" | tail -n 1 | grep -qE -- "$2"

@@ -107,6 +107,14 @@ void tui_text(int y, int x, int w, const char *s)
 		mvaddnstr(y, x, s, (int)n);
 }
 
+int tui_cols(const char *s)
+{
+	int n = 0;
+	for (; *s; s++)
+		n += ((unsigned char)*s & 0xc0) != 0x80;
+	return n;
+}
+
 const char *tui_lam(const struct tui *t)
 {
 	return t->utf8 ? "\u03bb" : "lam";
@@ -138,6 +146,14 @@ void tui_note_file(struct tui *t, const char *kind, const char *path)
 	}
 	t->files = v;
 	t->files[t->nfiles++] = line;
+}
+
+const char *tui_load_unit(const struct wall *w)
+{
+	for (int l = 0; l < w->nloads; l++)
+		if (w->loads[l].kind == LOAD_BODY)
+			return "load factor";
+	return "N";
 }
 
 void tui_set_wall(struct tui *t, struct wall *nw)

@@ -145,9 +145,15 @@ void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii);
 /* Draw s at (y, x), at most w columns (UTF-8 aware: one column per code
  * point, which holds for the text this program writes). */
 void tui_text(int y, int x, int w, const char *s);
+/* Code point k of s (its end if shorter). */
+const char *tui_skip(const char *s, int k);
+/* Columns of a UTF-8 string (one per code point). */
+int tui_cols(const char *s);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
+/* The unit of λ: "N" (point loads) or "load factor" (a body load). */
+const char *tui_load_unit(const struct wall *w);
 
 /* tui_run.c */
 void tui_run_start(struct tui *t);	/* new CSV, new tally, sample */
@@ -184,14 +190,15 @@ int tui_wall_load_nearest(const struct wall *w, const double dir[2],
 			  double at[2]);
 /* The mechanism shown: joint states and velocities, label; 0 if none. */
 int tui_wall_mechanism(const struct tui *t, const char **joint,
-		       const double **vel, char *label, size_t len);
+		       const double **vel, char *label, size_t len, int w);
 int tui_wall_block_at(const struct wall *w, double x, double y);
 
 /* tui_hist.c */
 void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w);
 
 /* tui_stats.c */
-void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w);
+/* Returns the rows it used. */
+int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w);
 
 /* tui_edit.c: the main screen */
 void tui_main_init(struct tui *t);

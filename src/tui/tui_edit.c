@@ -748,12 +748,20 @@ void tui_main_draw(struct tui *t)
 		snprintf(dtext, sizeof dtext, "points anywhere");
 	else
 		snprintf(dtext, sizeof dtext, "depth %.3g", w->depth);
-	snprintf(buf, sizeof buf,
-		 " slipwall | %s%s | %s %.3g/%.3g | %s | run %d %s | %s",
-		 w->name ? w->name : (w->path ? w->path : "wall"),
-		 undo_modified(&t->undo) ? " *" : "", tui_mu(t),
-		 w->mu_bed, w->mu_head, dtext, t->runno, tui_run_state(t),
-		 csv[0] ? csv : "(no samples file)");
+	/* the title: the numbers always; the name's middle cut to fit,
+	 * the samples file only when there is room (H shows it) */
+	char rest[160], name[256], nm[256], file[PATH_MAX + 8];
+	snprintf(rest, sizeof rest, "%s | %s %.3g/%.3g | %s | run %d %s",
+		 undo_modified(&t->undo) ? " *" : "", tui_mu(t), w->mu_bed,
+		 w->mu_head, dtext, t->runno, tui_run_state(t));
+	snprintf(name, sizeof name, "%s",
+		 w->name ? w->name : (w->path ? w->path : "wall"));
+	snprintf(file, sizeof file, " | %s", csv[0] ? csv : "(no samples file)");
+	int room = C - 12 - tui_cols(rest);	/* " slipwall | " */
+	if ((int)(tui_cols(name) + tui_cols(file)) > room)
+		file[0] = 0;
+	tui_abbrev(t, nm, sizeof nm, name, room);
+	snprintf(buf, sizeof buf, " slipwall | %s%s%s", nm, rest, file);
 	tui_main_bar(t, 0, buf);
 
 	int top = 1, bottom = R - 2;	/* panes: rows top .. bottom-1 */
@@ -763,7 +771,7 @@ void tui_main_draw(struct tui *t)
 	tui_wall_draw(t, top, 0, bottom - top, lw);
 	for (int y = top; y < bottom; y++)
 		tui_put(t, y, lw, "│", "|");
-	tui_stats_draw(t, top, rx, sh, rw);
+	sh = tui_stats_draw(t, top, rx, bottom - top - 5, rw) + 1;
 	tui_hist_draw(t, top + sh, rx, bottom - top - sh, rw);
 
 	if (t->prompting) {
@@ -783,19 +791,44 @@ void tui_main_draw(struct tui *t)
 			attroff(A_REVERSE);
 		}
 	} else if (t->msg[0]) {
+		/* a message longer than the line (paths) takes the row
+		 * above too, and the middle of the rest is cut */
 		int attr = t->msg_err ? (t->colors ? COLOR_PAIR(5) : A_BOLD) : 0;
 		if (attr)
 			attron(attr);
-		tui_text(R - 2, 0, C, t->msg);
+		if (tui_cols(t->msg) > C) {
+			char rest[sizeof t->msg + 8];
+			const char *s = tui_skip(t->msg, C);
+			move(R - 3, 0);
+			clrtoeol();
+			tui_text(R - 3, 0, C, t->msg);
+			tui_abbrev(t, rest, sizeof rest, s, C);
+			tui_text(R - 2, 0, C, rest);
+		} else {
+			tui_text(R - 2, 0, C, t->msg);
+		}
 		if (attr)
 			attroff(attr);
 	}
-	const char *keys;
-	if (t->prompting)
-		keys = " Enter accept  Esc cancel  Ctrl-U clear";
-	else if (t->cursor_mode)
-		keys = " Tab load mode  arrows/hjkl cursor  a add block  x remove block  u undo  ? help  q quit";
-	else
-		keys = " q quit ? help spc pause u undo H history f/F mu e/E depth arrows load s save o open";
-	tui_main_bar(t, R - 1, keys);
+	/* the keys that work now, as many as fit */
+	static const char *const kprompt[] = {"Enter accept", "Esc cancel",
+					      "Ctrl-U clear", NULL};
+	static const char *const kcursor[] = {
+		"Tab load mode", "arrows/hjkl cursor", "a add", "x remove",
+		"u undo", "? help", "q quit", NULL};
+	static const char *const kmain[] = {
+		"q quit", "? help", "spc pause", "u undo", "H history",
+		"f/F mu", "e/E depth", "arrows load", "s save", "o open",
+		"m mech", NULL};
+	const char *const *keys = t->prompting ? kprompt
+				  : t->cursor_mode ? kcursor : kmain;
+	int len = 0;
+	buf[0] = 0;
+	for (int i = 0; keys[i]; i++) {
+		int k = (int)strlen(keys[i]);
+		if (len + 1 + k > C - 1)
+			break;
+		len += snprintf(buf + len, sizeof buf - (size_t)len, " %s", keys[i]);
+	}
+	tui_main_bar(t, R - 1, buf);
 }

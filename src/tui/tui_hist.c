@@ -55,10 +55,13 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 
 	const double *px = t->prev_lam;
 	size_t pn = t->prev_n;
-	if (pn)
+	if (pn) {
 		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted; %s run %d)",
 			 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
-	else
+		if (tui_cols(buf) > w)
+			snprintf(buf, sizeof buf, "%s_min histogram (%zu; %s run %d)",
+				 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
+	} else
 		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted)",
 			 tui_lam(t), n);
 	attron(A_BOLD);
