@@ -5,7 +5,8 @@
 # the modified mark * comes with an edit and goes with undo or a save;
 # hjkl move the block cursor like the arrows and never edit; Tab keeps
 # the cursor; a removed block of the courses comes back with its id and
-# layout edits work after it.
+# layout edits work after it; a save keeps the layout (layout: with
+# omit: for a removed block) and writes the shortest decimals.
 #
 # Usage (from the source root): bash tests/cli_tui_edit.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -187,6 +188,48 @@ if within 10 marked w; then
 	ok "an edit after the save marks the title again"
 else
 	not_ok "an edit after the save marks the title again" "$(title w)"
+fi
+
+# --- a save keeps the layout, the removed block and short numbers ---
+id2=$(screen w | sed -n 's/^cursor ([^)]*): \([a-z0-9]*\) .*/\1/p' | head -n 1)
+T send-keys -t t:w x
+wait_for w "block $id2 removed: sampling again" 10
+T send-keys -t t:w s
+wait_for w 'save wall as:' 5
+T send-keys -t t:w C-u
+T send-keys -t t:w -l "$tmp/saved2.yaml"
+T send-keys -t t:w Enter
+wait_for w "saved .*saved2\.yaml" 10
+if [ -n "$id2" ] && grep -q '^layout:' "$tmp/saved2.yaml" &&
+   grep -q "^  omit: \[\"$id2\"\]" "$tmp/saved2.yaml" &&
+   ! grep -q '"c[0-9]*b[0-9]*", vertices' "$tmp/saved2.yaml" &&
+   grep -q 'friction: {bed: 0.65, head: 0.65}' "$tmp/saved2.yaml"; then
+	ok "s writes layout: with omit: [$id2] and the shortest decimals"
+else
+	not_ok "s writes layout: with omit: [$id2] and the shortest decimals" "$(cat "$tmp/saved2.yaml")"
+fi
+nb() {	# free blocks of a wall, from check --json
+	"$bin" check --json "$1" | python3 -c '
+import json, sys
+print(sum(1 for b in json.load(sys.stdin)["blocks"] if not b["fixed"]))'
+}
+n1=$(nb "$tmp/saved.yaml")
+n2=$(nb "$tmp/saved2.yaml")
+if [ -n "$n1" ] && [ "$n2" -eq $((n1 - 1)) ]; then
+	ok "the wall saved after x has one block fewer ($n1 -> $n2)"
+else
+	not_ok "the wall saved after x has one block fewer ($n1 -> $n2)"
+fi
+T send-keys -t t:w o
+wait_for w 'open wall file:' 5
+T send-keys -t t:w -l "$tmp/saved2.yaml"
+T send-keys -t t:w Enter
+wait_for w "opened .*saved2\.yaml" 10
+T send-keys -t t:w b
+if wait_for w "(running|stack) bond: sampling again" 10; then
+	ok "a layout edit works on the reopened wall"
+else
+	not_ok "a layout edit works on the reopened wall" "$(screen w)"
 fi
 
 T send-keys -t t:w q

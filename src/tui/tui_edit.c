@@ -414,6 +414,36 @@ static void tui_edit_block_size(const struct wall *w, double *bw, double *bh)
 	}
 }
 
+/* Course and place of a generated id ("c<course>b<k>"), as one
+ * number that sorts like the layout's order; -1 for other ids. */
+static long tui_edit_order(const char *id)
+{
+	int c, k, n = 0;
+	if (!id || sscanf(id, "c%db%d%n", &c, &k, &n) != 2 || id[n])
+		return -1;
+	return (long)c * 1000000L + k;
+}
+
+/* The last block of (unfinished) nw, a block of the courses put back,
+ * moves to its place in the layout's order, before the blocks that are
+ * not the layout's: a saved wall keeps its layout (wallfile_save). */
+static void tui_edit_to_course(struct wall *nw)
+{
+	int last = nw->nblocks - 1;
+	long o = tui_edit_order(nw->blocks[last].id);
+	int at = 0;
+	while (at < last) {
+		long q = tui_edit_order(nw->blocks[at].id);
+		if (q < 0 || q > o)
+			break;
+		at++;
+	}
+	struct wall_block b = nw->blocks[last];
+	memmove(nw->blocks + at + 1, nw->blocks + at,
+		sizeof *nw->blocks * (size_t)(last - at));
+	nw->blocks[at] = b;
+}
+
 /* The block of w's layout under (x, y) that w does not have (one removed
  * from the courses), as the last block of a wall holding the layout's
  * blocks; NULL when there is none. */
@@ -467,6 +497,7 @@ static void tui_edit_add_block(struct tui *t)
 		if (nw) {
 			struct wall_mark none = {0, 0};
 			wall_add_block(nw, b->id, b->xy, b->nv, 0, none);
+			tui_edit_to_course(nw);
 			snprintf(what, sizeof what, "block %s restored", b->id);
 			tui_edit_done(t, nw, what);
 		}
