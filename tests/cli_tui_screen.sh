@@ -93,6 +93,64 @@ fi
 T send-keys -t t:d q
 wait_for d '^history: ' 10
 
+# --- NO_COLOR: no colour escapes; with colours, some ---
+colour_sgr() {	# a colour parameter in an SGR sequence of the pane
+	T capture-pane -e -p -t "t:$1" |
+		grep -qE $'\e\\[([0-9]+;)*(3[0-8]|4[0-8]|9[0-7]|10[0-7])(;[0-9]+)*m'
+}
+start c LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+start nc LANG=C.UTF-8 LC_ALL=C.UTF-8 NO_COLOR=1 -- walls/demo.yaml
+wait_samples c 5 20
+wait_samples nc 5 20
+T send-keys -t t:c m
+T send-keys -t t:nc m
+wait_for c '^mechanism 1/' 5
+wait_for nc '^mechanism 1/' 5
+if colour_sgr c; then
+	ok "without NO_COLOR the pane has colour escapes"
+else
+	not_ok "without NO_COLOR the pane has colour escapes" "$(T capture-pane -e -p -t t:c | cat -v | head -5)"
+fi
+if ! colour_sgr nc && T capture-pane -e -p -t t:nc | grep -q $'\e\\[[0-9;]*7m'; then
+	ok "NO_COLOR=1: no colour escapes (reverse video for the bars)"
+else
+	not_ok "NO_COLOR=1: no colour escapes" "$(T capture-pane -e -p -t t:nc | cat -v | grep -E '\^\[\[([0-9]+;)*(3|4|9)[0-9]' | head -5)"
+fi
+T send-keys -t t:c q
+T send-keys -t t:nc q
+
+# --- the mouse: a left click selects a block, a right click moves the load ---
+click() {	# WINDOW BUTTON(0 left, 2 right) COL ROW (0-based): X10 press, release
+	local b=$2 x=$3 y=$4
+	T send-keys -t "t:$1" -l "$(printf '\033[M%b%b%b\033[M%b%b%b' \
+		"\\x$(printf %x $((32 + b)))" "\\x$(printf %x $((33 + x)))" "\\x$(printf %x $((33 + y)))" \
+		"\\x$(printf %x 35)" "\\x$(printf %x $((33 + x)))" "\\x$(printf %x $((33 + y)))")"
+}
+start ms LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+wait_samples ms 1 20
+# the top-left block: the cell right below and right of the wall's corner
+LC_ALL=C.UTF-8
+top=$(screen ms | grep -n '┌' | head -n 1 | cut -d: -f1)
+line=$(screen ms | sed -n "${top}p")
+pre=${line%%┌*}
+cx=$((${#pre} + 2))
+cy=$top	# the row below, 0-based
+click ms 0 "$cx" "$cy"
+if wait_for ms 'block c[0-9]+b1 selected' 5 && wait_for ms '^cursor \(.*\): c[0-9]+b1 ' 5; then
+	ok "a left click selects the block under it ($(screen ms | sed -n 's/^block \(c[0-9]*b1\) selected.*/\1/p'))"
+else
+	not_ok "a left click selects the block under it (cell $cx,$cy)" "$(screen ms)"
+fi
+T send-keys -t t:ms Tab
+r0=$(runno ms)
+click ms 2 "$cx" "$cy"
+if wait_for ms 'load at \(' 5 && [ "$(runno ms)" -eq $((r0 + 1)) ]; then
+	ok "a right click moves the load there (a new run)"
+else
+	not_ok "a right click moves the load there" "$(screen ms)"
+fi
+T send-keys -t t:ms q
+
 # --- a large wall: honest progress ---
 start big LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/large.yaml
 if wait_for big 'working  [0-9]+ samples?, oldest [0-9]+ s' 10 && wait_for big 'left     [>~] ?[0-9:]+( s)? \((at least|estimate)\)' 10; then

@@ -204,7 +204,10 @@ static void tui_draw(struct tui *t)
 
 static void tui_colors(struct tui *t)
 {
-	t->colors = has_colors();
+	/* NO_COLOR (no-color.org): set and not empty, no colours at all;
+	 * bold and reverse video stay */
+	const char *nc = getenv("NO_COLOR");
+	t->colors = has_colors() && !(nc && nc[0]);
 	if (!t->colors)
 		return;
 	start_color();
@@ -320,6 +323,10 @@ int tui_main(const char *path)
 	curs_set(0);
 	set_escdelay(25);
 	tui_colors(t);
+	/* a left click selects a block, a right click moves the load */
+	mousemask(BUTTON1_PRESSED | BUTTON1_CLICKED | BUTTON3_PRESSED |
+		  BUTTON3_CLICKED, NULL);
+	mouseinterval(0);
 	getmaxyx(stdscr, t->rows, t->cols);
 
 	t->w = w;

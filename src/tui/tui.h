@@ -192,6 +192,9 @@ int tui_wall_load_nearest(const struct wall *w, const double dir[2],
 int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w);
 int tui_wall_block_at(const struct wall *w, double x, double y);
+/* The wall point under screen cell (y, x) in the last drawing; 0 if
+ * none has been drawn. */
+int tui_wall_point(int y, int x, double *wx, double *wy);
 
 /* tui_hist.c */
 void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w);

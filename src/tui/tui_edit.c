@@ -574,6 +574,39 @@ static void tui_edit_cursor(struct tui *t, int dx, int dy)
 	t->cur_y = fmin(y1 + bh, fmax(y0, t->cur_y + dy * bh));
 }
 
+/* A click on the wall: the left button selects the block under it (the
+ * block cursor goes there), the right one moves the load to the nearest
+ * place of the outline (an edit, as the arrows make). */
+static void tui_edit_mouse(struct tui *t)
+{
+	MEVENT ev;
+	double x, y;
+	if (getmouse(&ev) != OK || !tui_wall_point(ev.y, ev.x, &x, &y) ||
+	    ev.x >= t->cols * 55 / 100)
+		return;
+	if (ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
+		int k = tui_wall_block_at(t->w, x, y);
+		if (k < 0) {
+			tui_message(t, 0, "no block there");
+			return;
+		}
+		t->cursor_mode = 1;
+		t->cur_x = t->w->blocks[k].cx;
+		t->cur_y = t->w->blocks[k].cy;
+		tui_message(t, 0, "block %s selected: a add, x remove, Tab back",
+			    t->w->blocks[k].id);
+	} else if (ev.bstate & (BUTTON3_PRESSED | BUTTON3_CLICKED)) {
+		int l = tui_edit_point_load(t->w);
+		if (l < 0) {
+			tui_message(t, 1, "this wall has no point load to move");
+			return;
+		}
+		double at[2] = {x, y};
+		if (tui_wall_load_nearest(t->w, t->w->loads[l].dir, at))
+			tui_edit_load_at(t, at, NULL);
+	}
+}
+
 /* ---- the main screen ---- */
 
 void tui_main_init(struct tui *t)
@@ -745,6 +778,9 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		break;
 	case 'R':
 		tui_file_report(t);
+		break;
+	case KEY_MOUSE:
+		tui_edit_mouse(t);
 		break;
 	case 12:	/* Ctrl-L */
 		clearok(curscr, TRUE);
