@@ -440,6 +440,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
 		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
 		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
+		printf("             in %s\n", w->nloads &&
+		       w->loads[0].kind == LOAD_BODY
+			       ? "load factor (a body load: lambda times each block's weight)"
+			       : "N (lambda times the point load's reference magnitude)");
 		if (s.has_ci)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
 			       "(characteristic value)\n", s.p05, s.p05_lo,

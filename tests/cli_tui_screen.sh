@@ -78,6 +78,19 @@ if screen d | tail -n 1 | grep -q ' q quit' && [ "$(screen d | head -n 1 | wc -m
 else
 	not_ok "80x24: the title keeps its numbers and state" "$(screen d | head -n 1)"
 fi
+if screen_has d '   sd  [0-9.e+-]+ +\(N\)' && screen_has d 'standard [0-9.]+  gilbert [0-9.]+'; then
+	ok "80x24: the unit of lambda, N for a point load"
+else
+	not_ok "80x24: the unit of lambda, N for a point load" "$(screen d)"
+fi
+start ft LANG=C LC_ALL=C -- walls/ferris-tinloi-1.yaml
+wait_samples ft 1 20
+if screen_has ft 'sd  [0-9.e+-]+ +\(load factor\)'; then
+	ok "a body load: lambda is a load factor"
+else
+	not_ok "a body load: lambda is a load factor" "$(screen ft)"
+fi
+T send-keys -t t:ft q
 T send-keys -t t:d s
 wait_for d 'save wall as:' 5
 T send-keys -t t:d C-u
