@@ -15,19 +15,9 @@ bin=${1:?usage: cli_tui_edit.sh SLIPWALL}
 bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
-if ! command -v tmux >/dev/null 2>&1; then
-	echo "1..0 # SKIP tmux is not installed"
-	exit 0
-fi
 . tests/tap.sh
 . tests/tui_lib.sh
-
-tmp=$(mktemp -d)
-export SLIPWALL_RUNS=$tmp/runs
-tui_server "slipwall-edit-$$" 100 30 || {
-	echo "1..0 # SKIP cannot start a tmux server"
-	exit 0
-}
+tui_setup "slipwall-edit-$$" 100 30
 
 # lambda_min of every sample (accepted or not) of run $1's file
 lam_column() {
@@ -173,11 +163,7 @@ else
 fi
 
 # --- a save takes the mark away ---
-T send-keys -t t:w s
-wait_for w 'save wall as:' 5
-T send-keys -t t:w C-u
-T send-keys -t t:w -l "$tmp/saved.yaml"
-T send-keys -t t:w Enter
+prompt w s 'save wall as' "$tmp/saved.yaml"
 if wait_for w "saved .*saved\.yaml" 10 && ! marked w; then
 	ok "s saves and the modified mark goes"
 else
@@ -194,11 +180,7 @@ fi
 id2=$(screen w | sed -n 's/^cursor ([^)]*): \([a-z0-9]*\) .*/\1/p' | head -n 1)
 T send-keys -t t:w x
 wait_for w "block $id2 removed: sampling again" 10
-T send-keys -t t:w s
-wait_for w 'save wall as:' 5
-T send-keys -t t:w C-u
-T send-keys -t t:w -l "$tmp/saved2.yaml"
-T send-keys -t t:w Enter
+prompt w s 'save wall as' "$tmp/saved2.yaml"
 wait_for w "saved .*saved2\.yaml" 10
 if [ -n "$id2" ] && grep -q '^layout:' "$tmp/saved2.yaml" &&
    grep -q "^  omit: \[\"$id2\"\]" "$tmp/saved2.yaml" &&

@@ -14,19 +14,9 @@ bin=${1:?usage: cli_tui_history.sh SLIPWALL}
 bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
-if ! command -v tmux >/dev/null 2>&1; then
-	echo "1..0 # SKIP tmux is not installed"
-	exit 0
-fi
 . tests/tap.sh
 . tests/tui_lib.sh
-
-tmp=$(mktemp -d)
-export SLIPWALL_RUNS=$tmp/runs
-tui_server "slipwall-history-$$" 100 40 || {
-	echo "1..0 # SKIP cannot start a tmux server"
-	exit 0
-}
+tui_setup "slipwall-history-$$" 100 40
 
 # p05 of a samples file as the workbench prints it (%.4g): GSL's type 7
 # quantile of the sorted accepted lambda_min
@@ -90,17 +80,9 @@ T send-keys -t t:w Escape
 wait_for w 'samples  ' 5
 
 # files: a saved wall (and its summary), a report
-T send-keys -t t:w s
-wait_for w 'save wall as:' 5
-T send-keys -t t:w C-u
-T send-keys -t t:w -l "$tmp/saved.yaml"
-T send-keys -t t:w Enter
+prompt w s 'save wall as' "$tmp/saved.yaml"
 wait_for w "saved .*saved\.yaml" 10
-T send-keys -t t:w R
-wait_for w 'write report to directory:' 5
-T send-keys -t t:w C-u
-T send-keys -t t:w -l "$tmp/rep"
-T send-keys -t t:w Enter
+prompt w R 'write report to directory' "$tmp/rep"
 wait_for w 'report of [0-9]+ accepted samples' 30
 
 T send-keys -t t:w q

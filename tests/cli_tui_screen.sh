@@ -11,19 +11,9 @@ bin=${1:?usage: cli_tui_screen.sh SLIPWALL}
 bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
-if ! command -v tmux >/dev/null 2>&1; then
-	echo "1..0 # SKIP tmux is not installed"
-	exit 0
-fi
 . tests/tap.sh
 . tests/tui_lib.sh
-
-tmp=$(mktemp -d)
-export SLIPWALL_RUNS=$tmp/runs
-tui_server "slipwall-screen-$$" 100 30 || {
-	echo "1..0 # SKIP cannot start a tmux server"
-	exit 0
-}
+tui_setup "slipwall-screen-$$" 100 30
 
 # --- 80x24 on the demo wall: the loaded course, the load, whole numbers ---
 start d LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
@@ -91,12 +81,8 @@ else
 	not_ok "a body load: lambda is a load factor" "$(screen ft)"
 fi
 T send-keys -t t:ft q
-T send-keys -t t:d s
-wait_for d 'save wall as:' 5
-T send-keys -t t:d C-u
-T send-keys -t t:d -l "$tmp/a/long/directory/name/to/see/the/path/is/not/cut/saved-at-80x24.yaml"
 mkdir -p "$tmp/a/long/directory/name/to/see/the/path/is/not/cut"
-T send-keys -t t:d Enter
+prompt d s 'save wall as' "$tmp/a/long/directory/name/to/see/the/path/is/not/cut/saved-at-80x24.yaml"
 if wait_for d 'saved ' 5 &&
    screen d | tr -d '\n' | grep -q "saved $tmp/a/long/directory/name/to/see/the/path/is/not/cut/saved-at-80x24.yaml"; then
 	ok "80x24: the saved path is shown whole (wrapped)"

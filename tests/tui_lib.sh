@@ -1,7 +1,11 @@
 # tui_lib.sh - the helpers of the workbench tests (tests/cli_tui*.sh),
-# sourced after tests/tap.sh, with $bin, $tmp and $SLIPWALL_RUNS set:
+# sourced after tests/tap.sh, with $bin set:
+#   tui_setup NAME COLS ROWS     skip without tmux; $tmp, $SLIPWALL_RUNS,
+#                                and the server (or skip)
 #   tui_server NAME [COLS ROWS]  a private tmux server (tmux -L NAME -f
 #                                /dev/null), session t; 1 if it cannot start
+#   prompt WIN KEY LABEL TEXT    KEY opens the prompt LABEL: TEXT replaces
+#                                its value and Enter accepts
 #   T ARGS...                    tmux on that server
 #   start WIN ENV... -- ARGS...  the workbench in window WIN ($tmp/WIN.pid)
 #   screen WIN, screen_has WIN RE, wait_for WIN RE SECONDS
@@ -22,6 +26,26 @@ tui_server() {
 		"sleep 600" || return 1
 	T set-option -g remain-on-exit on >/dev/null
 	trap 'T kill-server >/dev/null 2>&1; rm -rf "$tmp"' EXIT
+}
+tui_setup() {
+	if ! command -v tmux >/dev/null 2>&1; then
+		echo "1..0 # SKIP tmux is not installed"
+		exit 0
+	fi
+	tmp=$(mktemp -d)
+	export SLIPWALL_RUNS=$tmp/runs
+	tui_server "$1" "$2" "$3" || {
+		echo "1..0 # SKIP cannot start a tmux server"
+		rm -rf "$tmp"
+		exit 0
+	}
+}
+prompt() {
+	T send-keys -t "t:$1" "$2"
+	wait_for "$1" "$3:" 5
+	T send-keys -t "t:$1" C-u
+	T send-keys -t "t:$1" -l "$4"
+	T send-keys -t "t:$1" Enter
 }
 # A window per workbench, started through a shell that leaves its pid.
 # remain-on-exit keeps the pane (and what the program printed) after exit.

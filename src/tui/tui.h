@@ -12,6 +12,7 @@
  *   tui_edit.c   the main screen's keys: edits, the prompt line
  *   tui_file.c   save (YAML + JSON) and open
  *   tui_help.c   the help screen
+ *   tui_history.c the run history: its rows, the H screen, what q prints
  *
  * Threads: only the UI thread (the one in tui_main) calls curses, reads
  * or writes `struct tui`.  The sampler's workers and the solve thread

@@ -13,6 +13,11 @@
  * block leaves another hanging, a load off the wall) is thrown away with
  * its message on the message line; the current wall stays.
  *
+ * tui_edit_apply() also pushes the wall it replaces on the undo stack
+ * (src/undo.c): u and U switch back and forth the same way, as new runs
+ * of the same seed.  No key changes the wall without a prompt or a way
+ * back.
+ *
  * Layout edits regenerate every block whose id is a generated one
  * ("c<course>b<k>"); other blocks (from the file's `blocks`, or added
  * here, "u<k>") are kept as they are.
