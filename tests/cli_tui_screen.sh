@@ -169,7 +169,7 @@ else
 	not_ok "the age of the samples in progress ticks ($a1 -> $a2)" "$(screen big)"
 fi
 if screen_has big 'standard, gilbert: computing… [0-9]+ s' ||
-   screen_has big 'standard [0-9.e+-]+|standard n/a'; then
+   screen_has big 'standard ([0-9][0-9.e+-]*|n/a)  gilbert ([0-9]|n/a)'; then
 	ok "standard and gilbert: computing… N s (or their values)"
 else
 	not_ok "standard and gilbert: computing… N s" "$(screen big)"
