@@ -1,8 +1,14 @@
 #!/bin/bash
-# cli_tui_screen.sh - what the workbench's screen tells, in tmux: on a
-# large wall (minutes a sample) the samples in progress with their age
-# and an estimate of the time left, and standard/gilbert "computing...
-# N s", within 10 s of opening.
+# cli_tui_screen.sh - what the workbench's screen tells, in tmux: at
+# 80x24 on the demo wall the whole wall with the loaded course and the
+# load arrow on a row of their own, every number whole (the pane against
+# the JSON of `slipwall run` with the same seed and count), the unit of
+# lambda (N, load factor), the title's numbers, a saved path whole;
+# NO_COLOR gives no colour escapes; a left click selects a block, a right
+# click moves the load; on a large wall (minutes a sample), within 10 s
+# of opening, the samples in progress with their age and an estimate of
+# the time left, and standard/gilbert "computing... N s"; and `slipwall
+# run`'s progress line says the first samples are running and how long.
 #
 # Usage (from the source root): bash tests/cli_tui_screen.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -181,5 +187,14 @@ if within 10 gone "$pid"; then
 else
 	not_ok "q leaves a large wall within 10 s" "$(screen big)"
 fi
+
+# --- run's progress line on the same wall (a terminal on stderr) ---
+T new-window -d -t t -n rp "echo \$\$ > '$tmp/rp.pid'; exec '$bin' run walls/large.yaml -n 4 --threads 1"
+if wait_for rp '^0/4  first samples running for 0:0[1-9], left > 0:0[1-9]' 10; then
+	ok "slipwall run on the large wall: the first samples running, their time, left > it"
+else
+	not_ok "slipwall run on the large wall: the first samples running" "$(screen rp)"
+fi
+kill -INT "$(cat "$tmp/rp.pid")" 2>/dev/null
 
 tap_end
