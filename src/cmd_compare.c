@@ -533,8 +533,11 @@ int cmd_compare(int argc, char **argv)
 			printf("model: %ld of %ld samples accepted (seed %lu, %s "
 			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
 			       a.fit_depth ? "best depth" : "depth", md->depth);
-		printf("tests: %ld loads from %s\n\n", ntests,
-		       a.tests ? a.tests : "the wall's tests: key");
+		printf("tests: %ld loads from %s\nloads: %s\n\n", ntests,
+		       a.tests ? a.tests : "the wall's tests: key",
+		       w->nloads && w->loads[0].kind == LOAD_BODY
+			       ? "load factor (a body load: lambda times each block's weight)"
+			       : "N (lambda times the point load's reference magnitude)");
 		if (a.fit_depth) {
 			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
 			       "p05", "KS D", "p two-sided");

@@ -345,9 +345,23 @@ static void progress(const struct tally *t, struct progress_ci *pc, long n,
 		else
 			snprintf(p05s, sizeof p05s, "  p05 %.4g", pc->p05);
 	}
-	fprintf(stderr, "\r%ld/%ld  accepted %ld  rejected %ld  %.1f/s%s  "
+	/* slow samples (a large wall): seconds per sample, and before the
+	 * first one how long it has been running */
+	char speed[64];
+	if (t->samples == 0 && elapsed >= 1) {
+		fmt_duration(speed, sizeof speed, elapsed);
+		fprintf(stderr, "\r0/%ld  first samples running for %s, "
+			"left > %s\033[K", n, speed, speed);
+		fflush(stderr);
+		return;
+	}
+	if (rate > 0 && rate < 1)
+		snprintf(speed, sizeof speed, "%.3g s/sample", 1 / rate);
+	else
+		snprintf(speed, sizeof speed, "%.1f/s", rate);
+	fprintf(stderr, "\r%ld/%ld  accepted %ld  rejected %ld  %s%s  "
 		"left %s\033[K", t->samples, n, t->accepted,
-		t->samples - t->accepted, rate, p05s, left);
+		t->samples - t->accepted, speed, p05s, left);
 	fflush(stderr);
 }
 
@@ -441,6 +455,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
 		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
 		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
+		printf("             in %s\n", w->nloads &&
+		       w->loads[0].kind == LOAD_BODY
+			       ? "load factor (a body load: lambda times each block's weight)"
+			       : "N (lambda times the point load's reference magnitude)");
 		if (s.has_ci)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
 			       "(characteristic value)\n", s.p05, s.p05_lo,

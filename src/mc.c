@@ -52,6 +52,10 @@ struct mc {
 	atomic_int stop;
 	int pipe[2];
 	struct mc_counters counters;
+	/* per worker: when its current sample started (its workspace
+	 * setup counts in its first one), 0 when idle; for mc_progress */
+	double *since;
+	int nextid;
 };
 
 /* splitmix64's finaliser: a bijection of 64 bits */
@@ -193,6 +197,10 @@ static void *worker(void *arg)
 {
 	struct mc *m = arg;
 	const struct wall *w = m->cfg.w;
+	pthread_mutex_lock(&m->mu);
+	int id = m->nextid++;
+	m->since[id] = now();
+	pthread_mutex_unlock(&m->mu);
 	/* a stop reaches the LPs too: a sample in progress is abandoned
 	 * (on a large wall one LP can take minutes) */
 	lp_thread_stop_flag(&m->stop);
@@ -216,6 +224,8 @@ static void *worker(void *arg)
 			break;
 		}
 		long k = m->next_index++;
+		if (m->since[id] == 0)
+			m->since[id] = now();
 		pthread_mutex_unlock(&m->mu);
 		long i = m->cfg.first + k * m->cfg.stride;
 
@@ -251,6 +261,7 @@ static void *worker(void *arg)
 		struct slot *s = &m->ring[k % m->window];
 		item_copy(&s->item, &it, w);
 		s->full = 1;
+		m->since[id] = 0;
 		if (k == m->next_out) {
 			pthread_cond_broadcast(&m->cv_ready);
 			notify(m);
@@ -271,6 +282,7 @@ static void *worker(void *arg)
 	m->counters.iterations += iters;
 	m->counters.held += held;
 	m->counters.lp_seconds += lp_seconds;
+	m->since[id] = 0;
 	m->running--;
 	pthread_cond_broadcast(&m->cv_ready);
 	notify(m);
@@ -315,6 +327,7 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 		fcntl(m->pipe[k], F_SETFD, FD_CLOEXEC);
 	}
 	m->th = sw_xcalloc((size_t)m->nth, sizeof *m->th);
+	m->since = sw_xcalloc((size_t)m->nth, sizeof *m->since);
 
 	/* workers inherit a full signal mask: signals go to the caller */
 	sigset_t all, old;
@@ -340,6 +353,23 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 		return NULL;
 	}
 	return m;
+}
+
+void mc_progress(struct mc *m, struct mc_progress *p)
+{
+	double t = now();
+	memset(p, 0, sizeof *p);
+	pthread_mutex_lock(&m->mu);
+	for (int k = 0; k < m->nth; k++) {
+		if (m->since[k] == 0)
+			continue;
+		double age = t - m->since[k];
+		p->busy++;
+		p->total += age;
+		if (age > p->oldest)
+			p->oldest = age;
+	}
+	pthread_mutex_unlock(&m->mu);
 }
 
 int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
@@ -433,6 +463,7 @@ void mc_free(struct mc *m)
 		mc_item_free(&m->ring[k].item);
 	free(m->ring);
 	free(m->th);
+	free(m->since);
 	if (m->pipe[0] >= 0)
 		close(m->pipe[0]);
 	if (m->pipe[1] >= 0)

@@ -32,9 +32,14 @@
  * `supports` polygons; wall_finish() then adds the ground and does the
  * geometric validation (its messages point at the marks set here).
  *
- * Writing (wallfile_save) emits every free block as an explicit polygon,
- * so a saved wall does not depend on the layout generator; numbers are
- * written with 17 significant digits, so they read back bit for bit.
+ * Writing (wallfile_save) keeps a generated wall generated: when the
+ * free blocks are the layout's (in its order, each with its own
+ * vertices, some perhaps left out) followed by others, it writes
+ * `layout:` with `omit:` for the blocks left out and the others under
+ * `blocks:`; any other wall gets every free block as an explicit
+ * polygon.  Either way the wall loads again to the same model, blocks in
+ * the same order.  Numbers are written with the fewest significant
+ * digits (15, 16 or 17) that read back bit for bit.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -495,10 +500,10 @@ static int read_material(struct reader *r, yaml_node_t *n)
 static int read_layout(struct reader *r, yaml_node_t *n)
 {
 	static const char *const keys[] = {"block", "courses", "length", "bond",
-					   "first_course", "origin", NULL};
+					   "first_course", "origin", "omit", NULL};
 	static const char *const bonds[] = {"running", "stack", NULL};
 	static const char *const firsts[] = {"half", "full", NULL};
-	yaml_node_t *v[6];
+	yaml_node_t *v[7];
 	struct wall *w = r->w;
 	struct wall_layout *l = &w->layout;
 	unsigned long long courses;
@@ -550,6 +555,29 @@ static int read_layout(struct reader *r, yaml_node_t *n)
 	l->present = 1;
 	if (layout_generate(w, mark_of(n), r->err) != SW_OK)
 		return -1;
+	/* omit: blocks of the courses left out (a wall edited and saved
+	 * by the workbench); the layout's blocks are all w has so far */
+	if (v[6]) {
+		if (reader_list(r, v[6], "layout omit"))
+			return -1;
+		for (int i = 0; i < list_len(v[6]); i++) {
+			yaml_node_t *c = reader_item(r, v[6], i);
+			const char *id;
+			if (!c || !(id = reader_string(r, c, "layout omit")))
+				return -1;
+			int k = 0;
+			while (k < w->nblocks && strcmp(w->blocks[k].id, id))
+				k++;
+			if (k == w->nblocks)
+				return FAIL(r, c, "layout omit: the layout has no block '%s'",
+					    id);
+			free(w->blocks[k].id);
+			free(w->blocks[k].xy);
+			memmove(w->blocks + k, w->blocks + k + 1,
+				sizeof *w->blocks * (size_t)(w->nblocks - k - 1));
+			w->nblocks--;
+		}
+	}
 	return 0;
 }
 
@@ -993,13 +1021,112 @@ static void save_string(FILE *f, const char *s)
 	fputc('"', f);
 }
 
+/* Numbers as the shortest of %.15g, %.16g, %.17g that strtod reads back
+ * to the same double (0.7, not 0.69999999999999996).  A ring of buffers,
+ * so that one fprintf can take several. */
+struct save_nums {
+	char b[8][32];
+	int k;
+};
+
+static const char *num(struct save_nums *s, double v)
+{
+	char *p = s->b[s->k++ % 8];
+	for (int prec = 15; prec <= 17; prec++) {
+		snprintf(p, 32, "%.*g", prec, v);
+		if (strtod(p, NULL) == v)
+			break;
+	}
+	return p;
+}
+
 static void save_polygon(FILE *f, const double *xy, int nv)
 {
+	struct save_nums ns = {.k = 0};
 	fputc('[', f);
 	for (int i = 0; i < nv; i++)
-		fprintf(f, "%s[%.17g, %.17g]", i ? ", " : "", xy[2 * i],
-			xy[2 * i + 1]);
+		fprintf(f, "%s[%s, %s]", i ? ", " : "", num(&ns, xy[2 * i]),
+			num(&ns, xy[2 * i + 1]));
 	fputc(']', f);
+}
+
+/* Is w its layout plus edits?  1 when its free blocks are the layout's
+ * blocks in the layout's order (same vertices, some left out: *omit,
+ * malloc'd indices into the layout's blocks) followed by blocks of their
+ * own; *gen (the generated blocks, to free) then names them. */
+static int save_layout_plan(const struct wall *w, struct wall **gen,
+			    int **omit, int *nomit)
+{
+	char err[SW_ERRLEN];
+	struct wall_mark none = {0, 0};
+	*gen = NULL;
+	*omit = NULL;
+	*nomit = 0;
+	if (!w->layout.present)
+		return 0;
+	struct wall *g = wall_new();
+	g->layout = w->layout;
+	if (layout_generate(g, none, err) != SW_OK) {
+		wall_free(g);
+		return 0;
+	}
+	int *om = sw_xmalloc(sizeof(int) * (size_t)(g->nblocks + 1));
+	int j = 0, n = 0, ok = 1, extra = 0;
+	for (int k = 0; k < w->nblocks && ok; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (b->fixed)
+			continue;
+		int q = j;
+		while (q < g->nblocks && strcmp(g->blocks[q].id, b->id))
+			q++;
+		if (q == g->nblocks) {
+			/* not generated; no generated block may follow */
+			for (int i = 0; i < g->nblocks && ok; i++)
+				ok = strcmp(g->blocks[i].id, b->id) != 0;
+			extra = 1;
+			continue;
+		}
+		const struct wall_block *gb = &g->blocks[q];
+		ok = !extra && gb->nv == b->nv &&
+		     !memcmp(gb->xy, b->xy, sizeof(double) * 2 * (size_t)b->nv);
+		while (j < q)
+			om[n++] = j++;
+		j = q + 1;
+	}
+	while (ok && j < g->nblocks)
+		om[n++] = j++;
+	if (!ok) {
+		free(om);
+		wall_free(g);
+		return 0;
+	}
+	*gen = g;
+	*omit = om;
+	*nomit = n;
+	return 1;
+}
+
+static void save_layout(FILE *f, const struct wall *w, const struct wall *g,
+			const int *omit, int nomit)
+{
+	struct save_nums ns = {.k = 0};
+	const struct wall_layout *l = &w->layout;
+	fprintf(f, "layout:\n");
+	fprintf(f, "  block: [%s, %s]\n", num(&ns, l->block_w), num(&ns, l->block_h));
+	fprintf(f, "  courses: %d\n", l->courses);
+	fprintf(f, "  length: %s\n", num(&ns, l->length));
+	fprintf(f, "  bond: %s\n", l->bond == BOND_RUNNING ? "running" : "stack");
+	fprintf(f, "  first_course: %s\n", l->first_half ? "half" : "full");
+	if (l->x0 != 0 || l->y0 != (w->has_ground ? w->ground_y : 0))
+		fprintf(f, "  origin: [%s, %s]\n", num(&ns, l->x0), num(&ns, l->y0));
+	if (nomit) {
+		fprintf(f, "  omit: [");
+		for (int i = 0; i < nomit; i++) {
+			fputs(i ? ", " : "", f);
+			save_string(f, g->blocks[omit[i]].id);
+		}
+		fprintf(f, "]\n");
+	}
 }
 
 static void save_wall(FILE *f, const struct wall *w)
@@ -1011,24 +1138,37 @@ static void save_wall(FILE *f, const struct wall *w)
 		save_string(f, w->name);
 		fputc('\n', f);
 	}
+	struct save_nums ns = {.k = 0};
 	fprintf(f, "material:\n");
-	fprintf(f, "  friction: {bed: %.17g, head: %.17g}\n", w->mu_bed,
-		w->mu_head);
-	fprintf(f, "  unit_weight: %.17g\n", w->unit_weight);
-	fprintf(f, "  thickness: %.17g\n", w->thickness);
+	fprintf(f, "  friction: {bed: %s, head: %s}\n", num(&ns, w->mu_bed),
+		num(&ns, w->mu_head));
+	fprintf(f, "  unit_weight: %s\n", num(&ns, w->unit_weight));
+	fprintf(f, "  thickness: %s\n", num(&ns, w->thickness));
 
+	struct wall *g;
+	int *omit, nomit;
+	int as_layout = save_layout_plan(w, &g, &omit, &nomit);
+	if (as_layout)
+		save_layout(f, w, g, omit, nomit);
 	int nfree = 0, nfixed = 0;
 	for (int k = 0; k < w->nblocks; k++) {
 		if (k == w->ground_block)
 			continue;
-		nfree += !w->blocks[k].fixed;
+		/* with a layout, only the blocks of their own */
+		int gen = 0;
+		for (int i = 0; as_layout && i < g->nblocks && !gen; i++)
+			gen = !strcmp(g->blocks[i].id, w->blocks[k].id);
+		nfree += !w->blocks[k].fixed && !gen;
 		nfixed += w->blocks[k].fixed;
 	}
 	if (nfree) {
 		fprintf(f, "blocks:\n");
 		for (int k = 0; k < w->nblocks; k++) {
 			const struct wall_block *b = &w->blocks[k];
-			if (b->fixed)
+			int gen = 0;
+			for (int i = 0; as_layout && i < g->nblocks && !gen; i++)
+				gen = !strcmp(g->blocks[i].id, b->id);
+			if (b->fixed || gen)
 				continue;
 			fputs("  - {id: ", f);
 			save_string(f, b->id);
@@ -1040,7 +1180,7 @@ static void save_wall(FILE *f, const struct wall *w)
 	if (w->has_ground || nfixed) {
 		fprintf(f, "supports:\n");
 		if (w->has_ground)
-			fprintf(f, "  - ground: {y: %.17g}\n", w->ground_y);
+			fprintf(f, "  - ground: {y: %s}\n", num(&ns, w->ground_y));
 		for (int k = 0; k < w->nblocks; k++) {
 			const struct wall_block *b = &w->blocks[k];
 			if (!b->fixed || k == w->ground_block)
@@ -1057,16 +1197,18 @@ static void save_wall(FILE *f, const struct wall *w)
 		for (int l = 0; l < w->nloads; l++) {
 			const struct wall_load *ld = &w->loads[l];
 			if (ld->kind == LOAD_POINT)
-				fprintf(f, "  - point: {at: [%.17g, %.17g], direction: [%.17g, %.17g], magnitude: %.17g}\n",
-					ld->at[0], ld->at[1], ld->dir[0],
-					ld->dir[1], ld->magnitude);
+				fprintf(f, "  - point: {at: [%s, %s], direction: [%s, %s], magnitude: %s}\n",
+					num(&ns, ld->at[0]), num(&ns, ld->at[1]),
+					num(&ns, ld->dir[0]), num(&ns, ld->dir[1]),
+					num(&ns, ld->magnitude));
 			else
-				fprintf(f, "  - body: {direction: [%.17g, %.17g], magnitude: %.17g}\n",
-					ld->dir[0], ld->dir[1], ld->magnitude);
+				fprintf(f, "  - body: {direction: [%s, %s], magnitude: %s}\n",
+					num(&ns, ld->dir[0]), num(&ns, ld->dir[1]),
+					num(&ns, ld->magnitude));
 		}
 	}
 	fprintf(f, "contacts:\n");
-	fprintf(f, "  depth: %.17g\n", w->depth);
+	fprintf(f, "  depth: %s\n", num(&ns, w->depth));
 	fprintf(f, "  positions: %s\n", w->anywhere ? "anywhere" : "depth");
 	fprintf(f, "analysis:\n");
 	fprintf(f, "  samples: %d\n", w->samples);
@@ -1074,9 +1216,11 @@ static void save_wall(FILE *f, const struct wall *w)
 	if (w->ntests) {
 		fprintf(f, "tests:\n  loads: [");
 		for (int i = 0; i < w->ntests; i++)
-			fprintf(f, "%s%.17g", i ? ", " : "", w->tests[i]);
+			fprintf(f, "%s%s", i ? ", " : "", num(&ns, w->tests[i]));
 		fprintf(f, "]\n");
 	}
+	free(omit);
+	wall_free(g);
 }
 
 enum sw_status wallfile_save(const struct wall *w, const char *path,

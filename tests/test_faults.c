@@ -400,10 +400,13 @@ static void test_save(const struct wall *a, const struct wall *b)
 	       !exists(tmp),
 	       "a save writes the file and leaves no temporary file");
 
-	/* a full disk: a file size limit makes write(2) fail with EFBIG */
+	/* a full disk: a file size limit (half of b's file) makes write(2)
+	 * fail with EFBIG */
+	struct stat sb;
+	rlim_t half = stat(refb, &sb) == 0 ? (rlim_t)sb.st_size / 2 : 512;
 	pid_t pid = fork();
 	if (pid == 0) {
-		struct rlimit rl = {2048, 2048};
+		struct rlimit rl = {half, half};
 		signal(SIGXFSZ, SIG_IGN);
 		setrlimit(RLIMIT_FSIZE, &rl);
 		enum sw_status st = wallfile_save(b, path, err);

@@ -455,6 +455,88 @@ static void test_save(void)
 	wall_free(w);
 }
 
+/* A generated wall stays generated: layout, the blocks left out (omit)
+ * and the blocks of its own, in the same order; numbers in the fewest
+ * digits that read back bit for bit. */
+static void test_save_layout(void)
+{
+	char err[SW_ERRLEN], path[] = "/tmp/slipwall-save-XXXXXX", text[8192];
+	const char *src =
+		"material: {friction: 0.7, unit_weight: 19620, thickness: 0.1}\n"
+		"layout: {block: [0.2, 0.1], courses: 4, length: 0.8, first_course: full,\n"
+		"         omit: [c4b2, c4b3]}\n"
+		"blocks:\n"
+		"  - {id: cap, vertices: [[0, 0.4], [0.2, 0.4], [0.2, 0.5], [0, 0.5]]}\n"
+		"supports: [{ground: {y: 0}}]\n"
+		"loads: [{point: {at: [0.8, 0.15], direction: [1, 0]}}]\n"
+		"tests: {loads: [0.30000000000000004, 312]}\n";
+	struct wall *a = parse(src, err), *b = NULL;
+	int fd = mkstemp(path);
+	if (!a || fd < 0) {
+		tap_ok(0, "layout save: parse (%s)", err);
+		return;
+	}
+	close(fd);
+	tap_ok(a->nblocks > 0 && strcmp(a->blocks[0].id, "c1b1") == 0,
+	       "omit leaves the other blocks of the layout");
+	int has = 0;
+	for (int k = 0; k < a->nblocks; k++)
+		has |= !strcmp(a->blocks[k].id, "c4b2") || !strcmp(a->blocks[k].id, "c4b3");
+	tap_ok(!has, "omit leaves out c4b2 and c4b3");
+	tap_ok(wallfile_save(a, path, err) == SW_OK, "layout save: saved");
+	FILE *f = fopen(path, "r");
+	size_t n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+	text[n] = 0;
+	if (f)
+		fclose(f);
+	tap_ok(strstr(text, "layout:\n") && strstr(text, "omit: [\"c4b2\", \"c4b3\"]") &&
+	       strstr(text, "\"cap\"") && !strstr(text, "\"c1b1\""),
+	       "written as its layout, the blocks left out and its own block");
+	tap_ok(strstr(text, "friction: {bed: 0.7, head: 0.7}") &&
+	       strstr(text, "block: [0.2, 0.1]") &&
+	       strstr(text, "0.30000000000000004, 312"),
+	       "the shortest decimals: 0.7, 0.2, and 17 digits where needed");
+	tap_ok(wallfile_load(path, &b, err) == SW_OK && same_wall(a, b),
+	       "it loads to the same wall, blocks in the same order");
+	if (!b)
+		tap_diag("%s\n%s", err, text);
+	wall_free(b);
+	b = NULL;
+
+	/* a block of the courses moved to the end: not the layout's order,
+	 * so every block explicit (the model stays the same) */
+	struct wall *c = parse(
+		"material: {friction: 0.7, unit_weight: 19620, thickness: 0.1}\n"
+		"layout: {block: [0.2, 0.1], courses: 2, length: 0.8, omit: [c1b1]}\n"
+		"blocks:\n"
+		"  - {id: c1b1, vertices: [[0, 0], [0.1, 0], [0.1, 0.1], [0, 0.1]]}\n"
+		"supports: [{ground: {y: 0}}]\n"
+		"loads: [{point: {at: [0.8, 0.15], direction: [1, 0]}}]\n", err);
+	tap_ok(c && wallfile_save(c, path, err) == SW_OK, "reordered: saved");
+	f = fopen(path, "r");
+	n = f ? fread(text, 1, sizeof text - 1, f) : 0;
+	text[n] = 0;
+	if (f)
+		fclose(f);
+	tap_ok(!strstr(text, "layout:") && strstr(text, "\"c1b1\""),
+	       "reordered blocks: written explicit");
+	tap_ok(wallfile_load(path, &b, err) == SW_OK && same_wall(c, b),
+	       "reordered: loads to the same wall");
+	wall_free(b);
+	wall_free(c);
+	wall_free(a);
+	unlink(path);
+
+	a = parse("material: {friction: 0.6, unit_weight: 1, thickness: 1}\n"
+		  "layout: {block: [1, 1], courses: 1, length: 2,\n"
+		  "         omit: [c1b9]}\n"
+		  "supports: [{ground: {y: 0}}]\n"
+		  "loads: [{body: {direction: [1, 0]}}]\n", err);
+	tap_ok(!a && strstr(err, ":3:17: layout omit: the layout has no block 'c1b9'"),
+	       "omit of a block the layout has not: FILE:LINE:COLUMN (%s)", err);
+	wall_free(a);
+}
+
 int main(void)
 {
 	test_values();
@@ -464,5 +546,6 @@ int main(void)
 	test_hostile();
 	test_files();
 	test_save();
+	test_save_layout();
 	return tap_done();
 }

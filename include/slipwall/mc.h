@@ -92,6 +92,16 @@ int mc_pop(struct mc *m, struct mc_item *it, int wait_ms);
  * (one byte per notification; mc_pop drains it).  For poll() loops. */
 int mc_wake_fd(const struct mc *m);
 
+/* The samples being computed now, for progress displays (one lock):
+ * how many, the seconds the oldest has taken so far (a worker's first
+ * sample includes the setup of its workspace), and the sum of their
+ * ages. */
+struct mc_progress {
+	int busy;
+	double oldest, total;
+};
+void mc_progress(struct mc *m, struct mc_progress *p);
+
 /* Ask the workers to stop: each abandons the sample it is computing
  * (within about a second, even inside a long LP: lp_thread_stop_flag)
  * and takes no other.  Samples already finished in order can still be

@@ -48,6 +48,8 @@ static struct mc *volatile tui_signal_mc;
 static const struct tui_screen tui_screens[TUI_SCREEN_COUNT] = {
 	[TUI_SCREEN_MAIN] = {tui_main_init, tui_main_key, tui_main_draw},
 	[TUI_SCREEN_HELP] = {tui_help_init, tui_help_key, tui_help_draw},
+	[TUI_SCREEN_HISTORY] = {tui_history_init, tui_history_key,
+				tui_history_draw},
 };
 
 static void tui_on_signal(int sig)
@@ -105,6 +107,14 @@ void tui_text(int y, int x, int w, const char *s)
 		mvaddnstr(y, x, s, (int)n);
 }
 
+int tui_cols(const char *s)
+{
+	int n = 0;
+	for (; *s; s++)
+		n += ((unsigned char)*s & 0xc0) != 0x80;
+	return n;
+}
+
 const char *tui_lam(const struct tui *t)
 {
 	return t->utf8 ? "\u03bb" : "lam";
@@ -113,6 +123,37 @@ const char *tui_lam(const struct tui *t)
 const char *tui_mu(const struct tui *t)
 {
 	return t->utf8 ? "\u03bc" : "mu";
+}
+
+void tui_note_file(struct tui *t, const char *kind, const char *path)
+{
+	char *line;
+	for (int k = 0; k < t->nfiles; k++) {
+		const char *c = strchr(t->files[k], ':');
+		if (c && !strncmp(t->files[k], kind, (size_t)(c - t->files[k])) &&
+		    !strcmp(c + 2, path))
+			return;	/* written again: listed once */
+	}
+	size_t len = strlen(kind) + strlen(path) + 3;
+	line = malloc(len);
+	if (!line)
+		return;
+	snprintf(line, len, "%s: %s", kind, path);
+	char **v = realloc(t->files, sizeof *v * (size_t)(t->nfiles + 1));
+	if (!v) {
+		free(line);
+		return;
+	}
+	t->files = v;
+	t->files[t->nfiles++] = line;
+}
+
+const char *tui_load_unit(const struct wall *w)
+{
+	for (int l = 0; l < w->nloads; l++)
+		if (w->loads[l].kind == LOAD_BODY)
+			return "load factor";
+	return "N";
 }
 
 void tui_set_wall(struct tui *t, struct wall *nw)
@@ -127,6 +168,7 @@ void tui_set_wall(struct tui *t, struct wall *nw)
 	t->mech_sel = 0;
 	tui_run_start(t);
 	t->solve = tui_solve_start(nw);
+	t->solve_t0 = tui_now();
 }
 
 static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
@@ -162,7 +204,10 @@ static void tui_draw(struct tui *t)
 
 static void tui_colors(struct tui *t)
 {
-	t->colors = has_colors();
+	/* NO_COLOR (no-color.org): set and not empty, no colours at all;
+	 * bold and reverse video stay */
+	const char *nc = getenv("NO_COLOR");
+	t->colors = has_colors() && !(nc && nc[0]);
 	if (!t->colors)
 		return;
 	start_color();
@@ -278,14 +323,32 @@ int tui_main(const char *path)
 	curs_set(0);
 	set_escdelay(25);
 	tui_colors(t);
+	/* a left click selects a block, a right click moves the load */
+	mousemask(BUTTON1_PRESSED | BUTTON1_CLICKED | BUTTON3_PRESSED |
+		  BUTTON3_CLICKED, NULL);
+	mouseinterval(0);
 	getmaxyx(stdscr, t->rows, t->cols);
 
 	t->w = w;
+	undo_init(&t->undo, TUI_UNDO_STEPS);
+	snprintf(t->next_what, sizeof t->next_what, "opened %s",
+		 w->path ? w->path : path);
 	t->cur_x = t->cur_y = NAN;	/* placed on a block by Tab */
+	{
+		time_t now = time(NULL);
+		struct tm tm;
+		char dir[PATH_MAX];
+		localtime_r(&now, &tm);
+		strftime(t->session, sizeof t->session, "%Y%m%d-%H%M%S", &tm);
+		if (history_runs_dir(dir, sizeof dir, err) != 0 ||
+		    history_index_path(dir, t->hist_path, sizeof t->hist_path))
+			t->hist_path[0] = 0;
+	}
 	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
 		    t->threads);
 	tui_run_start(t);
 	t->solve = tui_solve_start(w);
+	t->solve_t0 = tui_now();
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
 
 	double last_draw = -1;
@@ -327,6 +390,10 @@ int tui_main(const char *path)
 			t->solve_done = 1;
 			dirty = 1;
 		}
+		/* the clocks of slow samples and of the solve thread tick */
+		if ((t->run.mc || (t->solve && !t->solve_done)) &&
+		    tui_now() - last_draw >= 1)
+			dirty = 1;
 		if (dirty && tui_now() - last_draw >= TUI_FRAME) {
 			tui_draw(t);
 			last_draw = tui_now();
@@ -340,12 +407,21 @@ int tui_main(const char *path)
 	tui_stderr_end(saved_err, errpath);
 	if (t->solve)
 		tui_solve_abandon(t->solve);
-	for (int k = 0; k < t->ncsvs; k++) {
-		printf("samples: %s\n", t->csvs[k]);
-		free(t->csvs[k]);
+	tui_history_print(t, stdout);
+	if (t->nfiles)
+		printf("files written:\n");
+	for (int k = 0; k < t->nfiles; k++) {
+		printf("%s\n", t->files[k]);
+		free(t->files[k]);
 	}
-	free(t->csvs);
+	free(t->files);
+	if (t->hist_path[0] && t->nhist)
+		printf("history: %s\n", t->hist_path);
 	fflush(stdout);
+	free(t->hist);
+	free(t->prev_lam);
+	tui_history_free();
+	undo_free(&t->undo);
 	wall_free(t->w);
 	return 0;
 }

@@ -13,6 +13,11 @@
  * block leaves another hanging, a load off the wall) is thrown away with
  * its message on the message line; the current wall stays.
  *
+ * tui_edit_apply() also pushes the wall it replaces on the undo stack
+ * (src/undo.c): u and U switch back and forth the same way, as new runs
+ * of the same seed.  No key changes the wall without a prompt or a way
+ * back.
+ *
  * Layout edits regenerate every block whose id is a generated one
  * ("c<course>b<k>"); other blocks (from the file's `blocks`, or added
  * here, "u<k>") are kept as they are.
@@ -25,6 +30,7 @@
 #include <curses.h>
 
 #include "cli.h"
+#include "slipwall/geom.h"
 #include "slipwall/layout.h"
 #include "tui/tui.h"
 
@@ -81,7 +87,7 @@ struct wall *tui_edit_copy(const struct wall *w, const struct wall_layout *regen
 	return c;
 }
 
-int tui_edit_apply(struct tui *t, struct wall *nw)
+int tui_edit_apply(struct tui *t, struct wall *nw, const char *what)
 {
 	char err[SW_ERRLEN];
 	if (wall_finish(nw, err) != SW_OK) {
@@ -89,8 +95,27 @@ int tui_edit_apply(struct tui *t, struct wall *nw)
 		wall_free(nw);
 		return -1;
 	}
+	undo_edit(&t->undo, t->w);
+	snprintf(t->next_what, sizeof t->next_what, "%s", what);
 	tui_set_wall(t, nw);
 	return 0;
+}
+
+/* u and U (Ctrl-R): back to the wall before the last edit, or forward
+ * again; a new run on it, with the same seed, so the same samples. */
+static void tui_edit_undo(struct tui *t, int redo)
+{
+	struct wall *p = redo ? undo_redo(&t->undo, t->w)
+			      : undo_undo(&t->undo, t->w);
+	if (!p) {
+		tui_message(t, 0, "nothing to %s", redo ? "redo" : "undo");
+		return;
+	}
+	snprintf(t->next_what, sizeof t->next_what, "%s", redo ? "redo" : "undo");
+	tui_set_wall(t, p);
+	tui_message(t, 0, "%s: sampling again (run %d; %d more to undo, %d to redo)",
+		    redo ? "redone" : "undone", t->runno, t->undo.npast,
+		    t->undo.nfuture);
 }
 
 /* Copy, let the caller change, apply; with a message on success. */
@@ -105,7 +130,7 @@ static struct wall *tui_edit_begin(struct tui *t)
 
 static void tui_edit_done(struct tui *t, struct wall *nw, const char *what)
 {
-	if (tui_edit_apply(t, nw) == 0)
+	if (tui_edit_apply(t, nw, what) == 0)
 		tui_message(t, 0, "%s: sampling again (run %d)", what, t->runno);
 }
 
@@ -394,6 +419,69 @@ static void tui_edit_block_size(const struct wall *w, double *bw, double *bh)
 	}
 }
 
+/* Course and place of a generated id ("c<course>b<k>"), as one
+ * number that sorts like the layout's order; -1 for other ids. */
+static long tui_edit_order(const char *id)
+{
+	int c, k, n = 0;
+	if (!id || sscanf(id, "c%db%d%n", &c, &k, &n) != 2 || id[n])
+		return -1;
+	return (long)c * 1000000L + k;
+}
+
+/* The last block of (unfinished) nw, a block of the courses put back,
+ * moves to its place in the layout's order, before the blocks that are
+ * not the layout's: a saved wall keeps its layout (wallfile_save). */
+static void tui_edit_to_course(struct wall *nw)
+{
+	int last = nw->nblocks - 1;
+	long o = tui_edit_order(nw->blocks[last].id);
+	int at = 0;
+	while (at < last) {
+		long q = tui_edit_order(nw->blocks[at].id);
+		if (q < 0 || q > o)
+			break;
+		at++;
+	}
+	struct wall_block b = nw->blocks[last];
+	memmove(nw->blocks + at + 1, nw->blocks + at,
+		sizeof *nw->blocks * (size_t)(last - at));
+	nw->blocks[at] = b;
+}
+
+/* The block of w's layout under (x, y) that w does not have (one removed
+ * from the courses), as the last block of a wall holding the layout's
+ * blocks; NULL when there is none. */
+static struct wall *tui_edit_missing(const struct wall *w, double x, double y)
+{
+	char err[SW_ERRLEN];
+	struct wall_mark none = {0, 0};
+	if (!w->layout.present || !isfinite(x) || !isfinite(y))
+		return NULL;
+	struct wall *g = wall_new();
+	g->layout = w->layout;
+	if (layout_generate(g, none, err) != SW_OK) {
+		wall_free(g);
+		return NULL;
+	}
+	double tol = 1e-6 * fmax(w->layout.block_w, w->layout.block_h);
+	for (int k = 0; k < g->nblocks; k++) {
+		const struct wall_block *b = &g->blocks[k];
+		int have = 0;
+		for (int j = 0; j < w->nblocks && !have; j++)
+			have = !strcmp(w->blocks[j].id, b->id);
+		if (have || !geom_contains(b->xy, b->nv, x, y, tol))
+			continue;
+		/* move it to the end */
+		struct wall_block tmp = g->blocks[k];
+		g->blocks[k] = g->blocks[g->nblocks - 1];
+		g->blocks[g->nblocks - 1] = tmp;
+		return g;
+	}
+	wall_free(g);
+	return NULL;
+}
+
 static void tui_edit_add_block(struct tui *t)
 {
 	double bw, bh;
@@ -405,6 +493,22 @@ static void tui_edit_add_block(struct tui *t)
 	double y = gy + floor((t->cur_y - gy) / bh + 1e-9) * bh;
 	double xy[8] = {x, y, x + bw, y, x + bw, y + bh, x, y + bh};
 	char id[32];
+	struct wall *lay = tui_edit_missing(w, t->cur_x, t->cur_y);
+	if (lay) {
+		/* a block of the courses, removed: it comes back as it was */
+		const struct wall_block *b = &lay->blocks[lay->nblocks - 1];
+		struct wall *nw = tui_edit_begin(t);
+		char what[128];
+		if (nw) {
+			struct wall_mark none = {0, 0};
+			wall_add_block(nw, b->id, b->xy, b->nv, 0, none);
+			tui_edit_to_course(nw);
+			snprintf(what, sizeof what, "block %s restored", b->id);
+			tui_edit_done(t, nw, what);
+		}
+		wall_free(lay);
+		return;
+	}
 	for (int k = 1;; k++) {
 		int used = 0;
 		snprintf(id, sizeof id, "u%d", k);
@@ -440,6 +544,18 @@ static void tui_edit_remove_block(struct tui *t)
 	tui_edit_done(t, nw, what);
 }
 
+static void tui_edit_cursor(struct tui *t, int dx, int dy);
+
+/* The block cursor is within a block's size of the wall. */
+static int tui_edit_cursor_near(struct tui *t)
+{
+	if (!isfinite(t->cur_x) || !isfinite(t->cur_y))
+		return 0;
+	double x = t->cur_x, y = t->cur_y;
+	tui_edit_cursor(t, 0, 0);
+	return x == t->cur_x && y == t->cur_y;
+}
+
 /* Move the block cursor by half a block across, a block up or down; it
  * stays within a block's size of the wall. */
 static void tui_edit_cursor(struct tui *t, int dx, int dy)
@@ -461,6 +577,39 @@ static void tui_edit_cursor(struct tui *t, int dx, int dy)
 	}
 	t->cur_x = fmin(x1 + bw, fmax(x0 - bw, t->cur_x + dx * bw / 2));
 	t->cur_y = fmin(y1 + bh, fmax(y0, t->cur_y + dy * bh));
+}
+
+/* A click on the wall: the left button selects the block under it (the
+ * block cursor goes there), the right one moves the load to the nearest
+ * place of the outline (an edit, as the arrows make). */
+static void tui_edit_mouse(struct tui *t)
+{
+	MEVENT ev;
+	double x, y;
+	if (getmouse(&ev) != OK || !tui_wall_point(ev.y, ev.x, &x, &y) ||
+	    ev.x >= t->cols * 55 / 100)
+		return;
+	if (ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
+		int k = tui_wall_block_at(t->w, x, y);
+		if (k < 0) {
+			tui_message(t, 0, "no block there");
+			return;
+		}
+		t->cursor_mode = 1;
+		t->cur_x = t->w->blocks[k].cx;
+		t->cur_y = t->w->blocks[k].cy;
+		tui_message(t, 0, "block %s selected: a add, x remove, Tab back",
+			    t->w->blocks[k].id);
+	} else if (ev.bstate & (BUTTON3_PRESSED | BUTTON3_CLICKED)) {
+		int l = tui_edit_point_load(t->w);
+		if (l < 0) {
+			tui_message(t, 1, "this wall has no point load to move");
+			return;
+		}
+		double at[2] = {x, y};
+		if (tui_wall_load_nearest(t->w, t->w->loads[l].dir, at))
+			tui_edit_load_at(t, at, NULL);
+	}
 }
 
 /* ---- the main screen ---- */
@@ -487,6 +636,8 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		break;
 	case '?':
 		return TUI_SCREEN_HELP;
+	case 'H':
+		return TUI_SCREEN_HISTORY;
 	case ' ':
 	case 'p':
 		tui_run_pause(t, !t->run.paused);
@@ -528,12 +679,23 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	case 'i':
 		tui_edit_depth(t, w->depth, !w->anywhere);
 		break;
+	case 'u':
+		tui_edit_undo(t, 0);
+		break;
+	case 'U':
+	case 18:	/* Ctrl-R */
+		tui_edit_undo(t, 1);
+		break;
 	case KEY_UP:
 	case KEY_DOWN:
 	case KEY_LEFT:
-	case KEY_RIGHT: {
-		int dx = ch == KEY_RIGHT ? 1 : ch == KEY_LEFT ? -1 : 0;
-		int dy = ch == KEY_UP ? 1 : ch == KEY_DOWN ? -1 : 0;
+	case KEY_RIGHT:
+	case 'h':
+	case 'j':
+	case 'k':
+	case 'l': {
+		int dx = ch == KEY_RIGHT || ch == 'l' ? 1 : ch == KEY_LEFT || ch == 'h' ? -1 : 0;
+		int dy = ch == KEY_UP || ch == 'k' ? 1 : ch == KEY_DOWN || ch == 'j' ? -1 : 0;
 		if (t->cursor_mode)
 			tui_edit_cursor(t, dx, dy);
 		else
@@ -546,7 +708,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	case 'D':
 		tui_edit_load_turn(t, -1);
 		break;
-	case 'l': {
+	case 'P': {
 		int l = tui_edit_point_load(w);
 		if (l < 0) {
 			tui_message(t, 1, "this wall has no point load");
@@ -561,7 +723,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		snprintf(buf, sizeof buf, "%d", w->layout.courses);
 		tui_prompt(t, "courses", buf, tui_edit_courses_typed);
 		break;
-	case 'k':
+	case 'L':
 		snprintf(buf, sizeof buf, "%.4g",
 			 w->layout.block_w > 0 ? w->layout.length / w->layout.block_w : 0);
 		tui_prompt(t, "blocks per course", buf, tui_edit_per_course_typed);
@@ -578,7 +740,7 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 								  : "stack bond");
 		break;
 	}
-	case 'h': {
+	case 'B': {
 		struct wall_layout lay = w->layout;
 		lay.first_half = !lay.first_half;
 		tui_edit_layout(t, &lay, lay.first_half ? "first course starts half"
@@ -587,8 +749,9 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 	}
 	case '\t':
 		t->cursor_mode = !t->cursor_mode;
-		if (t->cursor_mode && (!isfinite(t->cur_x) ||
-				       tui_wall_block_at(w, t->cur_x, t->cur_y) < 0)) {
+		/* the cursor stays where it was; placed on a block the first
+		 * time (and when the wall changed so that it is far off) */
+		if (t->cursor_mode && !tui_edit_cursor_near(t)) {
 			for (int k = 0; k < w->nblocks; k++)
 				if (!w->blocks[k].fixed) {
 					t->cur_x = w->blocks[k].cx;
@@ -620,6 +783,9 @@ enum tui_screen_id tui_main_key(struct tui *t, int ch)
 		break;
 	case 'R':
 		tui_file_report(t);
+		break;
+	case KEY_MOUSE:
+		tui_edit_mouse(t);
 		break;
 	case 12:	/* Ctrl-L */
 		clearok(curscr, TRUE);
@@ -654,11 +820,20 @@ void tui_main_draw(struct tui *t)
 		snprintf(dtext, sizeof dtext, "points anywhere");
 	else
 		snprintf(dtext, sizeof dtext, "depth %.3g", w->depth);
-	snprintf(buf, sizeof buf,
-		 " slipwall | %s | %s %.3g/%.3g | %s | run %d %s | %s",
-		 w->name ? w->name : (w->path ? w->path : "wall"), tui_mu(t),
-		 w->mu_bed, w->mu_head, dtext, t->runno, tui_run_state(t),
-		 csv[0] ? csv : "(no samples file)");
+	/* the title: the numbers always; the name's middle cut to fit,
+	 * the samples file only when there is room (H shows it) */
+	char rest[160], name[256], nm[256], file[PATH_MAX + 8];
+	snprintf(rest, sizeof rest, "%s | %s %.3g/%.3g | %s | run %d %s",
+		 undo_modified(&t->undo) ? " *" : "", tui_mu(t), w->mu_bed,
+		 w->mu_head, dtext, t->runno, tui_run_state(t));
+	snprintf(name, sizeof name, "%s",
+		 w->name ? w->name : (w->path ? w->path : "wall"));
+	snprintf(file, sizeof file, " | %s", csv[0] ? csv : "(no samples file)");
+	int room = C - 12 - tui_cols(rest);	/* " slipwall | " */
+	if ((int)(tui_cols(name) + tui_cols(file)) > room)
+		file[0] = 0;
+	tui_abbrev(t, nm, sizeof nm, name, room);
+	snprintf(buf, sizeof buf, " slipwall | %s%s%s", nm, rest, file);
 	tui_main_bar(t, 0, buf);
 
 	int top = 1, bottom = R - 2;	/* panes: rows top .. bottom-1 */
@@ -668,7 +843,7 @@ void tui_main_draw(struct tui *t)
 	tui_wall_draw(t, top, 0, bottom - top, lw);
 	for (int y = top; y < bottom; y++)
 		tui_put(t, y, lw, "│", "|");
-	tui_stats_draw(t, top, rx, sh, rw);
+	sh = tui_stats_draw(t, top, rx, bottom - top - 5, rw) + 1;
 	tui_hist_draw(t, top + sh, rx, bottom - top - sh, rw);
 
 	if (t->prompting) {
@@ -688,19 +863,44 @@ void tui_main_draw(struct tui *t)
 			attroff(A_REVERSE);
 		}
 	} else if (t->msg[0]) {
+		/* a message longer than the line (paths) takes the row
+		 * above too, and the middle of the rest is cut */
 		int attr = t->msg_err ? (t->colors ? COLOR_PAIR(5) : A_BOLD) : 0;
 		if (attr)
 			attron(attr);
-		tui_text(R - 2, 0, C, t->msg);
+		if (tui_cols(t->msg) > C) {
+			char rest[sizeof t->msg + 8];
+			const char *s = tui_skip(t->msg, C);
+			move(R - 3, 0);
+			clrtoeol();
+			tui_text(R - 3, 0, C, t->msg);
+			tui_abbrev(t, rest, sizeof rest, s, C);
+			tui_text(R - 2, 0, C, rest);
+		} else {
+			tui_text(R - 2, 0, C, t->msg);
+		}
 		if (attr)
 			attroff(attr);
 	}
-	const char *keys;
-	if (t->prompting)
-		keys = " Enter accept  Esc cancel  Ctrl-U clear";
-	else if (t->cursor_mode)
-		keys = " Tab load mode  arrows cursor  a add block  x remove block  ? help  q quit";
-	else
-		keys = " q quit ? help spc pause m mech f/F mu e/E depth arrows load d turn s save o open";
-	tui_main_bar(t, R - 1, keys);
+	/* the keys that work now, as many as fit */
+	static const char *const kprompt[] = {"Enter accept", "Esc cancel",
+					      "Ctrl-U clear", NULL};
+	static const char *const kcursor[] = {
+		"Tab load mode", "arrows/hjkl cursor", "a add", "x remove",
+		"u undo", "? help", "q quit", NULL};
+	static const char *const kmain[] = {
+		"q quit", "? help", "spc pause", "u undo", "H history",
+		"f/F mu", "e/E depth", "arrows load", "s save", "o open",
+		"m mech", NULL};
+	const char *const *keys = t->prompting ? kprompt
+				  : t->cursor_mode ? kcursor : kmain;
+	int len = 0;
+	buf[0] = 0;
+	for (int i = 0; keys[i]; i++) {
+		int k = (int)strlen(keys[i]);
+		if (len + 1 + k > C - 1)
+			break;
+		len += snprintf(buf + len, sizeof buf - (size_t)len, " %s", keys[i]);
+	}
+	tui_main_bar(t, R - 1, buf);
 }

@@ -30,25 +30,6 @@
 #include "slipwall/wallfile.h"
 #include "tui/tui.h"
 
-/* mkdir -p */
-static int tui_file_mkdirs(const char *dir)
-{
-	char p[PATH_MAX];
-	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
-		return -1;
-	for (char *s = p + 1; *s; s++) {
-		if (*s != '/')
-			continue;
-		*s = 0;
-		if (mkdir(p, 0777) && errno != EEXIST)
-			return -1;
-		*s = '/';
-	}
-	if (mkdir(p, 0777) && errno != EEXIST)
-		return -1;
-	return 0;
-}
-
 /* The wall's short name: file name without directory and .yaml. */
 static void tui_file_stem(const struct wall *w, char *out, size_t len)
 {
@@ -68,25 +49,9 @@ static void tui_file_stem(const struct wall *w, char *out, size_t len)
 int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
 {
 	char dir[PATH_MAX], stem[128], stamp[32];
-	const char *env = getenv("SLIPWALL_RUNS");
-	const char *xdg = getenv("XDG_DATA_HOME");
-	const char *home = getenv("HOME");
 
-	if (env && env[0])
-		snprintf(dir, sizeof dir, "%s", env);
-	else if (xdg && xdg[0] == '/')
-		snprintf(dir, sizeof dir, "%s/slipwall/runs", xdg);
-	else if (home && home[0])
-		snprintf(dir, sizeof dir, "%s/.local/share/slipwall/runs", home);
-	else {
-		sw_fail(err, SW_EIO, "no place for the samples file: set SLIPWALL_RUNS or HOME");
+	if (history_runs_dir(dir, sizeof dir, err))
 		return -1;
-	}
-	if (tui_file_mkdirs(dir)) {
-		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", dir,
-			strerror(errno));
-		return -1;
-	}
 	time_t now = time(NULL);
 	struct tm tm;
 	localtime_r(&now, &tm);
@@ -218,6 +183,9 @@ static void tui_file_save_to(struct tui *t, const char *path)
 		tui_message(t, 1, "saved %s; summary: %s", path, err);
 		return;
 	}
+	undo_saved(&t->undo);
+	tui_note_file(t, "wall", path);
+	tui_note_file(t, "summary", json);
 	tui_message(t, 0, "saved %s and %s; samples: %s", path, json,
 		    t->run.csv[0] ? t->run.csv : "(none)");
 }
@@ -252,6 +220,8 @@ static void tui_file_open_path(struct tui *t, const char *path)
 		tui_message(t, 1, "%s", err);
 		return;
 	}
+	undo_reset(&t->undo);
+	snprintf(t->next_what, sizeof t->next_what, "opened %s", path);
 	tui_set_wall(t, nw);
 	tui_message(t, 0, "opened %s: sampling (run %d)", path, t->runno);
 }
@@ -324,8 +294,12 @@ static void tui_file_report_to(struct tui *t, const char *dir)
 	if (st != SW_OK)
 		tui_message(t, 1, "report: %s", err);
 	else
-		tui_message(t, 0, "report of %ld accepted samples in %s/report.md",
-			    n, dir);
+	{
+		char md[PATH_MAX + 16];
+		snprintf(md, sizeof md, "%s/report.md", dir);
+		tui_note_file(t, "report", md);
+		tui_message(t, 0, "report of %ld accepted samples in %s", n, md);
+	}
 }
 
 void tui_file_report(struct tui *t)

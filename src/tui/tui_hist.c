@@ -10,6 +10,11 @@
  * beyond the data (standard is an upper value, often several times
  * larger) would squash the bars, so it is then shown as "S>" or "G>" at
  * the right end, its value in the legend.
+ *
+ * The previous run of the session (before the last edit) is drawn as an
+ * outline under the bars: the top of each of its bins, on the same axis
+ * (which spans both runs) and the same scale of relative frequency, so
+ * that a what-if is read at a glance.
  */
 #include <math.h>
 #include <stdio.h>
@@ -48,7 +53,17 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	char buf[256];
 	size_t n = s->n;
 
-	snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted)", tui_lam(t), n);
+	const double *px = t->prev_lam;
+	size_t pn = t->prev_n;
+	if (pn) {
+		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted; %s run %d)",
+			 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
+		if (tui_cols(buf) > w)
+			snprintf(buf, sizeof buf, "%s_min histogram (%zu; %s run %d)",
+				 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
+	} else
+		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted)",
+			 tui_lam(t), n);
 	attron(A_BOLD);
 	tui_text(y0, x0, w, buf);
 	attroff(A_BOLD);
@@ -60,6 +75,10 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (n) {
 		lo = s->x[0];
 		hi = s->x[n - 1];
+	}
+	if (n && pn) {
+		lo = fmin(lo, px[0]);
+		hi = fmax(hi, px[pn - 1]);
 	}
 	for (int i = 0; i < wall->ntests && nmk < 60; i++)
 		mk[nmk++] = (struct tui_mark){wall->tests[i], "T"};
@@ -110,8 +129,12 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	double width = (hi - lo) / nb;
 
 	size_t *count = calloc((size_t)nb, sizeof *count);
-	if (!count)
+	size_t *pcount = calloc((size_t)nb, sizeof *pcount);
+	if (!count || !pcount) {
+		free(count);
+		free(pcount);
 		return;
+	}
 	size_t maxc = 0;
 	for (size_t i = 0; i < n; i++) {
 		int b = (int)((s->x[i] - lo) / width);
@@ -122,12 +145,36 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (++count[b] > maxc)
 			maxc = count[b];
 	}
+	/* both runs on one scale of relative frequency */
+	double maxf = n ? (double)maxc / (double)n : 0;
+	if (n)
+		for (size_t i = 0; i < pn; i++) {
+			int b = (int)((px[i] - lo) / width);
+			if (b < 0)
+				b = 0;
+			if (b >= nb)
+				b = nb - 1;
+			pcount[b]++;
+		}
+	for (int b = 0; b < nb && pn; b++)
+		maxf = fmax(maxf, (double)pcount[b] / (double)pn);
+	int pattr = t->colors ? COLOR_PAIR(4) : A_DIM;
+	attron(pattr);
+	for (int c = 0; c < cols && maxf > 0 && pn; c++) {
+		double f = (double)pcount[c / cpb] / (double)pn;
+		int e = (int)ceil(f / maxf * rows * 8);
+		if (e <= 0)
+			continue;
+		int top = (e - 1) / 8;	/* its top row, from the bottom */
+		mvaddstr(y0 + rows - top, x0 + c, t->utf8 ? "─" : "_");
+	}
+	attroff(pattr);
 	int attr = t->colors ? COLOR_PAIR(3) : 0;
 	if (attr)
 		attron(attr);
 	for (int c = 0; c < cols && maxc; c++) {
 		size_t cnt = count[c / cpb];
-		int e = (int)ceil((double)cnt * rows * 8 / (double)maxc);
+		int e = (int)ceil((double)cnt / (double)n / maxf * rows * 8);
 		for (int r = 0; r < rows; r++) {
 			const char *g = tui_hist_level(t, e - 8 * r);
 			if (g)
@@ -137,6 +184,7 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (attr)
 		attroff(attr);
 	free(count);
+	free(pcount);
 
 	int ya = y0 + rows + 1;
 	for (int c = 0; c < cols; c++)
@@ -165,12 +213,12 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (rc > mc + (int)strlen(m))
 		tui_text(ya + 1, x0 + rc, w - rc, r);
 
-	char sv[32] = "...", gv[32] = "...";
-	if (t->solve_done) {
-		snprintf(sv, sizeof sv, t->has_std ? "%.4g" : "n/a", t->lam_std);
-		snprintf(gv, sizeof gv, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
-	}
-	int len = snprintf(buf, sizeof buf, "S standard %s  G gilbert %s", sv, gv);
+	char sv[32], gv[32];
+	int len;
+	if (tui_solve_text(t, sv, gv, sizeof sv))
+		len = snprintf(buf, sizeof buf, "S standard %s  G gilbert %s", sv, gv);
+	else
+		len = snprintf(buf, sizeof buf, "S G: %s", sv);
 	if (wall->ntests && len > 0 && (size_t)len < sizeof buf)
 		snprintf(buf + len, sizeof buf - (size_t)len, "  T tests (%d)",
 			 wall->ntests);

@@ -19,6 +19,7 @@
  * and closes the file (which stays on disk).
  */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -140,6 +141,8 @@ void tui_run_start(struct tui *t)
 	tally_init(&r->tally, w);
 	mc_item_init(&r->item, w);
 	t->runno++;
+	snprintf(r->what, sizeof r->what, "%s", t->next_what[0] ? t->next_what : "reset");
+	t->next_what[0] = 0;
 	if (tui_file_csv_path(t, r->csv, sizeof r->csv, err) == 0) {
 		r->log = runlog_open(r->csv, w, err);
 		if (!r->log)
@@ -148,11 +151,7 @@ void tui_run_start(struct tui *t)
 		tui_message(t, 1, "%s", err);
 	}
 	if (r->log) {
-		char **v = realloc(t->csvs, sizeof *v * (size_t)(t->ncsvs + 1));
-		if (v) {
-			t->csvs = v;
-			t->csvs[t->ncsvs++] = strdup(r->csv);
-		}
+		tui_note_file(t, "samples", r->csv);
 	} else {
 		r->csv[0] = 0;
 	}
@@ -170,6 +169,7 @@ void tui_run_end(struct tui *t)
 	if (r->log && runlog_close(r->log, err) != SW_OK)
 		tui_message(t, 1, "samples file: %s", err);
 	r->log = NULL;
+	tui_history_record(t);
 	tally_free(&r->tally);
 	mc_item_free(&r->item);
 	free(r->latest_joint);
@@ -227,6 +227,30 @@ void tui_run_set_target(struct tui *t, long n)
 		tui_run_drain(t);
 	else
 		tui_run_spawn(t);
+}
+
+int tui_run_progress(struct tui *t, struct mc_progress *p)
+{
+	memset(p, 0, sizeof *p);
+	if (!t->run.mc)
+		return 0;
+	mc_progress(t->run.mc, p);
+	return 1;
+}
+
+void tui_duration(char *buf, size_t len, double s)
+{
+	if (!isfinite(s) || s < 0) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	long v = (long)(s + 0.5);
+	if (v < 60)
+		snprintf(buf, len, "%ld s", v);
+	else if (v < 3600)
+		snprintf(buf, len, "%ld:%02ld", v / 60, v % 60);
+	else
+		snprintf(buf, len, "%ld:%02ld:%02ld", v / 3600, v / 60 % 60, v % 60);
 }
 
 double tui_run_rate(const struct tui *t)

@@ -15,6 +15,7 @@
  */
 #include <pthread.h>
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -126,4 +127,18 @@ void tui_solve_abandon(struct tui_solve *s)
 	pthread_mutex_unlock(&s->mu);
 	if (fin)
 		tui_solve_free(s);
+}
+
+int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len)
+{
+	char d[32];
+	if (!t->solve_done) {
+		tui_duration(d, sizeof d, tui_now() - t->solve_t0);
+		snprintf(sv, len, "computing%s %s", t->utf8 ? "\u2026" : "...", d);
+		gv[0] = 0;
+		return 0;
+	}
+	snprintf(sv, len, t->has_std ? "%.4g" : "n/a", t->lam_std);
+	snprintf(gv, len, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
+	return 1;
 }

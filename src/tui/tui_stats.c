@@ -1,8 +1,16 @@
 /*
  * tui_stats.c - the running statistics pane: counts, rejections by
- * reason, speed, the percentiles of the accepted λ_min, the
- * characteristic value (5 % percentile) with its distribution-free 99 %
- * interval, and the KS test against the wall's experimental loads.
+ * reason, speed (samples per second, or seconds per sample when they
+ * are slow, with the samples in progress and the time left), the
+ * percentiles of the accepted λ_min and their unit, the characteristic
+ * value (5 % percentile) with its distribution-free 99 % interval, the
+ * single-solution values, and the KS test against the wall's
+ * experimental loads.
+ *
+ * Every line fits the pane: a line of numbers that does not fit with
+ * four significant digits is written with three, then two, so that no
+ * number is cut.  The pane takes the rows it needs and returns how many
+ * (the histogram gets the rest).
  *
  * Everything is computed from the tally at draw time (at most 10 times a
  * second): tally_summary is linear in the accepted count, the exact KS
@@ -17,38 +25,101 @@
 #include "slipwall/stats.h"
 #include "tui/tui.h"
 
-static const char *tui_stats_num(char *buf, size_t len, double v)
+static void tui_stats_num(char *buf, size_t len, double v, int prec)
 {
 	if (isnan(v))
 		snprintf(buf, len, "-");
 	else
-		snprintf(buf, len, "%.4g", v);
-	return buf;
+		snprintf(buf, len, "%.*g", prec, v);
 }
 
-void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
+struct tui_lines {
+	int y, end, x0, w;
+};
+
+static void tui_stats_text(struct tui_lines *p, const char *line)
+{
+	if (p->y < p->end)
+		tui_text(p->y++, p->x0, p->w, line);
+}
+
+/* A line with up to four numbers (fmt has one %s for each, in order;
+ * pad: the width the first one is padded to, 0 for none), with the
+ * most significant digits that fit. */
+static void tui_stats_nums(struct tui_lines *p, const char *fmt, int pad,
+			   int nv, const double *v)
+{
+	char line[256], s[4][32];
+	for (int prec = 4; prec >= 2; prec--) {
+		for (int i = 0; i < 4; i++)
+			tui_stats_num(s[i], sizeof s[i], i < nv ? v[i] : NAN, prec);
+		if (pad > 0) {
+			char tmp[32];
+			snprintf(tmp, sizeof tmp, "%-*s", pad, s[0]);
+			memcpy(s[0], tmp, sizeof tmp);
+		}
+		snprintf(line, sizeof line, fmt, s[0], s[1], s[2], s[3]);
+		if (tui_cols(line) <= p->w)
+			break;
+	}
+	tui_stats_text(p, line);
+}
+
+int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 {
 	const struct tally *ta = &t->run.tally;
 	const struct wall *wall = t->w;
 	struct stats_summary s;
-	char line[512], a[32], b[32], c[32];
-	int y = y0, end = y0 + h;
+	struct tui_lines p = {y0, y0 + h, x0, w};
+	char line[512], a[32], b[32];
 
 	tally_summary(ta, &s);
 	snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
 		 t->run.target, tui_run_state(t));
-	if (y < end)
-		tui_text(y++, x0, w, line);
+	tui_stats_text(&p, line);
+
+	/* Speed: samples per second, or seconds per sample when they are
+	 * slow; samples in progress with their age and the time left when
+	 * one takes more than a second (a large wall: minutes a sample). */
 	double rate = tui_run_rate(t);
-	snprintf(line, sizeof line, "speed    %s /s on %d threads",
-		 tui_stats_num(a, sizeof a, rate), t->threads);
-	if (y < end)
-		tui_text(y++, x0, w, line);
+	struct mc_progress pg;
+	tui_run_progress(t, &pg);
+	double v[4];
+	if (ta->samples > 0 && rate < 1) {
+		v[0] = 1 / rate;
+		snprintf(line, sizeof line, "speed    %%s s a sample, %d threads",
+			 t->threads);
+		tui_stats_nums(&p, line, 0, 1, v);
+	} else if (ta->samples > 0 || pg.oldest < 1) {
+		tui_stats_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
+		snprintf(line, sizeof line, "speed    %s /s on %d threads", a,
+			 t->threads);
+		tui_stats_text(&p, line);
+	} else {
+		tui_stats_text(&p, "speed    none finished yet");
+	}
+	if (pg.busy > 0 && pg.oldest >= 1) {
+		long left = t->run.target - ta->samples;
+		tui_duration(a, sizeof a, pg.oldest);
+		snprintf(line, sizeof line, "working  %d sample%s, oldest %s",
+			 pg.busy, pg.busy == 1 ? "" : "s", a);
+		tui_stats_text(&p, line);
+		if (ta->samples > 0) {
+			tui_duration(b, sizeof b, (double)left / rate);
+			snprintf(line, sizeof line, "left     ~%s (estimate)", b);
+		} else {
+			/* nothing finished: every worker is on its first
+			 * sample, so each takes at least `oldest` */
+			long rounds = (left + t->threads - 1) / t->threads;
+			tui_duration(b, sizeof b, (double)rounds * pg.oldest);
+			snprintf(line, sizeof line, "left     > %s (at least)", b);
+		}
+		tui_stats_text(&p, line);
+	}
 	snprintf(line, sizeof line, "accepted %ld (%.1f %%)", ta->accepted,
 		 ta->samples ? 100.0 * (double)ta->accepted / (double)ta->samples
 			     : 0.0);
-	if (y < end)
-		tui_text(y++, x0, w, line);
+	tui_stats_text(&p, line);
 
 	/* rejections by reason, wrapped */
 	long rej = ta->samples - ta->accepted;
@@ -61,8 +132,8 @@ void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		int il = snprintf(item, sizeof item, "%s%s %ld", sep,
 				  sample_status_name(k), ta->rejected[k]);
 		sep = ", ";
-		if (len + il > w && y < end - 1) {
-			tui_text(y++, x0, w, line);
+		if (len + il > w && p.y < p.end - 1) {
+			tui_stats_text(&p, line);
 			len = snprintf(line, sizeof line, "        ");
 			memmove(item, item + 2, strlen(item + 2) + 1);
 			il -= 2;
@@ -70,60 +141,66 @@ void tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (len + il < (int)sizeof line)
 			len += snprintf(line + len, sizeof line - (size_t)len, "%s", item);
 	}
-	if (y < end)
-		tui_text(y++, x0, w, line);
+	tui_stats_text(&p, line);
 
 	const char *lam = tui_lam(t);
 	int ind = t->utf8 ? 1 : 3;	/* columns of lam */
-	snprintf(line, sizeof line, "%s min  %-9s p05  %s", lam,
-		 tui_stats_num(a, sizeof a, s.min), tui_stats_num(b, sizeof b, s.p05));
-	if (y < end)
-		tui_text(y++, x0, w, line);
-	snprintf(line, sizeof line, "%*s p50  %-9s p95  %s", ind, "",
-		 tui_stats_num(a, sizeof a, s.p50), tui_stats_num(b, sizeof b, s.p95));
-	if (y < end)
-		tui_text(y++, x0, w, line);
-	snprintf(line, sizeof line, "%*s max  %-9s mean %s  sd %s", ind, "",
-		 tui_stats_num(a, sizeof a, s.max), tui_stats_num(b, sizeof b, s.mean),
-		 tui_stats_num(c, sizeof c, s.std));
-	if (y < end)
-		tui_text(y++, x0, w, line);
-	snprintf(line, sizeof line, "characteristic value (p05) %s",
-		 tui_stats_num(a, sizeof a, s.p05));
-	if (y < end)
-		tui_text(y++, x0, w, line);
-	if (s.has_ci)
-		snprintf(line, sizeof line, "  99 %% interval [%s, %s]",
-			 tui_stats_num(b, sizeof b, s.p05_lo),
-			 tui_stats_num(c, sizeof c, s.p05_hi));
-	else
-		snprintf(line, sizeof line, "  99 %% interval: needs 90 accepted");
-	if (y < end)
-		tui_text(y++, x0, w, line);
-
-	char sv[32] = "...", gv[32] = "...";
-	if (t->solve_done) {
-		snprintf(sv, sizeof sv, t->has_std ? "%.4g" : "n/a", t->lam_std);
-		snprintf(gv, sizeof gv, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
+	snprintf(line, sizeof line, "%s min  %%s max  %%s", lam);
+	v[0] = s.min;
+	v[1] = s.max;
+	tui_stats_nums(&p, line, 10, 2, v);
+	snprintf(line, sizeof line, "%*s p05  %%s p50  %%s", ind, "");
+	v[0] = s.p05;
+	v[1] = s.p50;
+	tui_stats_nums(&p, line, 10, 2, v);
+	snprintf(line, sizeof line, "%*s p95  %%s mean %%s", ind, "");
+	v[0] = s.p95;
+	v[1] = s.mean;
+	tui_stats_nums(&p, line, 10, 2, v);
+	snprintf(line, sizeof line, "%*s  sd  %%s (%s)", ind, "",
+		 tui_load_unit(wall));
+	v[0] = s.std;
+	tui_stats_nums(&p, line, 10, 1, v);
+	v[0] = s.p05;
+	tui_stats_nums(&p, "characteristic value (p05) %s", 0, 1, v);
+	if (s.has_ci) {
+		v[0] = s.p05_lo;
+		v[1] = s.p05_hi;
+		tui_stats_nums(&p, "  99 %% interval [%s, %s]", 0, 2, v);
+	} else {
+		tui_stats_text(&p, "  99 % interval: needs 90 accepted");
 	}
-	snprintf(line, sizeof line, "standard %s  gilbert %s", sv, gv);
-	if (y < end)
-		tui_text(y++, x0, w, line);
+
+	char sv[32], gv[32];
+	if (tui_solve_text(t, sv, gv, sizeof sv)) {
+		v[0] = t->has_std ? t->lam_std : NAN;
+		v[1] = t->has_gil ? t->lam_gil : NAN;
+		snprintf(line, sizeof line, "standard %s  gilbert %s",
+			 t->has_std ? "%s" : "n/a%.0s", t->has_gil ? "%s" : "n/a%.0s");
+		tui_stats_nums(&p, line, 0, 2, v);
+	} else {
+		snprintf(line, sizeof line, "standard, gilbert: %s", sv);
+		tui_stats_text(&p, line);
+	}
 
 	if (wall->ntests > 0) {
 		struct stats_ks ks;
 		if (ta->lam.n > 0 &&
 		    stats_ks2(ta->lam.x, ta->lam.n, wall->tests,
-			      (size_t)wall->ntests, &ks) == 0)
+			      (size_t)wall->ntests, &ks) == 0) {
 			snprintf(line, sizeof line,
-				 "KS vs %d tests: D %.3f p %.3g, model<tests p %.3g",
-				 wall->ntests, ks.d, ks.p_two_sided, ks.p_greater);
-		else
+				 "KS vs %d tests: D %%s p %%s, model<tests p %%s",
+				 wall->ntests);
+			v[0] = ks.d;
+			v[1] = ks.p_two_sided;
+			v[2] = ks.p_greater;
+			tui_stats_nums(&p, line, 0, 3, v);
+		} else {
 			snprintf(line, sizeof line, "KS vs %d tests: -", wall->ntests);
-		if (y < end)
-			tui_text(y++, x0, w, line);
+			tui_stats_text(&p, line);
+		}
 	}
 	snprintf(line, sizeof line, "%d mechanisms; m/M shows them", ta->nmech);
-	if (y < end)
-		tui_text(y++, x0, w, line);
+	tui_stats_text(&p, line);
+	return p.y - y0;
 }

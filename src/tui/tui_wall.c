@@ -44,6 +44,7 @@ struct tui_map {
 	double x0, y1;		/* world point of canvas cell (c0, r0) */
 	double sx, sy;		/* cells per metre */
 	double c0, r0;
+	int coarse;		/* a course is one row: no joint lines */
 };
 
 static double tui_wall_col(const struct tui_map *m, double x)
@@ -205,18 +206,76 @@ static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
 		y0 = fmin(y0, cursor[1]);
 		y1 = fmax(y1, cursor[1]);
 	}
-	double mx = 4, top = vert ? 4 : 1, bottom = vert ? 4 : 2;
-	double aw = cw - 1 - 2 * mx, ah = ch - 1 - top - bottom;
+	/* Rows are scaled to whole rows per course, so that every course
+	 * has a row of its own between its joint lines (the loaded one
+	 * too): with the usual margins, else with the least ones; when
+	 * even then a course gets fewer than two rows, the drawing is
+	 * coarse: one row per course (or less), no joint lines. */
+	double bh = w->layout.present ? w->layout.block_h
+				      : w->mean_size / sqrt(2);
+	double mx = 4, top = 0, bottom = 0, aw = cw - 1 - 2 * mx, s = 0;
 	double dx = fmax(x1 - x0, 1e-9), dy = fmax(y1 - y0, 1e-9);
-	double s = fmin(ah / dy, aw / (2 * dx));
+	m->coarse = 0;
+	for (int tries = 0; tries < 2; tries++) {
+		top = tries == 0 ? (vert ? 4 : 1) : (vert ? 2 : 0);
+		bottom = tries == 0 ? (vert ? 4 : 2) : (vert ? 2 : 1);
+		double ah = ch - 1 - top - bottom;
+		s = fmin(ah / dy, aw / (2 * dx));
+		double k = floor(s * bh + 1e-9);
+		/* a wall too long for the aspect ratio: two rows a course
+		 * if the height allows, narrower columns */
+		if (k < 2 && floor(ah / dy * bh + 1e-9) >= 2)
+			k = 2;
+		if (k >= 2 && bh > 0) {
+			s = k / bh;
+			break;
+		}
+		if (tries == 1) {
+			m->coarse = 1;
+			if (bh > 0 && s * bh >= 1)
+				s = 1 / bh;
+		}
+	}
 	if (!(s > 0))
 		s = 1;
 	m->sy = s;
-	m->sx = 2 * s;
+	m->sx = fmin(2 * s, aw / dx);
 	m->x0 = x0;
 	m->y1 = y1;
 	m->c0 = mx + floor((aw - dx * m->sx) / 2);
-	m->r0 = top;
+	/* coarse: the centre of row top is the middle of the top course */
+	m->r0 = m->coarse ? top - 0.5 : top;
+}
+
+/* The coarse drawing: a vertical bar wherever the block under the cells
+ * changes along a row (the head joints); no bed joint lines. */
+static void tui_wall_coarse(const struct tui *t, struct tui_canvas *cv,
+			    int joints)
+{
+	for (int r = 0; r < cv->h; r++)
+		for (int c = 0; c < cv->w; c++) {
+			int a = c ? cv->owner[r * cv->w + c - 1] : -1;
+			int b = cv->owner[r * cv->w + c];
+			if (joints && a != b && a >= 0 && b >= 0)
+				tui_wall_conn(cv, c, r, CU | CD);
+			else if (!joints && b >= 0 && !t->w->blocks[b].fixed)
+				tui_wall_glyph(cv, c, r, t->utf8 ? "\u00b7" : ".", 0);
+		}
+}
+
+/* The map of the last drawing, for the mouse (the UI thread only). */
+static struct tui_map tui_wall_last;
+static int tui_wall_last_ok, tui_wall_last_y, tui_wall_last_x;
+
+int tui_wall_point(int y, int x, double *wx, double *wy)
+{
+	const struct tui_map *m = &tui_wall_last;
+	if (!tui_wall_last_ok)
+		return 0;
+	double r = y - tui_wall_last_y, c = x - tui_wall_last_x;
+	*wx = m->x0 + (c - m->c0) / m->sx;
+	*wy = m->y1 - (r - m->r0) / m->sy;
+	return 1;
 }
 
 int tui_wall_block_at(const struct wall *w, double x, double y)
@@ -256,7 +315,7 @@ static void tui_wall_fill(const struct wall *w, struct tui_canvas *cv,
 }
 
 int tui_wall_mechanism(const struct tui *t, const char **joint,
-		       const double **vel, char *label, size_t len)
+		       const double **vel, char *label, size_t len, int w)
 {
 	const struct tui_run *r = &t->run;
 	const struct tally *ta = &r->tally;
@@ -268,13 +327,21 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 			const struct tally_mech *mm = &ta->mech[idx[k]];
 			*joint = mm->joint;
 			*vel = mm->vel;
-			snprintf(label, len,
-				 "mechanism %d/%d: %.0f %% of accepted (%s %.4g..%.4g)",
-				 k + 1, n,
-				 ta->accepted ? 100.0 * (double)mm->count /
-							(double)ta->accepted
-					      : 0.0,
-				 tui_lam(t), mm->lam_lo, mm->lam_hi);
+			/* the long form if it fits the pane, else shorter;
+			 * the numbers whole */
+			double pc = ta->accepted ? 100.0 * (double)mm->count /
+							   (double)ta->accepted
+						 : 0.0;
+			const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
+			for (int form = 0; form < 3; form++) {
+				snprintf(label, len,
+					 "mechanism %d/%d: %.0f %%%s (%s %.*g..%.*g%s)",
+					 k + 1, n, pc, form == 0 ? " of accepted" : "",
+					 tui_lam(t), form == 2 ? 3 : 4, mm->lam_lo,
+					 form == 2 ? 3 : 4, mm->lam_hi, unit);
+				if (tui_cols(label) <= w)
+					break;
+			}
 			free(idx);
 			return 1;
 		}
@@ -309,7 +376,7 @@ static void tui_wall_mech(const struct tui *t, struct tui_canvas *cv,
 			cv->glyph[i] = t->utf8 ? "▒" : "#";
 			cv->attr[i] = attr;
 		}
-	for (int i = 0; i < w->nifaces; i++) {
+	for (int i = 0; i < w->nifaces && !m->coarse; i++) {
 		char s = joint[i];
 		if (s == JOINT_CLOSED || s == 0)
 			continue;
@@ -394,7 +461,7 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 	const char *joint = NULL;
 	const double *vel = NULL;
 
-	int has = tui_wall_mechanism(t, &joint, &vel, label, sizeof label);
+	int has = tui_wall_mechanism(t, &joint, &vel, label, sizeof label, w);
 	if (t->cursor_mode) {
 		int k = tui_wall_block_at(wall, t->cur_x, t->cur_y);
 		snprintf(label, sizeof label, "cursor (%.3g, %.3g): %s  a add  x remove",
@@ -425,13 +492,26 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 
 	double cur[2] = {t->cur_x, t->cur_y};
 	tui_wall_fit(wall, t->cursor_mode ? cur : NULL, cv.w, cv.h, &m);
+	tui_wall_last = m;
+	tui_wall_last_ok = 1;
+	tui_wall_last_y = y0 + 1;
+	tui_wall_last_x = x0;
 	tui_wall_fill(wall, &cv, &m);
 	double cmin = INFINITY, cmax = -INFINITY;
+	/* coarse: head joints when a course has its row, else dots */
+	if (m.coarse)
+		tui_wall_coarse(t, &cv, m.sy * (wall->layout.present
+					? wall->layout.block_h
+					: wall->mean_size / sqrt(2)) >= 1 - 1e-9);
 	for (int k = 0; k < wall->nblocks; k++) {
 		const struct wall_block *b = &wall->blocks[k];
 		if (!tui_wall_drawn(wall, k))
 			continue;
-		for (int i = 0; i < b->nv; i++) {
+		for (int i = 0; i < b->nv && m.coarse; i++) {
+			cmin = fmin(cmin, lround(tui_wall_col(&m, b->xy[2 * i])));
+			cmax = fmax(cmax, lround(tui_wall_col(&m, b->xy[2 * i])));
+		}
+		for (int i = 0; i < b->nv && !m.coarse; i++) {
 			int j = (i + 1) % b->nv;
 			int c1 = (int)lround(tui_wall_col(&m, b->xy[2 * i]));
 			int r1 = (int)lround(tui_wall_row(&m, b->xy[2 * i + 1]));
@@ -447,7 +527,11 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (k >= 0 && wall->blocks[k].fixed && !cv.conn[i])
 			cv.glyph[i] = t->utf8 ? "░" : "/";
 	}
-	if (wall->has_ground && isfinite(cmin)) {
+	if (wall->has_ground && isfinite(cmin) && m.coarse) {
+		int gr = (int)ceil(tui_wall_row(&m, wall->ground_y));
+		for (int c = (int)cmin - 3; c <= (int)cmax + 3; c++)
+			tui_wall_glyph(&cv, c, gr, t->utf8 ? "░" : "/", 0);
+	} else if (wall->has_ground && isfinite(cmin)) {
 		int gr = (int)lround(tui_wall_row(&m, wall->ground_y));
 		int a = (int)cmin - 3, b = (int)cmax + 3;
 		tui_wall_segment(t, &cv, a, gr, b, gr);

@@ -1,0 +1,53 @@
+/*
+ * history.h - the run history of the workbench: one row per run (what
+ * changed, the friction, the contacts, the load, the counts, the
+ * characteristic value with its interval, the median, p95, the samples
+ * file), kept in a small index file beside the samples files so that it
+ * survives quitting.
+ *
+ * The index is a tab-separated text file, `history.tsv` in the runs
+ * directory: a header line naming the columns, then one line per run,
+ * appended with one write(2) to a file opened O_APPEND, so that two
+ * workbenches sharing the directory never interleave a line.  Numbers
+ * are written with %.17g (NaN as "nan"), text with its tabs and line
+ * breaks turned into spaces.  Readers skip lines they cannot parse
+ * (a line cut by a crash, an older format).
+ */
+#ifndef SLIPWALL_HISTORY_H
+#define SLIPWALL_HISTORY_H
+
+#include <limits.h>
+#include <stddef.h>
+
+#include "slipwall/status.h"
+
+struct history_row {
+	char session[24];	/* when the session started, YYYYmmdd-HHMMSS */
+	int run;		/* the run's number in its session */
+	char wall[128];		/* the wall's name */
+	char what[96];		/* what the run changed */
+	double mu_bed, mu_head;
+	double depth;
+	int anywhere;		/* contacts.positions: anywhere */
+	int load;		/* 0 point, 1 body, -1 none: the first load */
+	double at[2], dir[2];	/* its point (point loads) and direction */
+	long samples, accepted;
+	double p05, p05_lo, p05_hi, p50, p95;	/* NaN: not known */
+	char file[PATH_MAX];	/* the samples file */
+};
+
+/* The runs directory: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs,
+ * else ~/.local/share/slipwall/runs; made when missing.  -1 and err
+ * when there is no such place or it cannot be made. */
+int history_runs_dir(char *out, size_t len, char *err);
+/* The index file in dir. */
+int history_index_path(const char *dir, char *out, size_t len);
+/* Append one row (the header first when the file is new or empty). */
+enum sw_status history_append(const char *path, const struct history_row *r,
+			      char *err);
+/* Read the last max rows (all when max <= 0) into *rows (malloc'd,
+ * the caller frees); a missing file is 0 rows. */
+enum sw_status history_read(const char *path, int max,
+			    struct history_row **rows, int *n, char *err);
+
+#endif

@@ -1,0 +1,256 @@
+/*
+ * history.c - the workbench's run history and its index file
+ * (history.h).
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "slipwall/history.h"
+
+#define HISTORY_HEADER                                                      \
+	"session\trun\twall\twhat\tmu_bed\tmu_head\tdepth\tanywhere\tload\t" \
+	"x\ty\tdx\tdy\tsamples\taccepted\tp05\tp05_lo\tp05_hi\tp50\tp95\tfile\n"
+#define HISTORY_COLS 21
+
+/* mkdir -p */
+static int history_mkdirs(const char *dir)
+{
+	char p[PATH_MAX];
+	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
+		return -1;
+	for (char *s = p + 1; *s; s++) {
+		if (*s != '/')
+			continue;
+		*s = 0;
+		if (mkdir(p, 0777) && errno != EEXIST)
+			return -1;
+		*s = '/';
+	}
+	if (mkdir(p, 0777) && errno != EEXIST)
+		return -1;
+	return 0;
+}
+
+int history_runs_dir(char *out, size_t len, char *err)
+{
+	const char *env = getenv("SLIPWALL_RUNS");
+	const char *xdg = getenv("XDG_DATA_HOME");
+	const char *home = getenv("HOME");
+	int n;
+
+	if (env && env[0])
+		n = snprintf(out, len, "%s", env);
+	else if (xdg && xdg[0] == '/')
+		n = snprintf(out, len, "%s/slipwall/runs", xdg);
+	else if (home && home[0])
+		n = snprintf(out, len, "%s/.local/share/slipwall/runs", home);
+	else {
+		sw_fail(err, SW_EIO, "no place for the samples files: set SLIPWALL_RUNS or HOME");
+		return -1;
+	}
+	if (n < 0 || (size_t)n >= len) {
+		sw_fail(err, SW_EIO, "the runs directory's path is too long");
+		return -1;
+	}
+	if (history_mkdirs(out)) {
+		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", out,
+			strerror(errno));
+		return -1;
+	}
+	return 0;
+}
+
+int history_index_path(const char *dir, char *out, size_t len)
+{
+	int n = snprintf(out, len, "%s/history.tsv", dir);
+	return n < 0 || (size_t)n >= len ? -1 : 0;
+}
+
+/* Text without tabs and line breaks. */
+static int history_text(char *buf, size_t len, const char *s)
+{
+	size_t k = 0;
+	for (; *s && k + 1 < len; s++)
+		buf[k++] = (*s == '\t' || *s == '\n' || *s == '\r') ? ' ' : *s;
+	buf[k] = 0;
+	return (int)k;
+}
+
+enum sw_status history_append(const char *path, const struct history_row *r,
+			      char *err)
+{
+	char wall[sizeof r->wall], what[sizeof r->what], file[sizeof r->file];
+	char line[2 * PATH_MAX];
+	history_text(wall, sizeof wall, r->wall);
+	history_text(what, sizeof what, r->what);
+	history_text(file, sizeof file, r->file);
+	int n = snprintf(line, sizeof line,
+			 "%s\t%d\t%s\t%s\t%.17g\t%.17g\t%.17g\t%d\t%s\t"
+			 "%.17g\t%.17g\t%.17g\t%.17g\t%ld\t%ld\t"
+			 "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%s\n",
+			 r->session, r->run, wall, what, r->mu_bed, r->mu_head,
+			 r->depth, r->anywhere,
+			 r->load == 0 ? "point" : r->load == 1 ? "body" : "none",
+			 r->at[0], r->at[1], r->dir[0], r->dir[1], r->samples,
+			 r->accepted, r->p05, r->p05_lo, r->p05_hi, r->p50,
+			 r->p95, file);
+	if (n < 0 || (size_t)n >= sizeof line)
+		return sw_fail(err, SW_EIO, "%s: history line too long", path);
+	int fd = open(path, O_WRONLY | O_APPEND | O_CREAT, 0666);
+	if (fd < 0)
+		return sw_fail(err, SW_EIO, "%s: cannot open: %s", path,
+			       strerror(errno));
+	struct stat st;
+	int bad = fstat(fd, &st) != 0;
+	if (!bad && st.st_size == 0) {
+		size_t h = strlen(HISTORY_HEADER);
+		bad = write(fd, HISTORY_HEADER, h) != (ssize_t)h;
+	}
+	if (!bad)
+		bad = write(fd, line, (size_t)n) != (ssize_t)n;
+	int e = errno;
+	if (close(fd) != 0 && !bad) {
+		bad = 1;
+		e = errno;
+	}
+	if (bad)
+		return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
+			       strerror(e));
+	return SW_OK;
+}
+
+/* Split line (modified) at tabs into at most max fields. */
+static int history_split(char *line, char **f, int max)
+{
+	int n = 0;
+	char *s = line;
+	while (n < max) {
+		f[n++] = s;
+		char *tab = strchr(s, '\t');
+		if (!tab)
+			break;
+		*tab = 0;
+		s = tab + 1;
+	}
+	char *nl = strchr(f[n - 1], '\n');
+	if (nl)
+		*nl = 0;
+	return n;
+}
+
+static int history_num(const char *s, double *v)
+{
+	char *end;
+	*v = strtod(s, &end);
+	return end == s || *end ? -1 : 0;
+}
+
+static int history_long(const char *s, long *v)
+{
+	char *end;
+	errno = 0;
+	*v = strtol(s, &end, 10);
+	return end == s || *end || errno ? -1 : 0;
+}
+
+/* One line into r; -1 when it is not a row. */
+static int history_parse(char *line, struct history_row *r)
+{
+	char *f[HISTORY_COLS + 1];
+	long run, any, samples, accepted;
+	if (history_split(line, f, HISTORY_COLS + 1) != HISTORY_COLS)
+		return -1;
+	memset(r, 0, sizeof *r);
+	if (strlen(f[0]) >= sizeof r->session || history_long(f[1], &run) ||
+	    history_long(f[7], &any) || history_long(f[13], &samples) ||
+	    history_long(f[14], &accepted))
+		return -1;
+	double *num[] = {&r->mu_bed, &r->mu_head, &r->depth};
+	for (int i = 0; i < 3; i++)
+		if (history_num(f[4 + i], num[i]))
+			return -1;
+	double *pos[] = {&r->at[0], &r->at[1], &r->dir[0], &r->dir[1]};
+	for (int i = 0; i < 4; i++)
+		if (history_num(f[9 + i], pos[i]))
+			return -1;
+	double *q[] = {&r->p05, &r->p05_lo, &r->p05_hi, &r->p50, &r->p95};
+	for (int i = 0; i < 5; i++)
+		if (history_num(f[15 + i], q[i]))
+			return -1;
+	snprintf(r->session, sizeof r->session, "%s", f[0]);
+	r->run = (int)run;
+	snprintf(r->wall, sizeof r->wall, "%s", f[2]);
+	snprintf(r->what, sizeof r->what, "%s", f[3]);
+	r->anywhere = any != 0;
+	r->load = !strcmp(f[8], "point") ? 0 : !strcmp(f[8], "body") ? 1 : -1;
+	r->samples = samples;
+	r->accepted = accepted;
+	snprintf(r->file, sizeof r->file, "%s", f[20]);
+	return 0;
+}
+
+enum sw_status history_read(const char *path, int max,
+			    struct history_row **rows, int *n, char *err)
+{
+	*rows = NULL;
+	*n = 0;
+	FILE *fp = fopen(path, "r");
+	if (!fp) {
+		if (errno == ENOENT)
+			return SW_OK;
+		return sw_fail(err, SW_EIO, "%s: cannot open: %s", path,
+			       strerror(errno));
+	}
+	/* a ring of the last max rows */
+	int cap = max > 0 ? max : 64, cnt = 0, head = 0;
+	struct history_row *ring = sw_xmalloc(sizeof *ring * (size_t)cap);
+	char line[4 * PATH_MAX];
+	struct history_row r;
+	while (fgets(line, sizeof line, fp)) {
+		if (!strchr(line, '\n') && !feof(fp)) {
+			/* too long to be a row: skip the rest of it */
+			int c;
+			while ((c = fgetc(fp)) != EOF && c != '\n')
+				;
+			continue;
+		}
+		if (history_parse(line, &r))
+			continue;
+		if (cnt < cap) {
+			if (max <= 0 && cnt == cap - 1) {
+				cap *= 2;
+				struct history_row *nr = realloc(ring, sizeof *ring * (size_t)cap);
+				if (!nr) {
+					free(ring);
+					fclose(fp);
+					return sw_fail(err, SW_EIO, "out of memory");
+				}
+				ring = nr;
+			}
+			ring[cnt++] = r;
+		} else {
+			ring[head] = r;
+			head = (head + 1) % cap;
+		}
+	}
+	int bad = ferror(fp);
+	fclose(fp);
+	if (bad) {
+		free(ring);
+		return sw_fail(err, SW_EIO, "%s: cannot read", path);
+	}
+	/* oldest first */
+	struct history_row *out = sw_xmalloc(sizeof *out * (size_t)(cnt + 1));
+	for (int i = 0; i < cnt; i++)
+		out[i] = ring[(head + i) % cnt];
+	free(ring);
+	*rows = out;
+	*n = cnt;
+	return SW_OK;
+}

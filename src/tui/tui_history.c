@@ -1,0 +1,307 @@
+/*
+ * tui_history.c - the run history: one row per run of the session (what
+ * the run changed, the friction, the contacts, the load, the counts, the
+ * characteristic value with its 99 % interval, p50, p95, the samples
+ * file), the H screen that shows it with the rows of earlier sessions
+ * above, and the text that q prints.
+ *
+ * A run's row is made when the run ends (tui_run_end: an edit, a reset,
+ * an open, quit or a signal) and appended to the index file beside the
+ * samples files (history.h), so it survives quitting; the run in
+ * progress is shown live, from its tally.  When the run ends, its
+ * accepted loads are kept as "the previous run" that the histogram pane
+ * outlines under the current one.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <curses.h>
+
+#include "slipwall/stats.h"
+#include "tui/tui.h"
+
+#define TUI_HISTORY_OLD 200	/* rows of earlier sessions read */
+
+/* The row of the current run, from its tally. */
+static void tui_history_row(const struct tui *t, struct history_row *h)
+{
+	const struct tui_run *r = &t->run;
+	const struct wall *w = t->w;
+	struct stats_summary s;
+
+	memset(h, 0, sizeof *h);
+	snprintf(h->session, sizeof h->session, "%s", t->session);
+	h->run = t->runno;
+	snprintf(h->wall, sizeof h->wall, "%s",
+		 w->name ? w->name : (w->path ? w->path : "wall"));
+	snprintf(h->what, sizeof h->what, "%s", r->what);
+	h->mu_bed = w->mu_bed;
+	h->mu_head = w->mu_head;
+	h->depth = w->depth;
+	h->anywhere = w->anywhere;
+	h->load = -1;
+	if (w->nloads > 0) {
+		const struct wall_load *ld = &w->loads[0];
+		h->load = ld->kind == LOAD_POINT ? 0 : 1;
+		memcpy(h->at, ld->at, sizeof h->at);
+		memcpy(h->dir, ld->dir, sizeof h->dir);
+	}
+	h->samples = r->tally.samples;
+	h->accepted = r->tally.accepted;
+	tally_summary(&r->tally, &s);
+	h->p05 = s.p05;
+	h->p05_lo = s.has_ci ? s.p05_lo : NAN;
+	h->p05_hi = s.has_ci ? s.p05_hi : NAN;
+	h->p50 = s.p50;
+	h->p95 = s.p95;
+	snprintf(h->file, sizeof h->file, "%s", r->csv);
+}
+
+void tui_history_record(struct tui *t)
+{
+	struct tui_run *r = &t->run;
+	char err[SW_ERRLEN];
+	struct history_row h;
+
+	tui_history_row(t, &h);
+	struct history_row *v = realloc(t->hist, sizeof *v * (size_t)(t->nhist + 1));
+	if (v) {
+		t->hist = v;
+		t->hist[t->nhist++] = h;
+	}
+	if (t->hist_path[0] && history_append(t->hist_path, &h, err) != SW_OK) {
+		tui_message(t, 1, "run history: %s (not kept after quitting)", err);
+		t->hist_path[0] = 0;
+	}
+	/* the previous run, for the histogram's outline */
+	if (r->tally.lam.n > 0) {
+		double *x = malloc(sizeof(double) * r->tally.lam.n);
+		if (x) {
+			memcpy(x, r->tally.lam.x, sizeof(double) * r->tally.lam.n);
+			free(t->prev_lam);
+			t->prev_lam = x;
+			t->prev_n = r->tally.lam.n;
+			t->prev_run = t->runno;
+		}
+	}
+}
+
+static const char *tui_history_num(char *buf, size_t len, double v)
+{
+	if (isnan(v))
+		snprintf(buf, len, "-");
+	else
+		snprintf(buf, len, "%.4g", v);
+	return buf;
+}
+
+/* The two lines of a row: a (what changed and the wall's parameters) and
+ * b (the numbers).  Numbers are never cut; `what` is. */
+void tui_history_lines(const struct tui *t, const struct history_row *h,
+		       char *a, size_t alen, char *b, size_t blen)
+{
+	char d[32], ld[64], p[32], lo[32], hi[32], m[32], q[32];
+	if (h->anywhere)
+		snprintf(d, sizeof d, "anywhere");
+	else
+		snprintf(d, sizeof d, "depth %.3g", h->depth);
+	if (h->load == 0)
+		snprintf(ld, sizeof ld, "point load at %.3g,%.3g dir %.2g,%.2g",
+			 h->at[0], h->at[1], h->dir[0], h->dir[1]);
+	else if (h->load == 1)
+		snprintf(ld, sizeof ld, "body load dir %.2g,%.2g", h->dir[0],
+			 h->dir[1]);
+	else
+		snprintf(ld, sizeof ld, "no load");
+	snprintf(a, alen, "%s %.3g/%.3g  %s  %s", tui_mu(t), h->mu_bed,
+		 h->mu_head, d, ld);
+	tui_history_num(lo, sizeof lo, h->p05_lo);
+	tui_history_num(hi, sizeof hi, h->p05_hi);
+	snprintf(b, blen, "n %ld  acc %ld  p05 %s [%s, %s]  p50 %s  p95 %s %s",
+		 h->samples, h->accepted, tui_history_num(p, sizeof p, h->p05),
+		 lo, hi, tui_history_num(m, sizeof m, h->p50),
+		 tui_history_num(q, sizeof q, h->p95),
+		 h->load == 1 ? "(load factor)" : "N");
+}
+
+/* s shortened to w columns by cutting its middle ("ab…yz"). */
+const char *tui_skip(const char *s, int k)
+{
+	for (; *s; s++)
+		if (((unsigned char)*s & 0xc0) != 0x80 && k-- == 0)
+			break;
+	return s;
+}
+
+void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s, int w)
+{
+	int n = tui_cols(s);
+	if (w < 0)
+		w = 0;
+	if (n <= w) {
+		snprintf(out, len, "%s", s);
+		return;
+	}
+	if (w < 5) {
+		snprintf(out, len, "%.*s", (int)(tui_skip(s, w) - s), s);
+		return;
+	}
+	/* keep more of the end: a path's file name */
+	const char *dots = t->utf8 ? "\u2026" : "~";
+	int keep = w - 1, head = keep / 3, tail = keep - head;
+	snprintf(out, len, "%.*s%s%s", (int)(tui_skip(s, head) - s), s, dots,
+		 tui_skip(s, n - tail));
+}
+
+void tui_history_print(const struct tui *t, FILE *f)
+{
+	char a[256], b[256];
+	if (t->nhist == 0)
+		return;
+	fprintf(f, "run history (%d runs):\n", t->nhist);
+	for (int i = 0; i < t->nhist; i++) {
+		const struct history_row *h = &t->hist[i];
+		tui_history_lines(t, h, a, sizeof a, b, sizeof b);
+		fprintf(f, "%3d %s\n    %s\n    %s\n    samples: %s\n", h->run,
+			h->what, a, b, h->file[0] ? h->file : "(none)");
+	}
+}
+
+/* ---- the H screen ---- */
+
+static int tui_history_top;	/* rows scrolled away */
+static struct history_row *tui_history_old;	/* earlier sessions */
+static int tui_history_nold;
+
+void tui_history_init(struct tui *t)
+{
+	char err[SW_ERRLEN];
+	struct history_row *all = NULL;
+	int n = 0;
+	free(tui_history_old);
+	tui_history_old = NULL;
+	tui_history_nold = 0;
+	tui_history_top = -1;	/* at the bottom */
+	if (!t->hist_path[0] ||
+	    history_read(t->hist_path, TUI_HISTORY_OLD, &all, &n, err) != SW_OK)
+		return;
+	/* this session's rows are in t->hist */
+	int k = 0;
+	for (int i = 0; i < n; i++)
+		if (strcmp(all[i].session, t->session))
+			all[k++] = all[i];
+	tui_history_old = all;
+	tui_history_nold = k;
+}
+
+void tui_history_free(void)
+{
+	free(tui_history_old);
+	tui_history_old = NULL;
+	tui_history_nold = 0;
+}
+
+enum tui_screen_id tui_history_key(struct tui *t, int ch)
+{
+	(void)t;
+	if (ch == 'j' || ch == KEY_DOWN) {
+		tui_history_top++;
+		return TUI_SCREEN_HISTORY;
+	}
+	if (ch == 'k' || ch == KEY_UP) {
+		if (tui_history_top > 0)
+			tui_history_top--;
+		return TUI_SCREEN_HISTORY;
+	}
+	return TUI_SCREEN_MAIN;
+}
+
+/* One run: three lines (what changed and the file; the wall's
+ * parameters; the numbers). */
+static int tui_history_draw_row(const struct tui *t, int y, int y1,
+				const struct history_row *h, int live, int old)
+{
+	char a[256], b[256], head[PATH_MAX + 256], file[PATH_MAX];
+	const char *base = strrchr(h->file, '/');
+	base = base ? base + 1 : h->file;
+	tui_history_lines(t, h, a, sizeof a, b, sizeof b);
+	int n = snprintf(head, sizeof head, "%s%s%s%3d", live ? ">" : " ",
+			 old ? h->session : "", old ? " " : "", h->run);
+	int room = t->cols - 2 - n - 2;
+	int fw = (int)strlen(base);
+	if (fw > room / 2)
+		fw = room / 2;
+	tui_abbrev(t, file, sizeof file, base[0] ? base : "(no samples file)", fw);
+	int ww = room - (int)strlen(file) - 2;
+	if (ww < 0)
+		ww = 0;
+	char what[128];
+	snprintf(what, sizeof what, "%s%s", h->what, live ? " (this run)" : "");
+	char wc[128];
+	tui_abbrev(t, wc, sizeof wc, what, ww);
+	snprintf(head + n, sizeof head - (size_t)n, " %-*s  %s", ww, wc, file);
+	if (y >= 1 && y < y1) {
+		if (live)
+			attron(A_BOLD);
+		tui_text(y, 0, t->cols, head);
+		if (live)
+			attroff(A_BOLD);
+	}
+	if (y + 1 >= 1 && y + 1 < y1)
+		tui_text(y + 1, 5, t->cols - 5, a);
+	if (y + 2 >= 1 && y + 2 < y1)
+		tui_text(y + 2, 5, t->cols - 5, b);
+	return 3;
+}
+
+void tui_history_draw(struct tui *t)
+{
+	char buf[PATH_MAX + 128];
+	struct history_row live;
+	int R = t->rows, C = t->cols;
+	int running = t->run.latest_joint != NULL;
+	if (running)
+		tui_history_row(t, &live);
+
+	int nrows = tui_history_nold + t->nhist + running;
+	int body = R - 3;	/* rows 1 .. R-3 */
+	int lines = 3 * nrows + (tui_history_nold ? 1 : 0);
+	int maxtop = lines > body ? lines - body : 0;
+	if (tui_history_top < 0 || tui_history_top > maxtop)
+		tui_history_top = maxtop;
+
+	snprintf(buf, sizeof buf, " run history: %d runs this session%s%s", t->nhist + running,
+		 t->hist_path[0] ? "; index " : " (not kept: no index file)",
+		 t->hist_path);
+	attron(A_REVERSE);
+	move(0, 0);
+	for (int c = 0; c < C; c++)
+		addch(' ');
+	char ab[PATH_MAX + 128];
+	tui_abbrev(t, ab, sizeof ab, buf, C);
+	tui_text(0, 0, C, ab);
+	attroff(A_REVERSE);
+
+	int y = 1 - tui_history_top, y1 = R - 2;
+	if (tui_history_nold) {
+		if (y >= 1 && y < y1)
+			tui_text(y, 0, C, "earlier sessions (session, run):");
+		y++;
+		for (int i = 0; i < tui_history_nold; i++)
+			y += tui_history_draw_row(t, y, y1, &tui_history_old[i], 0, 1);
+	}
+	for (int i = 0; i < t->nhist; i++)
+		y += tui_history_draw_row(t, y, y1, &t->hist[i], 0, 0);
+	if (running)
+		tui_history_draw_row(t, y, y1, &live, 1, 0);
+
+	tui_text(R - 2, 0, C, "p05 [99 % interval of p05], p50, p95: the accepted loads of the run");
+	attron(A_REVERSE);
+	move(R - 1, 0);
+	for (int c = 0; c < C; c++)
+		addch(' ');
+	tui_text(R - 1, 0, C, " any key: back to the workbench   j/k: scroll");
+	attroff(A_REVERSE);
+}

@@ -1,0 +1,109 @@
+/*
+ * test_history.c - the run history's index file: rows read back as
+ * written (numbers to the last bit, NaN, text with tabs), the header
+ * written once, the last N rows, lines that are not rows skipped, the
+ * runs directory from $SLIPWALL_RUNS made when missing.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "slipwall/history.h"
+#include "tap.h"
+
+static void row(struct history_row *r, int run)
+{
+	memset(r, 0, sizeof *r);
+	snprintf(r->session, sizeof r->session, "20260101-120000");
+	r->run = run;
+	snprintf(r->wall, sizeof r->wall, "Demo wall");
+	snprintf(r->what, sizeof r->what, "friction\tbed %d", run);
+	r->mu_bed = 0.1 * run;	/* not exact in binary: must round-trip */
+	r->mu_head = 0.7;
+	r->depth = 0.25;
+	r->load = 0;
+	r->at[0] = 0.8;
+	r->at[1] = 1.0 / 3;
+	r->dir[0] = 1;
+	r->samples = 1000 + run;
+	r->accepted = 990 + run;
+	r->p05 = 35.32 + run;
+	r->p05_lo = run == 1 ? NAN : 35.0;
+	r->p05_hi = run == 1 ? NAN : 36.0;
+	r->p50 = 38.47;
+	r->p95 = 235.4;
+	snprintf(r->file, sizeof r->file, "/tmp/runs/demo-%d.csv", run);
+}
+
+int main(void)
+{
+	char err[SW_ERRLEN], dir[PATH_MAX], path[PATH_MAX];
+	char base[] = "/tmp/slipwall-history-XXXXXX";
+	if (!mkdtemp(base)) {
+		perror("mkdtemp");
+		return 1;
+	}
+	snprintf(dir, sizeof dir, "%s/a/b", base);
+	setenv("SLIPWALL_RUNS", dir, 1);
+	char got[PATH_MAX];
+	tap_ok(history_runs_dir(got, sizeof got, err) == 0 && !strcmp(got, dir) &&
+	       access(dir, W_OK) == 0,
+	       "the runs directory is $SLIPWALL_RUNS, made when missing");
+	history_index_path(dir, path, sizeof path);
+
+	struct history_row w[3], *r = NULL;
+	int n = -1;
+	tap_ok(history_read(path, 0, &r, &n, err) == SW_OK && n == 0,
+	       "no index yet: no rows");
+	free(r);
+	for (int i = 0; i < 3; i++) {
+		row(&w[i], i + 1);
+		if (history_append(path, &w[i], err) != SW_OK)
+			tap_diag("%s", err);
+	}
+	/* a line cut short and a stranger: both skipped */
+	FILE *f = fopen(path, "a");
+	fputs("20260101-120000\t4\tcut short\n", f);
+	fputs("not a row at all\n", f);
+	fclose(f);
+
+	enum sw_status st = history_read(path, 0, &r, &n, err);
+	tap_ok(st == SW_OK && n == 3,
+	       "three rows read back (the cut and the stranger skipped): %d", n);
+	int same = n == 3;
+	for (int i = 0; i < n && same; i++) {
+		same = r[i].run == w[i].run && r[i].mu_bed == w[i].mu_bed &&
+		       r[i].at[1] == w[i].at[1] && r[i].samples == w[i].samples &&
+		       r[i].accepted == w[i].accepted && r[i].p05 == w[i].p05 &&
+		       r[i].load == 0 && !strcmp(r[i].file, w[i].file) &&
+		       !strcmp(r[i].session, w[i].session) &&
+		       !strcmp(r[i].wall, "Demo wall");
+	}
+	tap_ok(same, "every field as written, to the last bit");
+	tap_ok(n == 3 && isnan(r[0].p05_lo) && r[1].p05_lo == 35.0,
+	       "NaN (no interval yet) read back as NaN");
+	tap_ok(n == 3 && !strcmp(r[0].what, "friction bed 1"),
+	       "a tab in the text becomes a space: '%s'", n ? r[0].what : "");
+	free(r);
+
+	tap_ok(history_read(path, 2, &r, &n, err) == SW_OK && n == 2 &&
+	       r[0].run == 2 && r[1].run == 3, "the last 2 rows, oldest first");
+	free(r);
+
+	f = fopen(path, "r");
+	char line[4096];
+	int headers = 0;
+	while (fgets(line, sizeof line, f))
+		headers += !strncmp(line, "session\trun\t", 12);
+	fclose(f);
+	tap_ok(headers == 1, "the header is written once (%d)", headers);
+
+	unlink(path);
+	rmdir(dir);
+	snprintf(dir, sizeof dir, "%s/a", base);
+	rmdir(dir);
+	rmdir(base);
+	return tap_done();
+}
