@@ -30,7 +30,7 @@ marked() {
 	title "$1" | grep -qE '\) \* \|'
 }
 
-start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/clamp-pull.yaml
 wait_samples w 1 20
 # 30 samples a run: r starts run 2 with that target from sample 0
 T send-keys -t t:w n C-u 30 Enter r

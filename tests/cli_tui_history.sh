@@ -37,7 +37,7 @@ hist_row() {
 				  print mu, p; exit }'
 }
 
-start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/clamp-pull.yaml
 wait_samples w 1 20
 # run 1 ends at its count; the two edits' runs have 40 samples each
 T send-keys -t t:w n C-u 40 Enter
@@ -92,7 +92,7 @@ if wait_for w '^history: ' 10; then
 	   printf '%s\n' "$out" | grep -q "^wall: $tmp/saved.yaml\$" &&
 	   printf '%s\n' "$out" | grep -q "^summary: $tmp/saved.json\$" &&
 	   printf '%s\n' "$out" | grep -q "^report: $tmp/rep/report.md\$" &&
-	   [ "$(printf '%s\n' "$out" | grep -c "^samples: $SLIPWALL_RUNS/demo-.*\.csv\$")" -eq 3 ]; then
+	   [ "$(printf '%s\n' "$out" | grep -c "^samples: $SLIPWALL_RUNS/clamp-pull-.*\.csv\$")" -eq 3 ]; then
 		ok "q prints the history and every file written"
 	else
 		not_ok "q prints the history and every file written" "$out"
@@ -101,14 +101,14 @@ else
 	not_ok "q prints the history" "$(screen w)"
 fi
 idx=$SLIPWALL_RUNS/history.tsv
-if [ "$(grep -c "$SLIPWALL_RUNS/demo-" "$idx")" -eq 3 ]; then
+if [ "$(grep -c "$SLIPWALL_RUNS/clamp-pull-" "$idx")" -eq 3 ]; then
 	ok "the index file has the three runs"
 else
 	not_ok "the index file has the three runs" "$(cat "$idx")"
 fi
 
 # a new session shows them as earlier sessions
-start v LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+start v LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/clamp-pull.yaml
 wait_samples v 1 20
 T send-keys -t t:v H
 if wait_for v '^earlier sessions' 5 && [ "$(screen v | grep -cE '^ [0-9]{8}-[0-9]{6} +[123] ')" -eq 3 ]; then
