@@ -207,3 +207,22 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 	*nout = n;
 	return SW_OK;
 }
+
+int cli_tests_synthetic(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return 0;
+	char line[512];
+	int yes = 0;
+	while (!yes && fgets(line, sizeof line, f)) {
+		char *hash = strchr(line, '#');
+		if (!hash)
+			continue;
+		for (char *p = hash; *p; p++)
+			*p = (char)tolower((unsigned char)*p);
+		yes = strstr(hash, "synthetic") != NULL;
+	}
+	fclose(f);
+	return yes;
+}

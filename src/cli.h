@@ -54,6 +54,9 @@ int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
  * "FILE:LINE:COLUMN: what is wrong" in err. */
 enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err);
+/* Does a loads file call its loads synthetic (the word in a '#'
+ * comment, any case)?  Then compare and report say so. */
+int cli_tests_synthetic(const char *path);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

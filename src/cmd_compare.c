@@ -489,6 +489,8 @@ int cmd_compare(int argc, char **argv)
 		json_object_begin(&j);
 		json_key(&j, "source");
 		json_string(&j, a.tests ? a.tests : "wall");
+		json_key(&j, "synthetic");
+		json_bool(&j, a.tests && cli_tests_synthetic(a.tests));
 		json_key(&j, "n");
 		json_int(&j, ntests);
 		json_summary(&j, &ts);
@@ -533,8 +535,10 @@ int cmd_compare(int argc, char **argv)
 			printf("model: %ld of %ld samples accepted (seed %lu, %s "
 			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
 			       a.fit_depth ? "best depth" : "depth", md->depth);
-		printf("tests: %ld loads from %s\n\n", ntests,
-		       a.tests ? a.tests : "the wall's tests: key");
+		printf("tests: %ld loads from %s%s\n\n", ntests,
+		       a.tests ? a.tests : "the wall's tests: key",
+		       a.tests && cli_tests_synthetic(a.tests) ?
+		       " (SYNTHETIC: not measurements, the file says so)" : "");
 		if (a.fit_depth) {
 			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
 			       "p05", "KS D", "p two-sided");

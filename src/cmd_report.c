@@ -358,8 +358,9 @@ int cmd_report(int argc, char **argv)
 	shell_arg(cmdline, sizeof cmdline, a.out);
 
 	char tsrc[1024];
-	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`" : "the wall's tests: key",
-		 a.tests);
+	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`%s" : "the wall's tests: key",
+		 a.tests, a.tests && cli_tests_synthetic(a.tests) ?
+		 " (**synthetic**: not measurements, the file says so)" : "");
 	struct report_input in = {
 		.w = w,
 		.lam = lam,
@@ -398,6 +399,9 @@ int cmd_report(int argc, char **argv)
 	if (!ntests)
 		printf("no experimental loads: the figures show the model "
 		       "alone\n");
+	else if (a.tests && cli_tests_synthetic(a.tests))
+		printf("the experimental loads of %s are synthetic (not "
+		       "measurements, the file says so)\n", a.tests);
 out:
 	report_cleanup();
 	tally_free(&t);

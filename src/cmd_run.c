@@ -182,7 +182,7 @@ static void usage(FILE *f)
 		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
 		"                    [--depth D] [--until-ci W] [--json]\n"
 		"\n"
-		"Monte Carlo analysis (SPEC section 2): N samples of the collapse\n"
+		"Monte Carlo analysis (docs/method.md): N samples of the collapse\n"
 		"load with random contact points, their statistics and mechanisms.\n"
 		"\n"
 		"  -n N                 samples (default: the wall's analysis.samples)\n"
