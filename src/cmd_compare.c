@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
@@ -44,6 +45,7 @@ struct compare_args {
 	double depth;		/* < 0: the wall's */
 	int fit_depth;
 	int json;
+	struct overrides ov;	/* --friction, --set, ... */
 };
 
 /* One model run (a depth of the profile, or the only one). */
@@ -61,7 +63,9 @@ static void usage(FILE *f)
 	fprintf(f,
 		"usage: slipwall compare WALL.yaml [--tests FILE] [--samples FILE.csv]\n"
 		"                        [-n N] [--seed S] [--threads T] [--depth D]\n"
-		"                        [--fit-depth] [--json]\n"
+		"                        [--fit-depth] [--json] [--friction MU|BED,HEAD]\n"
+		"                        [--load-at X,Y] [--load-direction DX,DY]\n"
+		"                        [--set KEY=VALUE]...\n"
 		"\n"
 		"The model's collapse loads against experimental ones: two-sample\n"
 		"Kolmogorov-Smirnov test (exact p-values) and the characteristic\n"
@@ -72,6 +76,8 @@ static void usage(FILE *f)
 		"  --samples FILE.csv  the model's loads from a samples file of 'run'\n"
 		"                      (default: run the Monte Carlo analysis now)\n"
 		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                      change the wall as for 'run'\n"
 		"  --fit-depth         find the depth d in [0, 0.5] whose loads match\n"
 		"                      the tests best (least KS distance)\n"
 		"  --json              print the result as JSON\n");
@@ -95,6 +101,10 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
@@ -363,11 +373,13 @@ int cmd_compare(int argc, char **argv)
 {
 	struct compare_args a;
 	int rc = parse_args(argc, argv, &a);
-	if (rc)
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
 		return rc < 0 ? 0 : rc;
-	struct wall *w;
-	if ((rc = cli_load_wall(a.wall, &w)))
-		return rc;
+	}
 
 	char err[SW_ERRLEN];
 	int status = 0;
@@ -466,6 +478,7 @@ int cmd_compare(int argc, char **argv)
 		json_object_begin(&j);
 		json_key(&j, "wall");
 		json_string(&j, a.wall);
+		override_json(&a.ov, &j);
 		json_key(&j, "model");
 		json_object_begin(&j);
 		json_key(&j, "source");
@@ -528,6 +541,11 @@ int cmd_compare(int argc, char **argv)
 		json_end(&j);
 	} else {
 		printf("%s  [%s]\n", w->name ? w->name : a.wall, a.wall);
+		if (a.ov.n > 0) {
+			char d[1024];
+			override_describe(&a.ov, d, sizeof d);
+			printf("overrides: %s\n", d);
+		}
 		if (a.samples)
 			printf("model: %ld accepted loads from %s\n", md->accepted,
 			       a.samples);
@@ -570,5 +588,6 @@ out:
 	free(one.lam);
 	free(tests);
 	wall_free(w);
+	override_free(&a.ov);
 	return status;
 }

@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "override.h"
 #include "slipwall/lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/report.h"
@@ -42,6 +43,7 @@ struct report_args {
 	int threads;
 	double depth;		/* < 0: the wall's */
 	double time_limit;
+	struct overrides ov;	/* --friction, --set, ... */
 };
 
 static void usage(FILE *f)
@@ -61,6 +63,9 @@ static void usage(FILE *f)
 		"  --tests FILE        experimental loads, one per line, '#' comments\n"
 		"                      (default: the wall's tests: key)\n"
 		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                       change the wall as for 'run'; the report\n"
+		"                       lists them, its command line repeats them\n"
 		"  --time-limit S      for the global method (walls of at most %d\n"
 		"                      blocks), default %g s\n", GLOBAL_MAX_BLOCKS,
 		GLOBAL_TIME);
@@ -81,6 +86,10 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
@@ -241,13 +250,15 @@ int cmd_report(int argc, char **argv)
 {
 	struct report_args a;
 	int rc = parse_args(argc, argv, &a);
-	if (rc)
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
 		return rc < 0 ? 0 : rc;
-	struct wall *w;
-	if ((rc = cli_load_wall(a.wall, &w)))
-		return rc;
+	}
 
-	char err[SW_ERRLEN], note[512] = "";
+	char err[SW_ERRLEN], note[2048] = "";
 	int status = 0;
 	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
 	long ntests = 0, nlam = 0;
@@ -350,9 +361,18 @@ int cmd_report(int argc, char **argv)
 				 a.depth);
 		}
 	}
+	override_args(&a.ov, cmdline, sizeof cmdline);
 	if (a.tests) {
 		strcat(cmdline, " --tests");
 		shell_arg(cmdline, sizeof cmdline, a.tests);
+	}
+	if (a.ov.n > 0) {
+		/* the overrides in the summary, after the replay's note */
+		char d[1024];
+		size_t u = strlen(note);
+		override_describe(&a.ov, d, sizeof d);
+		snprintf(note + u, sizeof note - u, "%sThe wall file's values "
+			 "were changed for this report: %s.", u ? " " : "", d);
 	}
 	strcat(cmdline, " --out");
 	shell_arg(cmdline, sizeof cmdline, a.out);
@@ -410,5 +430,6 @@ out:
 	free(xi);
 	free(tests);
 	wall_free(w);
+	override_free(&a.ov);
 	return status;
 }

@@ -43,6 +43,7 @@
 
 #include "cli.h"
 #include "cluster.h"
+#include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
@@ -64,6 +65,7 @@ struct run_args {
 	double depth;		/* < 0: the wall's */
 	double until_ci;	/* 0: off */
 	int json;
+	struct overrides ov;	/* --friction, --set, ... */
 };
 
 enum stop_reason {
@@ -181,6 +183,8 @@ static void usage(FILE *f)
 		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
 		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
 		"                    [--depth D] [--until-ci W] [--json]\n"
+		"                    [--friction MU|BED,HEAD] [--load-at X,Y]\n"
+		"                    [--load-direction DX,DY] [--set KEY=VALUE]...\n"
 		"\n"
 		"Monte Carlo analysis (docs/method.md): N samples of the collapse\n"
 		"load with random contact points, their statistics and mechanisms.\n"
@@ -192,6 +196,14 @@ static void usage(FILE *f)
 		"  --samples FILE.csv   write one row per sample, as it is computed\n"
 		"  --positions FILE.csv replay the contact positions of a samples file\n"
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
+		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
+		"                       of the bed and head joints\n"
+		"  --load-at X,Y        where the wall's live load acts\n"
+		"  --load-direction DX,DY   its direction\n"
+		"  --set KEY=VALUE      any key of the wall file (material.unit_weight=\n"
+		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
+		"                       each override changes the wall as editing its\n"
+		"                       file would, and the summary lists them\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
 		"                       than W times p05 (at most N samples)\n"
 		"  --json               print the summary as JSON\n"
@@ -217,6 +229,10 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
@@ -415,6 +431,11 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf(", %d rank%s x", r->ranks, r->ranks > 1 ? "s" : "");
 	printf("%s%d thread%s)\n", r->ranks ? " " : ", ", r->cfg->threads,
 	       r->cfg->threads > 1 ? "s" : "");
+	if (r->a->ov.n > 0) {
+		char d[1024];
+		override_describe(&r->a->ov, d, sizeof d);
+		printf("overrides    %s\n", d);
+	}
 	printf("accepted     %ld (%.1f %%)\n", t->accepted,
 	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
 	printf("rejected     %ld\n", t->samples - t->accepted);
@@ -486,6 +507,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_null(&j);
 	else
 		json_double(&j, depth_used(r));
+	override_json(&r->a->ov, &j);
 	json_key(&j, "threads");
 	json_int(&j, r->cfg->threads);
 	if (r->ranks) {
@@ -551,6 +573,7 @@ static void setup_free(struct run_setup *s)
 	runlog_close(s->log, err);
 	free(s->replay);
 	wall_free(s->w);
+	override_free(&s->a.ov);
 	memset(s, 0, sizeof *s);
 }
 
@@ -613,7 +636,7 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	int rc = parse_args(argc, argv, a);
 	if (rc)
 		return rc;
-	if ((rc = cli_load_wall(a->wall, &s->w)))
+	if ((rc = override_load(CMD, a->wall, &a->ov, &s->w)))
 		return rc;
 	struct wall *w = s->w;
 	if (a->depth >= 0 && w->anywhere)
