@@ -18,6 +18,7 @@ int cmd_solve(int argc, char **argv);
 int cmd_run(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_report(int argc, char **argv);
+int cmd_sweep(int argc, char **argv);
 
 /* The workbench (src/tui/); path NULL = the bundled demo wall. */
 int tui_main(const char *path);

@@ -250,6 +250,8 @@ struct rctx {
 	/* the convergence curve */
 	int nconv;
 	double *cn, *cp, *clo, *chi;	/* n, p05, 99 % band (NaN: none) */
+	/* report_write_sweep: the sweep (the fields above are unused) */
+	const struct report_sweep *sweep;
 };
 
 static int cmp_double(const void *a, const void *b)
@@ -1830,6 +1832,134 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (st == SW_OK)
 		st = write_markdown(&c, dir, o, err);
 	rctx_free(&c);
+	return st;
+}
+
+/* ---- a sweep (`slipwall sweep`) ------------------------------------------ */
+
+static void draw_sweep(struct fig *f, const struct rctx *c)
+{
+	const struct report_sweep *s = c->sweep;
+	cairo_t *cr = f->cr;
+	int n = s->n;
+	double *x = sw_xmalloc(sizeof(double) * (size_t)n * 6);
+	double *p05 = x + n, *lo = x + 2 * n, *hi = x + 3 * n, *p50 = x + 4 * n,
+	       *p95 = x + 5 * n;
+	double ymax = 0;
+	for (int i = 0; i < n; i++) {
+		x[i] = s->pt[i].value;
+		p05[i] = s->pt[i].p05;
+		lo[i] = s->pt[i].p05_lo;
+		hi[i] = s->pt[i].p05_hi;
+		p50[i] = s->pt[i].p50;
+		p95[i] = s->pt[i].p95;
+	}
+	ymax = fmax(max_of(p95, n), max_of(hi, n));
+	fill_white(f);
+	struct axes a = plot_box(1);
+	a.x0 = x[0];
+	a.x1 = x[n - 1];
+	if (!(a.x1 > a.x0)) {
+		a.x0 -= 0.5;
+		a.x1 += 0.5;
+	}
+	a.y0 = 0;
+	a.y1 = ymax > 0 ? ymax * 1.08 : 1;
+	axes_draw(f, &a, s->xlabel, c->axis, "Collapse load against the "
+		  "parameter", 0);
+	axes_clip(cr, &a);
+	/* the band of p05, in runs of values that have one */
+	for (int i = 0; i < n;) {
+		if (!isfinite(lo[i]) || !isfinite(hi[i])) {
+			i++;
+			continue;
+		}
+		int j = i;
+		while (j + 1 < n && isfinite(lo[j + 1]) && isfinite(hi[j + 1]))
+			j++;
+		if (j == i) {
+			set_rgb(cr, C_ORANGE, 0.8);
+			cairo_set_line_width(cr, 4);
+			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
+			cairo_line_to(cr, ax_x(&a, x[i]), ax_y(&a, hi[i]));
+			cairo_stroke(cr);
+		} else {
+			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
+			for (int k = i + 1; k <= j; k++)
+				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, lo[k]));
+			for (int k = j; k >= i; k--)
+				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, hi[k]));
+			cairo_close_path(cr);
+			set_rgb(cr, C_ORANGE, 0.35);
+			cairo_fill(cr);
+		}
+		i = j + 1;
+	}
+	set_style(cr, LG_DASH, C_BLACK);
+	curve(cr, &a, x, p95, n);
+	set_style(cr, LG_THIN, C_BLACK);
+	curve(cr, &a, x, p50, n);
+	set_style(cr, LG_LINE, C_VERMILLION);
+	curve(cr, &a, x, p05, n);
+	cairo_set_dash(cr, NULL, 0, 0);
+	for (int i = 0; i < n; i++) {
+		if (!isfinite(p05[i]))
+			continue;
+		cairo_arc(cr, ax_x(&a, x[i]), ax_y(&a, p05[i]), 2.6, 0,
+			  2 * M_PI);
+		cairo_fill(cr);
+	}
+	cairo_restore(cr);
+	struct lg_item it[4] = {
+		{LG_LINE, C_VERMILLION, "p05 (characteristic value)"},
+		{LG_BAND, C_ORANGE, "99 % interval of p05"},
+		{LG_THIN, C_BLACK, "p50"},
+		{LG_DASH, C_BLACK, "p95"},
+	};
+	/* the legend on the side where the curves are low */
+	legend(f, &a, it, 4, p95[0] < p95[n - 1] || !isfinite(p95[0]) ?
+	       LG_LEFT : 0);
+	if (s->caption)
+		caption(f, PLOT_H + 6, s->caption);
+	free(x);
+}
+
+static double h_sweep(const struct rctx *c)
+{
+	(void)c;
+	return fig_height(1);
+}
+
+enum sw_status report_write_sweep(const struct report_sweep *s,
+				  const char *dir, const struct report_opts *o,
+				  char *err)
+{
+	static const struct figdef fig = {"sweep", "Collapse load against "
+					  "the parameter (slipwall sweep)",
+					  draw_sweep, h_sweep};
+	struct report_opts def;
+	if (!o) {
+		report_opts_default(&def);
+		o = &def;
+	}
+	if (s->n < 1)
+		return sw_fail(err, SW_EINPUT, "sweep: no values to draw");
+	enum sw_status st = make_dir(dir, err);
+	if (st != SW_OK)
+		return st;
+	struct report_input in;
+	memset(&in, 0, sizeof in);
+	in.w = s->w;
+	in.run.version = s->version;
+	struct rctx c;
+	memset(&c, 0, sizeof c);
+	c.in = &in;
+	c.w = s->w;
+	c.sweep = s;
+	report_load_unit(s->w, c.axis, sizeof c.axis, &c.unit);
+	for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK; fmt <<= 1)
+		if (o->formats & fmt)
+			st = render(&fig, &c, dir, fmt, o, err);
 	return st;
 }
 
