@@ -47,7 +47,7 @@ check "README's Use block has example commands ($count)" [ "$count" -ge 10 ]
 # workbench LINE: run it in tmux; wait for the status line; q; status 0
 workbench() {
 	tmux -L "$sock" -f /dev/null new-session -d -s w -x 100 -y 30 \
-		"cd '$tmp/work' && { $1; } >'$tmp/wb.out' 2>&1; echo \$? >'$tmp/wb.rc'; sleep 60" ||
+		"cd '$tmp/work' && { $1; } 2>'$tmp/wb.out'; echo \$? >'$tmp/wb.rc'; sleep 60" ||
 		return 1
 	within 30 eval "tmux -L '$sock' capture-pane -p -t w | grep -q 'q quit'" || {
 		tmux -L "$sock" capture-pane -p -t w
