@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
@@ -182,6 +183,12 @@ static int better(const struct model *a, const struct model *b)
 	if (a->ks.p_two_sided != b->ks.p_two_sided)
 		return a->ks.p_two_sided > b->ks.p_two_sided;
 	return a->depth < b->depth;
+}
+
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
 }
 
 static int cmp_depth(const void *x, const void *y)
@@ -574,6 +581,17 @@ int cmd_compare(int argc, char **argv)
 			       md->ks.p_two_sided);
 		}
 		print_table(md, &ts, ntests);
+		if (w->design_load > 0 && md->accepted > 0) {
+			double *sl = sw_xmalloc(sizeof(double) *
+						(size_t)md->accepted);
+			memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
+			qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
+			struct collapse cp;
+			collapse_at(sl, (size_t)md->accepted, w->design_load,
+				    "design_load", &cp);
+			free(sl);
+			collapse_print(stdout, "\nmodel: ", &cp);
+		}
 		print_ks(md);
 	}
 	if (md->accepted == 0) {

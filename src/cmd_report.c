@@ -22,6 +22,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "collapse.h"
 #include "override.h"
 #include "slipwall/lp.h"
 #include "slipwall/mc.h"
@@ -222,6 +223,12 @@ static void single_solutions(const struct wall *w, double tlim,
 	lp_thread_done();
 }
 
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
+}
+
 /* Append s to buf, single-quoted for a POSIX shell when needed. */
 static void shell_arg(char *buf, size_t len, const char *s)
 {
@@ -365,6 +372,21 @@ int cmd_report(int argc, char **argv)
 	if (a.tests) {
 		strcat(cmdline, " --tests");
 		shell_arg(cmdline, sizeof cmdline, a.tests);
+	}
+	if (w->design_load > 0) {
+		/* the probability of collapse at the design load */
+		double *sl = sw_xmalloc(sizeof(double) * (size_t)nlam);
+		memcpy(sl, lam, sizeof(double) * (size_t)nlam);
+		qsort(sl, (size_t)nlam, sizeof(double), cmp_load);
+		struct collapse cp;
+		collapse_at(sl, (size_t)nlam, w->design_load, "design_load", &cp);
+		free(sl);
+		size_t u = strlen(note);
+		snprintf(note + u, sizeof note - u, "%sDesign load %.6g "
+			 "(analysis.design_load): P(λ_min ≤ %.6g) = %.4g (%zu of "
+			 "%zu accepted samples), 99 %% interval [%.4g, %.4g] (exact "
+			 "binomial); see the fragility figure.", u ? " " : "",
+			 cp.load, cp.load, cp.p, cp.k, cp.n, cp.lo, cp.hi);
 	}
 	if (a.ov.n > 0) {
 		/* the overrides in the summary, after the replay's note */

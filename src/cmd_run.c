@@ -43,6 +43,7 @@
 
 #include "cli.h"
 #include "cluster.h"
+#include "collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
@@ -66,6 +67,7 @@ struct run_args {
 	double until_ci;	/* 0: off */
 	int json;
 	struct overrides ov;	/* --friction, --set, ... */
+	double at;		/* --at LOAD; < 0: none */
 };
 
 enum stop_reason {
@@ -182,7 +184,7 @@ static void usage(FILE *f)
 	fprintf(f,
 		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
 		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
-		"                    [--depth D] [--until-ci W] [--json]\n"
+		"                    [--depth D] [--until-ci W] [--at LOAD] [--json]\n"
 		"                    [--friction MU|BED,HEAD] [--load-at X,Y]\n"
 		"                    [--load-direction DX,DY] [--set KEY=VALUE]...\n"
 		"\n"
@@ -204,6 +206,10 @@ static void usage(FILE *f)
 		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
 		"                       each override changes the wall as editing its\n"
 		"                       file would, and the summary lists them\n"
+		"  --at LOAD            the probability of collapse at LOAD,\n"
+		"                       P(lambda_min <= LOAD) among the accepted samples,\n"
+		"                       with its exact 99 %% interval (a wall's\n"
+		"                       analysis.design_load is always reported)\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
 		"                       than W times p05 (at most N samples)\n"
 		"  --json               print the summary as JSON\n"
@@ -217,6 +223,7 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
+	a->at = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *s = argv[i], *v;
 		int missing = 0, sr;
@@ -243,6 +250,10 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 			if (!*v)
 				return cli_usage_error(CMD, "--positions: empty file name");
 			a->positions = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--at", &missing))) {
+			if (cli_parse_double(v, &a->at) || a->at < 0)
+				return cli_usage_error(CMD, "--at: '%s' is not a "
+						       "load >= 0", v);
 		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
 			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
 				return cli_usage_error(CMD, "--until-ci: '%s' is not "
@@ -455,6 +466,16 @@ static void print_text(const struct run_info *r, const struct tally *t)
 			printf("p05          %.6g, no interval: needs at least "
 			       "90 accepted samples\n", s.p05);
 	}
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_print(stdout, "collapse     ", &c);
+	}
+	if (w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, w->design_load, "design_load",
+			    &c);
+		collapse_print(stdout, "collapse     ", &c);
+	}
 	if (t->samples > 0)
 		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",
 		       (double)t->iterations / (double)t->samples,
@@ -519,6 +540,24 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, stop_name(r->stop));
 	tally_json(t, &j);
+	json_key(&j, "design_load");
+	if (r->w->design_load > 0)
+		json_double(&j, r->w->design_load);
+	else
+		json_null(&j);
+	json_key(&j, "collapse_probability");
+	json_array_begin(&j);
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_json(&j, &c);
+	}
+	if (r->w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, r->w->design_load,
+			    "design_load", &c);
+		collapse_json(&j, &c);
+	}
+	json_array_end(&j);
 	json_key(&j, "iterations_per_sample");
 	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
 	json_key(&j, "lps_per_sample");

@@ -720,8 +720,9 @@ static int read_contacts(struct reader *r, yaml_node_t *n)
 
 static int read_analysis(struct reader *r, yaml_node_t *n)
 {
-	static const char *const keys[] = {"samples", "seed", NULL};
-	yaml_node_t *v[2];
+	static const char *const keys[] = {"samples", "seed", "design_load",
+					   NULL};
+	yaml_node_t *v[3];
 	unsigned long long x;
 
 	if (reader_map(r, n, "analysis", keys, v))
@@ -736,6 +737,9 @@ static int read_analysis(struct reader *r, yaml_node_t *n)
 			return -1;
 		r->w->seed = (unsigned long)x;
 	}
+	if (v[2] && reader_number_in(r, v[2], "design_load", 0, 1, INFINITY,
+				     &r->w->design_load))
+		return -1;
 	return 0;
 }
 
@@ -1307,6 +1311,8 @@ static void save_wall(FILE *f, const struct wall *w)
 	fprintf(f, "analysis:\n");
 	fprintf(f, "  samples: %d\n", w->samples);
 	fprintf(f, "  seed: %lu\n", w->seed);
+	if (w->design_load > 0)
+		fprintf(f, "  design_load: %.17g\n", w->design_load);
 	if (w->ntests) {
 		fprintf(f, "tests:\n  loads: [");
 		for (int i = 0; i < w->ntests; i++)
