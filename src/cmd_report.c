@@ -19,9 +19,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "summary.h"
 #include "collapse.h"
 #include "override.h"
 #include "slipwall/lp.h"
@@ -170,8 +173,12 @@ static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 	return SW_OK;
 }
 
-/* The single-solution values (this thread's GLPK). */
+/* The single-solution values (this thread's GLPK): standard and
+ * gilbert from the summary beside a samples file when it has them (sf
+ * not NULL), else computed; each step said on stderr as it starts and
+ * ends, since on a large wall one takes minutes. */
 static void single_solutions(const struct wall *w, double tlim,
+			     const struct summary_file *sf,
 			     struct report_solution *sol, int *nsol)
 {
 	static const enum solve_method ms[3] = {SOLVE_STANDARD, SOLVE_GILBERT,
@@ -188,13 +195,36 @@ static void single_solutions(const struct wall *w, double tlim,
 				 "most %d)", w->nfree, GLOBAL_MAX_BLOCKS);
 			continue;
 		}
+		int has = !sf ? 0 : ms[i] == SOLVE_STANDARD ? sf->has_standard :
+			  ms[i] == SOLVE_GILBERT ? sf->has_gilbert : 0;
+		if (has) {
+			s->ran = s->found = 1;
+			s->lambda = ms[i] == SOLVE_STANDARD ? sf->standard :
+				    sf->gilbert;
+			snprintf(s->note, sizeof s->note, "from %.120s",
+				 sf->path);
+			fprintf(stderr, "report: %s: %.6g, from %s (not "
+				"recomputed)\n", s->method, s->lambda, sf->path);
+			continue;
+		}
 		struct solve_opts o;
 		struct solve_result r;
 		char err[SW_ERRLEN];
 		solve_opts_default(&o, ms[i]);
 		o.time_limit = tlim;
 		s->ran = 1;
-		if (solve_run(w, &o, &r, err) != SW_OK) {
+		fprintf(stderr, "report: %s: computing the single solution "
+			"(%d blocks)%s...\n", s->method, w->nfree,
+			ms[i] == SOLVE_GLOBAL ? ", within --time-limit" : "");
+		struct timespec t0, t1;
+		clock_gettime(CLOCK_MONOTONIC, &t0);
+		enum sw_status sst = solve_run(w, &o, &r, err);
+		clock_gettime(CLOCK_MONOTONIC, &t1);
+		fprintf(stderr, "report: %s: %s (%.1f s)\n", s->method,
+			sst != SW_OK ? "failed" : isfinite(r.lambda) ? "done" :
+			"no load", (double)(t1.tv_sec - t0.tv_sec) +
+			1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+		if (sst != SW_OK) {
 			snprintf(s->note, sizeof s->note, "%.159s", err);
 		} else if (r.status == SAMPLE_ACCEPTED ||
 			   (ms[i] == SOLVE_GILBERT && isfinite(r.lambda))) {
@@ -310,6 +340,9 @@ int cmd_report(int argc, char **argv)
 		cfg.positions = xi;
 		cfg.n = rows;
 		long nrep = 0;
+		fprintf(stderr, "report: %ld loads from %s; replaying their "
+			"contact positions to recover the mechanisms (the file "
+			"holds none)...\n", nlam, a.samples);
 		if (run_pool(&cfg, &t, &replay, &nrep, err) != SW_OK) {
 			fprintf(stderr, "slipwall report: %s\n", err);
 			status = 1;
@@ -349,9 +382,30 @@ int cmd_report(int argc, char **argv)
 		goto out;
 	}
 
+	/* with a samples file, what its JSON summary holds (the workbench
+	 * saves X.json beside X.csv): standard and gilbert of the same wall
+	 * file, unless the wall is changed here */
+	struct summary_file sfile, *sf = NULL;
+	if (a.samples && summary_beside(a.samples, &sfile) == 0) {
+		struct stat s1, s2;
+		int same = sfile.wall[0] && stat(sfile.wall, &s1) == 0 &&
+			   stat(a.wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
+			   s1.st_ino == s2.st_ino;
+		if (!same)
+			fprintf(stderr, "report: %s is the summary of %s, not of "
+				"%s: its single solutions are not reused\n",
+				sfile.path, sfile.wall[0] ? sfile.wall : "?",
+				a.wall);
+		else if (a.ov.n > 0)
+			fprintf(stderr, "report: the wall is changed here "
+				"(--friction, --set, ...): %s's single solutions "
+				"are not reused\n", sfile.path);
+		else
+			sf = &sfile;
+	}
 	struct report_solution sol[3];
 	int nsol;
-	single_solutions(w, a.time_limit, sol, &nsol);
+	single_solutions(w, a.time_limit, sf, sol, &nsol);
 
 	char cmdline[2048] = "slipwall report";
 	shell_arg(cmdline, sizeof cmdline, a.wall);
