@@ -226,3 +226,26 @@ int cli_tests_synthetic(const char *path)
 	fclose(f);
 	return yes;
 }
+
+void cli_shell_arg(char *buf, size_t len, const char *s)
+{
+	size_t u = strlen(buf);
+	int plain = *s != 0;
+	for (const char *p = s; *p; p++)
+		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
+			plain = 0;
+	if (plain) {
+		snprintf(buf + u, len - u, " %s", s);
+		return;
+	}
+	snprintf(buf + u, len - u, " '");
+	for (const char *p = s; *p; p++) {
+		u = strlen(buf);
+		if (*p == '\'')
+			snprintf(buf + u, len - u, "'\\''");
+		else
+			snprintf(buf + u, len - u, "%c", *p);
+	}
+	u = strlen(buf);
+	snprintf(buf + u, len - u, "'");
+}

@@ -58,6 +58,9 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 /* Does a loads file call its loads synthetic (the word in a '#'
  * comment, any case)?  Then compare and report say so. */
 int cli_tests_synthetic(const char *path);
+/* Append " s" to buf (len bytes in all, cut short if full), single-
+ * quoted for a POSIX shell when a shell would change it. */
+void cli_shell_arg(char *buf, size_t len, const char *s);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

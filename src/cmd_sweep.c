@@ -84,22 +84,32 @@ static void usage(FILE *f)
 		"p95, and the number of distinct mechanisms.\n");
 }
 
-/* A:B:STEP into the values A, A + STEP, ... up to B (B included when
- * it is within STEP/1000 of a step). */
-static int parse_steps(const char *s, double lo_ok, double hi_ok,
-		       double **out, int *nout)
+/* "a:b:c" into its three fields (in buf, len bytes); 0 on success. */
+static int split3(const char *s, char *buf, size_t len, char **f)
 {
-	char buf[256];
-	if (strlen(s) >= sizeof buf)
+	if (strlen(s) >= len)
 		return -1;
 	strcpy(buf, s);
 	char *c1 = strchr(buf, ':'), *c2 = c1 ? strchr(c1 + 1, ':') : NULL;
 	if (!c1 || !c2 || strchr(c2 + 1, ':'))
 		return -1;
 	*c1 = *c2 = 0;
+	f[0] = buf;
+	f[1] = c1 + 1;
+	f[2] = c2 + 1;
+	return 0;
+}
+
+/* A:B:STEP into the values A, A + STEP, ... up to B (B included when
+ * it is within STEP/1000 of a step). */
+static int parse_steps(const char *s, double lo_ok, double hi_ok,
+		       double **out, int *nout)
+{
+	char buf[256], *f[3];
 	double a, b, step;
-	if (cli_parse_double(buf, &a) || cli_parse_double(c1 + 1, &b) ||
-	    cli_parse_double(c2 + 1, &step) || !(step > 0) || b < a ||
+	if (split3(s, buf, sizeof buf, f) || cli_parse_double(f[0], &a) ||
+	    cli_parse_double(f[1], &b) ||
+	    cli_parse_double(f[2], &step) || !(step > 0) || b < a ||
 	    a < lo_ok || b > hi_ok)
 		return -1;
 	double count = floor((b - a) / step + 1e-3) + 1;
@@ -122,17 +132,11 @@ static int parse_steps(const char *s, double lo_ok, double hi_ok,
 /* X1,Y1:X2,Y2:N */
 static int parse_line(const char *s, struct sweep_args *a)
 {
-	char buf[256];
+	char buf[256], *parts[3];
 	double p[4];
 	long n;
-	if (strlen(s) >= sizeof buf)
+	if (split3(s, buf, sizeof buf, parts))
 		return -1;
-	strcpy(buf, s);
-	char *c1 = strchr(buf, ':'), *c2 = c1 ? strchr(c1 + 1, ':') : NULL;
-	if (!c1 || !c2 || strchr(c2 + 1, ':'))
-		return -1;
-	*c1 = *c2 = 0;
-	char *parts[2] = {buf, c1 + 1};
 	for (int k = 0; k < 2; k++) {
 		char *comma = strchr(parts[k], ',');
 		if (!comma)
@@ -142,7 +146,7 @@ static int parse_line(const char *s, struct sweep_args *a)
 		    cli_parse_double(comma + 1, &p[2 * k + 1]))
 			return -1;
 	}
-	if (cli_parse_long(c2 + 1, 2, MAX_VALUES, &n))
+	if (cli_parse_long(parts[2], 2, MAX_VALUES, &n))
 		return -1;
 	a->nval = (int)n;
 	a->val = sw_xmalloc(sizeof(double) * (size_t)n);

@@ -238,35 +238,11 @@ void override_describe(const struct overrides *ov, char *buf, size_t len)
 	}
 }
 
-/* Append " s" to buf, single-quoted when a shell would change it. */
-static void shell_word(char *buf, size_t len, const char *s)
-{
-	size_t u = strlen(buf);
-	int plain = *s != 0;
-	for (const char *p = s; *p; p++)
-		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
-			plain = 0;
-	if (plain) {
-		snprintf(buf + u, len - u, " %s", s);
-		return;
-	}
-	snprintf(buf + u, len - u, " '");
-	for (const char *p = s; *p; p++) {
-		u = strlen(buf);
-		if (*p == '\'')
-			snprintf(buf + u, len - u, "'\\''");
-		else
-			snprintf(buf + u, len - u, "%c", *p);
-	}
-	u = strlen(buf);
-	snprintf(buf + u, len - u, "'");
-}
-
 void override_args(const struct overrides *ov, char *buf, size_t len)
 {
 	for (int k = 0; k < ov->n; k++) {
-		shell_word(buf, len, ov->o[k].option);
-		shell_word(buf, len, ov->o[k].arg);
+		cli_shell_arg(buf, len, ov->o[k].option);
+		cli_shell_arg(buf, len, ov->o[k].arg);
 	}
 }
 
