@@ -39,7 +39,7 @@ if [ -n "$missing" ]; then
 	echo "setup: installing$missing"
 	export DEBIAN_FRONTEND=noninteractive
 	apt-get update -q
-	apt-get install -y --no-install-recommends $missing
+	apt-get install -y $missing
 else
 	echo "setup: packages already installed"
 fi
