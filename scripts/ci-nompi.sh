@@ -6,7 +6,7 @@
 # (docs/cluster.md).  Ends with "tests: N passed, M failed".
 set -e
 cd "$(dirname "$0")/.."
-sh scripts/setup.sh --packages
+sh scripts/setup.sh --tests --packages
 dir=build-nompi
 [ -f "$dir/build.ninja" ] || meson setup "$dir" -Dmpi=disabled >/dev/null
 meson compile -C "$dir" >/dev/null

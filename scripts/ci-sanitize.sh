@@ -15,7 +15,7 @@
 # suite's meson summary and ends with "tests: N passed, M failed".
 set -e
 cd "$(dirname "$0")/.."
-sh scripts/setup.sh >/dev/null	# the packages (and the plain build)
+sh scripts/setup.sh --tests >/dev/null	# the packages (and the plain build)
 jobs=${*:-asan tsan}
 supp=$(pwd)/scripts/sanitizers
 passed=0

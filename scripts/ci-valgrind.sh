@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 # SLIPWALL_BIN: another build's binary (default: build/, set up here)
 bin=${SLIPWALL_BIN:-}
 if [ -z "$bin" ]; then
-	sh scripts/setup.sh >/dev/null
+	sh scripts/setup.sh --tests >/dev/null
 	bin=./build/slipwall
 fi
 tmp=$(mktemp -d)

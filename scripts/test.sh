@@ -1,9 +1,10 @@
 #!/bin/sh
-# test.sh - set up (scripts/setup.sh), run the whole test suite, and end
+# test.sh - set up (scripts/setup.sh --tests: the packages the tests
+# need too), run the whole test suite, and end
 # with the line "tests: N passed, M failed".
 set -e
 cd "$(dirname "$0")/.."
-sh scripts/setup.sh
+sh scripts/setup.sh --tests
 set +e
 meson test -C build --print-errorlogs --num-processes 2 > build/test-output.txt 2>&1
 rc=$?

@@ -230,3 +230,45 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 	*nout = n;
 	return SW_OK;
 }
+
+int cli_tests_synthetic(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return 0;
+	char line[512];
+	int yes = 0;
+	while (!yes && fgets(line, sizeof line, f)) {
+		char *hash = strchr(line, '#');
+		if (!hash)
+			continue;
+		for (char *p = hash; *p; p++)
+			*p = (char)tolower((unsigned char)*p);
+		yes = strstr(hash, "synthetic") != NULL;
+	}
+	fclose(f);
+	return yes;
+}
+
+void cli_shell_arg(char *buf, size_t len, const char *s)
+{
+	size_t u = strlen(buf);
+	int plain = *s != 0;
+	for (const char *p = s; *p; p++)
+		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
+			plain = 0;
+	if (plain) {
+		snprintf(buf + u, len - u, " %s", s);
+		return;
+	}
+	snprintf(buf + u, len - u, " '");
+	for (const char *p = s; *p; p++) {
+		u = strlen(buf);
+		if (*p == '\'')
+			snprintf(buf + u, len - u, "'\\''");
+		else
+			snprintf(buf + u, len - u, "%c", *p);
+	}
+	u = strlen(buf);
+	snprintf(buf + u, len - u, "'");
+}

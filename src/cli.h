@@ -18,6 +18,7 @@ int cmd_solve(int argc, char **argv);
 int cmd_run(int argc, char **argv);
 int cmd_compare(int argc, char **argv);
 int cmd_report(int argc, char **argv);
+int cmd_sweep(int argc, char **argv);
 
 /* The workbench (src/tui/); path NULL = the bundled demo wall. */
 int tui_main(const char *path);
@@ -62,6 +63,12 @@ int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
  * "FILE:LINE:COLUMN: what is wrong" in err. */
 enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err);
+/* Does a loads file call its loads synthetic (the word in a '#'
+ * comment, any case)?  Then compare and report say so. */
+int cli_tests_synthetic(const char *path);
+/* Append " s" to buf (len bytes in all, cut short if full), single-
+ * quoted for a POSIX shell when a shell would change it. */
+void cli_shell_arg(char *buf, size_t len, const char *s);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
 

@@ -24,6 +24,8 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "collapse.h"
+#include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
@@ -44,6 +46,7 @@ struct compare_args {
 	double depth;		/* < 0: the wall's */
 	int fit_depth;
 	int json;
+	struct overrides ov;	/* --friction, --set, ... */
 };
 
 /* One model run (a depth of the profile, or the only one). */
@@ -61,7 +64,9 @@ static void usage(FILE *f)
 	fprintf(f,
 		"usage: slipwall compare WALL.yaml [--tests FILE] [--samples FILE.csv]\n"
 		"                        [-n N] [--seed S] [--threads T] [--depth D]\n"
-		"                        [--fit-depth] [--json]\n"
+		"                        [--fit-depth] [--json] [--friction MU|BED,HEAD]\n"
+		"                        [--load-at X,Y] [--load-direction DX,DY]\n"
+		"                        [--set KEY=VALUE]...\n"
 		"\n"
 		"The model's collapse loads against experimental ones: two-sample\n"
 		"Kolmogorov-Smirnov test (exact p-values) and the characteristic\n"
@@ -72,6 +77,8 @@ static void usage(FILE *f)
 		"  --samples FILE.csv  the model's loads from a samples file of 'run'\n"
 		"                      (default: run the Monte Carlo analysis now)\n"
 		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                      change the wall as for 'run'\n"
 		"  --fit-depth         find the depth d in [0, 0.5] whose loads match\n"
 		"                      the tests best (least KS distance)\n"
 		"  --json              print the result as JSON\n");
@@ -95,6 +102,10 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
@@ -172,6 +183,12 @@ static int better(const struct model *a, const struct model *b)
 	if (a->ks.p_two_sided != b->ks.p_two_sided)
 		return a->ks.p_two_sided > b->ks.p_two_sided;
 	return a->depth < b->depth;
+}
+
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
 }
 
 static int cmp_depth(const void *x, const void *y)
@@ -363,11 +380,13 @@ int cmd_compare(int argc, char **argv)
 {
 	struct compare_args a;
 	int rc = parse_args(argc, argv, &a);
-	if (rc)
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
 		return rc < 0 ? 0 : rc;
-	struct wall *w;
-	if ((rc = cli_load_wall(a.wall, &w)))
-		return rc;
+	}
 
 	char err[SW_ERRLEN];
 	int status = 0;
@@ -466,6 +485,7 @@ int cmd_compare(int argc, char **argv)
 		json_object_begin(&j);
 		json_key(&j, "wall");
 		json_string(&j, a.wall);
+		override_json(&a.ov, &j);
 		json_key(&j, "model");
 		json_object_begin(&j);
 		json_key(&j, "source");
@@ -489,6 +509,8 @@ int cmd_compare(int argc, char **argv)
 		json_object_begin(&j);
 		json_key(&j, "source");
 		json_string(&j, a.tests ? a.tests : "wall");
+		json_key(&j, "synthetic");
+		json_bool(&j, a.tests && cli_tests_synthetic(a.tests));
 		json_key(&j, "n");
 		json_int(&j, ntests);
 		json_summary(&j, &ts);
@@ -526,6 +548,11 @@ int cmd_compare(int argc, char **argv)
 		json_end(&j);
 	} else {
 		printf("%s  [%s]\n", w->name ? w->name : a.wall, a.wall);
+		if (a.ov.n > 0) {
+			char d[1024];
+			override_describe(&a.ov, d, sizeof d);
+			printf("overrides: %s\n", d);
+		}
 		if (a.samples)
 			printf("model: %ld accepted loads from %s\n", md->accepted,
 			       a.samples);
@@ -533,8 +560,10 @@ int cmd_compare(int argc, char **argv)
 			printf("model: %ld of %ld samples accepted (seed %lu, %s "
 			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
 			       a.fit_depth ? "best depth" : "depth", md->depth);
-		printf("tests: %ld loads from %s\nloads: %s\n\n", ntests,
+		printf("tests: %ld loads from %s%s\nloads: %s\n\n", ntests,
 		       a.tests ? a.tests : "the wall's tests: key",
+		       a.tests && cli_tests_synthetic(a.tests) ?
+		       " (SYNTHETIC: not measurements, the file says so)" : "",
 		       w->nloads && w->loads[0].kind == LOAD_BODY
 			       ? "load factor (a body load: lambda times each block's weight)"
 			       : "N (lambda times the point load's reference magnitude)");
@@ -555,6 +584,17 @@ int cmd_compare(int argc, char **argv)
 			       md->ks.p_two_sided);
 		}
 		print_table(md, &ts, ntests);
+		if (w->design_load > 0 && md->accepted > 0) {
+			double *sl = sw_xmalloc(sizeof(double) *
+						(size_t)md->accepted);
+			memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
+			qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
+			struct collapse cp;
+			collapse_at(sl, (size_t)md->accepted, w->design_load,
+				    "design_load", &cp);
+			free(sl);
+			collapse_print(stdout, "\nmodel: ", &cp);
+		}
 		print_ks(md);
 	}
 	if (md->accepted == 0) {
@@ -569,5 +609,6 @@ out:
 	free(one.lam);
 	free(tests);
 	wall_free(w);
+	override_free(&a.ov);
 	return status;
 }

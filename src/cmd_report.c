@@ -19,9 +19,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "summary.h"
+#include "collapse.h"
+#include "override.h"
 #include "slipwall/lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/report.h"
@@ -42,6 +47,7 @@ struct report_args {
 	int threads;
 	double depth;		/* < 0: the wall's */
 	double time_limit;
+	struct overrides ov;	/* --friction, --set, ... */
 };
 
 static void usage(FILE *f)
@@ -61,6 +67,9 @@ static void usage(FILE *f)
 		"  --tests FILE        experimental loads, one per line, '#' comments\n"
 		"                      (default: the wall's tests: key)\n"
 		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                       change the wall as for 'run'; the report\n"
+		"                       lists them, its command line repeats them\n"
 		"  --time-limit S      for the global method (walls of at most %d\n"
 		"                      blocks), default %g s\n", GLOBAL_MAX_BLOCKS,
 		GLOBAL_TIME);
@@ -81,6 +90,10 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
@@ -160,8 +173,12 @@ static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 	return SW_OK;
 }
 
-/* The single-solution values (this thread's GLPK). */
+/* The single-solution values (this thread's GLPK): standard and
+ * gilbert from the summary beside a samples file when it has them (sf
+ * not NULL), else computed; each step said on stderr as it starts and
+ * ends, since on a large wall one takes minutes. */
 static void single_solutions(const struct wall *w, double tlim,
+			     const struct summary_file *sf,
 			     struct report_solution *sol, int *nsol)
 {
 	static const enum solve_method ms[3] = {SOLVE_STANDARD, SOLVE_GILBERT,
@@ -178,13 +195,36 @@ static void single_solutions(const struct wall *w, double tlim,
 				 "most %d)", w->nfree, GLOBAL_MAX_BLOCKS);
 			continue;
 		}
+		int has = !sf ? 0 : ms[i] == SOLVE_STANDARD ? sf->has_standard :
+			  ms[i] == SOLVE_GILBERT ? sf->has_gilbert : 0;
+		if (has) {
+			s->ran = s->found = 1;
+			s->lambda = ms[i] == SOLVE_STANDARD ? sf->standard :
+				    sf->gilbert;
+			snprintf(s->note, sizeof s->note, "from %.120s",
+				 sf->path);
+			fprintf(stderr, "report: %s: %.6g, from %s (not "
+				"recomputed)\n", s->method, s->lambda, sf->path);
+			continue;
+		}
 		struct solve_opts o;
 		struct solve_result r;
 		char err[SW_ERRLEN];
 		solve_opts_default(&o, ms[i]);
 		o.time_limit = tlim;
 		s->ran = 1;
-		if (solve_run(w, &o, &r, err) != SW_OK) {
+		fprintf(stderr, "report: %s: computing the single solution "
+			"(%d blocks)%s...\n", s->method, w->nfree,
+			ms[i] == SOLVE_GLOBAL ? ", within --time-limit" : "");
+		struct timespec t0, t1;
+		clock_gettime(CLOCK_MONOTONIC, &t0);
+		enum sw_status sst = solve_run(w, &o, &r, err);
+		clock_gettime(CLOCK_MONOTONIC, &t1);
+		fprintf(stderr, "report: %s: %s (%.1f s)\n", s->method,
+			sst != SW_OK ? "failed" : isfinite(r.lambda) ? "done" :
+			"no load", (double)(t1.tv_sec - t0.tv_sec) +
+			1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+		if (sst != SW_OK) {
 			snprintf(s->note, sizeof s->note, "%.159s", err);
 		} else if (r.status == SAMPLE_ACCEPTED ||
 			   (ms[i] == SOLVE_GILBERT && isfinite(r.lambda))) {
@@ -211,6 +251,12 @@ static void single_solutions(const struct wall *w, double tlim,
 		solve_result_free(&r);
 	}
 	lp_thread_done();
+}
+
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
 }
 
 /* Append s to buf, single-quoted for a POSIX shell when needed. */
@@ -241,13 +287,15 @@ int cmd_report(int argc, char **argv)
 {
 	struct report_args a;
 	int rc = parse_args(argc, argv, &a);
-	if (rc)
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
 		return rc < 0 ? 0 : rc;
-	struct wall *w;
-	if ((rc = cli_load_wall(a.wall, &w)))
-		return rc;
+	}
 
-	char err[SW_ERRLEN], note[512] = "";
+	char err[SW_ERRLEN], note[2048] = "";
 	int status = 0;
 	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
 	long ntests = 0, nlam = 0;
@@ -292,6 +340,9 @@ int cmd_report(int argc, char **argv)
 		cfg.positions = xi;
 		cfg.n = rows;
 		long nrep = 0;
+		fprintf(stderr, "report: %ld loads from %s; replaying their "
+			"contact positions to recover the mechanisms (the file "
+			"holds none)...\n", nlam, a.samples);
 		if (run_pool(&cfg, &t, &replay, &nrep, err) != SW_OK) {
 			fprintf(stderr, "slipwall report: %s\n", err);
 			status = 1;
@@ -331,9 +382,30 @@ int cmd_report(int argc, char **argv)
 		goto out;
 	}
 
+	/* with a samples file, what its JSON summary holds (the workbench
+	 * saves X.json beside X.csv): standard and gilbert of the same wall
+	 * file, unless the wall is changed here */
+	struct summary_file sfile, *sf = NULL;
+	if (a.samples && summary_beside(a.samples, &sfile) == 0) {
+		struct stat s1, s2;
+		int same = sfile.wall[0] && stat(sfile.wall, &s1) == 0 &&
+			   stat(a.wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
+			   s1.st_ino == s2.st_ino;
+		if (!same)
+			fprintf(stderr, "report: %s is the summary of %s, not of "
+				"%s: its single solutions are not reused\n",
+				sfile.path, sfile.wall[0] ? sfile.wall : "?",
+				a.wall);
+		else if (a.ov.n > 0)
+			fprintf(stderr, "report: the wall is changed here "
+				"(--friction, --set, ...): %s's single solutions "
+				"are not reused\n", sfile.path);
+		else
+			sf = &sfile;
+	}
 	struct report_solution sol[3];
 	int nsol;
-	single_solutions(w, a.time_limit, sol, &nsol);
+	single_solutions(w, a.time_limit, sf, sol, &nsol);
 
 	char cmdline[2048] = "slipwall report";
 	shell_arg(cmdline, sizeof cmdline, a.wall);
@@ -350,16 +422,41 @@ int cmd_report(int argc, char **argv)
 				 a.depth);
 		}
 	}
+	override_args(&a.ov, cmdline, sizeof cmdline);
 	if (a.tests) {
 		strcat(cmdline, " --tests");
 		shell_arg(cmdline, sizeof cmdline, a.tests);
+	}
+	if (w->design_load > 0) {
+		/* the probability of collapse at the design load */
+		double *sl = sw_xmalloc(sizeof(double) * (size_t)nlam);
+		memcpy(sl, lam, sizeof(double) * (size_t)nlam);
+		qsort(sl, (size_t)nlam, sizeof(double), cmp_load);
+		struct collapse cp;
+		collapse_at(sl, (size_t)nlam, w->design_load, "design_load", &cp);
+		free(sl);
+		size_t u = strlen(note);
+		snprintf(note + u, sizeof note - u, "%sDesign load %.6g "
+			 "(analysis.design_load): P(λ_min ≤ %.6g) = %.4g (%zu of "
+			 "%zu accepted samples), 99 %% interval [%.4g, %.4g] (exact "
+			 "binomial); see the fragility figure.", u ? " " : "",
+			 cp.load, cp.load, cp.p, cp.k, cp.n, cp.lo, cp.hi);
+	}
+	if (a.ov.n > 0) {
+		/* the overrides in the summary, after the replay's note */
+		char d[1024];
+		size_t u = strlen(note);
+		override_describe(&a.ov, d, sizeof d);
+		snprintf(note + u, sizeof note - u, "%sThe wall file's values "
+			 "were changed for this report: %s.", u ? " " : "", d);
 	}
 	strcat(cmdline, " --out");
 	shell_arg(cmdline, sizeof cmdline, a.out);
 
 	char tsrc[1024];
-	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`" : "the wall's tests: key",
-		 a.tests);
+	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`%s" : "the wall's tests: key",
+		 a.tests, a.tests && cli_tests_synthetic(a.tests) ?
+		 " (**synthetic**: not measurements, the file says so)" : "");
 	struct report_input in = {
 		.w = w,
 		.lam = lam,
@@ -398,6 +495,9 @@ int cmd_report(int argc, char **argv)
 	if (!ntests)
 		printf("no experimental loads: the figures show the model "
 		       "alone\n");
+	else if (a.tests && cli_tests_synthetic(a.tests))
+		printf("the experimental loads of %s are synthetic (not "
+		       "measurements, the file says so)\n", a.tests);
 out:
 	report_cleanup();
 	tally_free(&t);
@@ -406,5 +506,6 @@ out:
 	free(xi);
 	free(tests);
 	wall_free(w);
+	override_free(&a.ov);
 	return status;
 }

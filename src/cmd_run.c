@@ -43,6 +43,8 @@
 
 #include "cli.h"
 #include "cluster.h"
+#include "collapse.h"
+#include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
@@ -66,6 +68,8 @@ struct run_args {
 	double until_ci;	/* 0: off */
 	int json;
 	int slp;		/* --slp: enum sample_slp */
+	struct overrides ov;	/* --friction, --set, ... */
+	double at;		/* --at LOAD; < 0: none */
 };
 
 enum stop_reason {
@@ -182,10 +186,12 @@ static void usage(FILE *f)
 	fprintf(f,
 		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
 		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
-		"                    [--depth D] [--until-ci W] [--slp plain]\n"
-		"                    [--json]\n"
+		"                    [--depth D] [--until-ci W] [--at LOAD] [--json]\n"
+		"                    [--friction MU|BED,HEAD] [--load-at X,Y]\n"
+		"                    [--load-direction DX,DY] [--set KEY=VALUE]...\n"
+		"                    [--slp plain]\n"
 		"\n"
-		"Monte Carlo analysis (SPEC section 2): N samples of the collapse\n"
+		"Monte Carlo analysis (docs/method.md): N samples of the collapse\n"
 		"load with random contact points, their statistics and mechanisms.\n"
 		"\n"
 		"  -n N                 samples (default: the wall's analysis.samples)\n"
@@ -195,6 +201,18 @@ static void usage(FILE *f)
 		"  --samples FILE.csv   write one row per sample, as it is computed\n"
 		"  --positions FILE.csv replay the contact positions of a samples file\n"
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
+		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
+		"                       of the bed and head joints\n"
+		"  --load-at X,Y        where the wall's live load acts\n"
+		"  --load-direction DX,DY   its direction\n"
+		"  --set KEY=VALUE      any key of the wall file (material.unit_weight=\n"
+		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
+		"                       each override changes the wall as editing its\n"
+		"                       file would, and the summary lists them\n"
+		"  --at LOAD            the probability of collapse at LOAD,\n"
+		"                       P(lambda_min <= LOAD) among the accepted samples,\n"
+		"                       with its exact 99 %% interval (a wall's\n"
+		"                       analysis.design_load is always reported)\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
 		"                       than W times p05 (at most N samples)\n"
 		"  --slp plain          the SLP's plain iteration, without the\n"
@@ -212,6 +230,7 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
 	a->slp = SAMPLE_SLP_ANDERSON;
+	a->at = -1;
 	for (int i = 1; i < argc; i++) {
 		const char *s = argv[i], *v;
 		int missing = 0, sr;
@@ -224,6 +243,10 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 						     &a->n, &a->n_set, &a->seed,
 						     &a->seed_set, &a->threads,
 						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
 			if (sr == 2)
 				return 2;
 		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
@@ -242,6 +265,10 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 			else
 				return cli_usage_error(CMD, "--slp: '%s' is not "
 						       "plain or anderson", v);
+		} else if ((v = cli_opt_value(argc, argv, &i, "--at", &missing))) {
+			if (cli_parse_double(v, &a->at) || a->at < 0)
+				return cli_usage_error(CMD, "--at: '%s' is not a "
+						       "load >= 0", v);
 		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
 			if (cli_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
 				return cli_usage_error(CMD, "--until-ci: '%s' is not "
@@ -444,6 +471,11 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf(", %d rank%s x", r->ranks, r->ranks > 1 ? "s" : "");
 	printf("%s%d thread%s)\n", r->ranks ? " " : ", ", r->cfg->threads,
 	       r->cfg->threads > 1 ? "s" : "");
+	if (r->a->ov.n > 0) {
+		char d[1024];
+		override_describe(&r->a->ov, d, sizeof d);
+		printf("overrides    %s\n", d);
+	}
 	printf("accepted     %ld (%.1f %%)\n", t->accepted,
 	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
 	printf("rejected     %ld\n", t->samples - t->accepted);
@@ -466,6 +498,16 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		else
 			printf("p05          %.6g, no interval: needs at least "
 			       "90 accepted samples\n", s.p05);
+	}
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_print(stdout, "collapse     ", &c);
+	}
+	if (w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, w->design_load, "design_load",
+			    &c);
+		collapse_print(stdout, "collapse     ", &c);
 	}
 	if (t->samples > 0)
 		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",
@@ -519,6 +561,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_null(&j);
 	else
 		json_double(&j, depth_used(r));
+	override_json(&r->a->ov, &j);
 	json_key(&j, "threads");
 	json_int(&j, r->cfg->threads);
 	if (r->ranks) {
@@ -530,6 +573,24 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, stop_name(r->stop));
 	tally_json(t, &j);
+	json_key(&j, "design_load");
+	if (r->w->design_load > 0)
+		json_double(&j, r->w->design_load);
+	else
+		json_null(&j);
+	json_key(&j, "collapse_probability");
+	json_array_begin(&j);
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_json(&j, &c);
+	}
+	if (r->w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, r->w->design_load,
+			    "design_load", &c);
+		collapse_json(&j, &c);
+	}
+	json_array_end(&j);
 	json_key(&j, "iterations_per_sample");
 	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
 	json_key(&j, "lps_per_sample");
@@ -588,6 +649,7 @@ static void setup_free(struct run_setup *s)
 	runlog_close(s->log, err);
 	free(s->replay);
 	wall_free(s->w);
+	override_free(&s->a.ov);
 	memset(s, 0, sizeof *s);
 }
 
@@ -650,7 +712,7 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	int rc = parse_args(argc, argv, a);
 	if (rc)
 		return rc;
-	if ((rc = cli_load_wall(a->wall, &s->w)))
+	if ((rc = override_load(CMD, a->wall, &a->ov, &s->w)))
 		return rc;
 	struct wall *w = s->w;
 	if (a->depth >= 0 && w->anywhere)

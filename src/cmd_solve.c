@@ -63,6 +63,9 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 	else
 		json_null(&j);
 	if (r->method == SOLVE_GILBERT) {
+		/* which of the two loads is the method's answer */
+		json_key(&j, "result");
+		json_string(&j, "load_factor");
 		json_key(&j, "iterations");
 		json_int(&j, r->iterations);
 		json_key(&j, "converged");
@@ -123,10 +126,16 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 		printf("  (live load %.6g N)", r->lambda * pref);
 	printf("\n");
 	if (r->method == SOLVE_GILBERT) {
+		printf("             the result: the load of the converged "
+		       "sequential LP\n");
 		printf("iterations:  %d (%s)\n", r->iterations,
 		       r->converged ? "converged" : "NOT converged");
 		if (r->status == SAMPLE_ACCEPTED)
-			printf("onset check: mechanism found; minimum load keeping it %.6g\n",
+			printf("onset check: mechanism found; the least load that "
+			       "keeps it is %.6g\n"
+			       "             (a check of the mechanism, not the "
+			       "result; a Monte Carlo sample\n"
+			       "             reports this load as its lambda_min)\n",
 			       r->lambda_onset);
 		else
 			printf("onset check: %s\n", sample_status_text(r->status));
@@ -170,6 +179,31 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 			       joint_text(r->mech.joint[k]));
 }
 
+/* The mixed-integer program has four binaries per interface (two of
+ * slip, two of opening).  Measured: walls of up to GLOBAL_PROVEN_BLOCKS
+ * free blocks (report.c runs global up to the same size) are proven
+ * within seconds; the 36-block demo wall and Ferris & Tin-Loi wall 1
+ * (33 blocks) find no solution in 60 s.  So say it before the wait, not
+ * after it.  (The best bound while it works needs a progress callback
+ * from solve.c, which this file cannot reach.) */
+#define GLOBAL_PROVEN_BLOCKS 12
+
+static void global_forecast(const char *path, const struct wall *w,
+			    double tlim)
+{
+	if (w->nfree <= GLOBAL_PROVEN_BLOCKS)
+		return;
+	fprintf(stderr, "slipwall solve: %s has %d free blocks and %d "
+		"interfaces (%d binary variables): most likely beyond what the "
+		"mixed-integer program can prove within %g s (it proves walls "
+		"of up to about %d blocks in seconds; the bundled 33- and "
+		"36-block walls find no solution in 60 s).  It runs until the "
+		"time limit, then prints the best load it found, not proven, "
+		"or says it found none.\n", path, w->nfree, w->nifaces,
+		4 * w->nifaces, tlim, GLOBAL_PROVEN_BLOCKS);
+	fflush(stderr);
+}
+
 static void usage(FILE *f)
 {
 	fprintf(f,
@@ -179,11 +213,15 @@ static void usage(FILE *f)
 		"One solution on the classical contact (points at the interface ends):\n"
 		"  standard  associative limit analysis (an upper value, may be unsafe)\n"
 		"  gilbert   the stabilised sequential LP started from the standard\n"
-		"            solution; reports iterations and convergence\n"
+		"            solution; its result is the converged load (the load\n"
+		"            factor); the onset check's least load keeping the\n"
+		"            mechanism is printed too, as a check\n"
 		"  global    the global minimum of the non-associative problem by a\n"
 		"            mixed-integer program (small walls); its collapse pattern\n"
 		"            is checked and its load found by exact LPs; says the\n"
-		"            program's bound and whether optimality was proven\n"
+		"            program's bound and whether optimality was proven; says\n"
+		"            first when the wall is larger than it can prove within\n"
+		"            the time limit\n"
 		"Prints the load factor (and the load in N for a point load) and the\n"
 		"mechanism.  Exit status 1 when there is no finite collapse load.\n");
 }
@@ -237,6 +275,8 @@ int cmd_solve(int argc, char **argv)
 	int rc = cli_load_wall(argv[optind], &w);
 	if (rc)
 		return rc;
+	if (method == SOLVE_GLOBAL)
+		global_forecast(argv[optind], w, tlim);
 	struct solve_opts o;
 	solve_opts_default(&o, (enum solve_method)method);
 	o.time_limit = tlim;

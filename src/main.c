@@ -2,7 +2,7 @@
  * main.c - the program's entry: the workbench, or a batch command.
  *
  *   slipwall [WALL.yaml]        the workbench (default: the demo wall)
- *   slipwall COMMAND ...        run, solve, check, compare, report
+ *   slipwall COMMAND ...        run, solve, check, compare, report, sweep
  */
 #include <errno.h>
 #include <stdio.h>
@@ -22,6 +22,7 @@ static const struct {
 	{"check", cmd_check, "validate a wall; print blocks, interfaces, loads"},
 	{"compare", cmd_compare, "samples against experimental loads (KS test)"},
 	{"report", cmd_report, "figures and a summary of a run"},
+	{"sweep", cmd_sweep, "one run per value of friction, depth or load point"},
 };
 
 static void usage(FILE *f)

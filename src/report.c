@@ -250,6 +250,8 @@ struct rctx {
 	/* the convergence curve */
 	int nconv;
 	double *cn, *cp, *clo, *chi;	/* n, p05, 99 % band (NaN: none) */
+	/* report_write_sweep: the sweep (the fields above are unused) */
+	const struct report_sweep *sweep;
 };
 
 static int cmp_double(const void *a, const void *b)
@@ -980,6 +982,110 @@ static void draw_cumulative(struct fig *f, const struct rctx *c)
 	}
 }
 
+/* ---- the fragility curve ---------------------------------------------------- */
+
+/* The empirical CDF of the model's loads is the estimated probability of
+ * collapse at each load; the Dvoretzky-Kiefer-Wolfowitz band F +- eps
+ * (clipped to [0, 1]) holds the true curve at every load at once with
+ * probability >= 99 %.  A wall's design load is marked with its exact
+ * binomial interval. */
+static void dkw_edge(cairo_t *cr, const struct axes *a, const double *x,
+		     size_t n, double eps, int upper)
+{
+	double f0 = upper ? fmin(1, eps) : 0;
+	cairo_line_to(cr, ax_x(a, a->x0), ax_y(a, f0));
+	for (size_t i = 0; i < n; i++) {
+		double before = (double)i / (double)n;
+		while (i + 1 < n && x[i + 1] == x[i])
+			i++;
+		double after = (double)(i + 1) / (double)n;
+		before = upper ? fmin(1, before + eps) : fmax(0, before - eps);
+		after = upper ? fmin(1, after + eps) : fmax(0, after - eps);
+		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, before));
+		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, after));
+	}
+	cairo_line_to(cr, ax_x(a, a->x1), ax_y(a, upper ? 1 : fmax(0, 1 - eps)));
+}
+
+static void draw_fragility(struct fig *f, const struct rctx *c)
+{
+	cairo_t *cr = f->cr;
+	double eps = stats_dkw_eps(c->n, 0.99);
+	double dl = c->w->design_load;
+	fill_white(f);
+	struct axes a = plot_box(3);
+	a.x0 = c->x0;
+	a.x1 = c->x1;
+	a.y0 = 0;
+	a.y1 = 1.04;
+	axes_clip(cr, &a);
+	/* the band: the upper edge left to right, the lower edge back */
+	cairo_new_path(cr);
+	dkw_edge(cr, &a, c->lam, c->n, eps, 1);
+	cairo_path_t *up = cairo_copy_path(cr);
+	cairo_new_path(cr);
+	dkw_edge(cr, &a, c->lam, c->n, eps, 0);
+	cairo_path_t *down = cairo_copy_path(cr);
+	cairo_new_path(cr);
+	cairo_append_path(cr, up);
+	for (int i = down->num_data - 2; i >= 0; ) {
+		/* walk the lower edge backwards: every element is a
+		 * move/line of one point (2 data each) */
+		cairo_path_data_t *d = &down->data[i];
+		cairo_line_to(cr, d[1].point.x, d[1].point.y);
+		i -= 2;
+	}
+	cairo_close_path(cr);
+	set_rgb(cr, C_ORANGE, 0.35);
+	cairo_fill(cr);
+	cairo_path_destroy(up);
+	cairo_path_destroy(down);
+	set_style(cr, LG_LINE, C_MODEL);
+	cairo_set_line_width(cr, 2);
+	ecdf(cr, &a, c->lam, c->n);
+	double p = NAN, lo = NAN, hi = NAN;
+	if (dl > 0) {
+		size_t k = stats_count_le(c->lam, c->n, dl);
+		p = (double)k / (double)c->n;
+		stats_binomial_ci(k, c->n, 0.99, &lo, &hi);
+		set_style(cr, LG_DASH, C_BLUE);
+		cairo_move_to(cr, ax_x(&a, dl), ax_y(&a, 0));
+		cairo_line_to(cr, ax_x(&a, dl), ax_y(&a, 1.04));
+		cairo_stroke(cr);
+		cairo_set_dash(cr, NULL, 0, 0);
+		cairo_set_line_width(cr, 3);
+		cairo_move_to(cr, ax_x(&a, dl), ax_y(&a, lo));
+		cairo_line_to(cr, ax_x(&a, dl), ax_y(&a, hi));
+		cairo_stroke(cr);
+	}
+	cairo_restore(cr);
+	axes_draw(f, &a, c->axis, "probability of collapse", "Fragility: "
+		  "P(collapse load <= load)", 0);
+	char lm[96], lb[96], ld[96];
+	snprintf(lm, sizeof lm, "model: empirical CDF (%zu)", c->n);
+	snprintf(lb, sizeof lb, "99 %% simultaneous band (DKW)");
+	snprintf(ld, sizeof ld, "design load, 99 %% interval");
+	struct lg_item it[3] = {{LG_LINE, C_MODEL, lm}, {LG_BAND, C_ORANGE, lb},
+				{LG_DASH, C_BLUE, ld}};
+	legend(f, &a, it, dl > 0 ? 3 : 2, LG_BOTTOM);
+	double y = PLOT_H + 6;
+	char s[256];
+	snprintf(s, sizeof s, "The share of the %zu accepted samples whose "
+		 "collapse load is at most the load.", c->n);
+	caption(f, y, s);
+	snprintf(s, sizeof s, "Band: +-%.4g (Dvoretzky-Kiefer-Wolfowitz): "
+		 "the true curve lies in it at every load, at 99 %%.", eps);
+	caption(f, y + 13, s);
+	if (dl > 0)
+		snprintf(s, sizeof s, "Design load %.5g%s: P = %.4g, 99 %% "
+			 "interval [%.4g, %.4g] (exact binomial).", dl, c->unit,
+			 p, lo, hi);
+	else
+		snprintf(s, sizeof s, "No design load (analysis.design_load) "
+			 "in the wall file.");
+	caption(f, y + 26, s);
+}
+
 /* ---- Fig. 10: the model against the single solutions ---------------------- */
 
 static const struct rgb *method_colour(const char *m)
@@ -1521,6 +1627,8 @@ static const struct figdef figures[] = {
 	 mech_height},
 	{"convergence", "Convergence of the characteristic value", 
 	 draw_convergence, h_freq},
+	{"fragility", "Fragility: the probability of collapse at a load, with "
+	 "its 99 % simultaneous band", draw_fragility, h_three},
 };
 #define NFIGURES (int)(sizeof figures / sizeof figures[0])
 
@@ -1830,6 +1938,134 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (st == SW_OK)
 		st = write_markdown(&c, dir, o, err);
 	rctx_free(&c);
+	return st;
+}
+
+/* ---- a sweep (`slipwall sweep`) ------------------------------------------ */
+
+static void draw_sweep(struct fig *f, const struct rctx *c)
+{
+	const struct report_sweep *s = c->sweep;
+	cairo_t *cr = f->cr;
+	int n = s->n;
+	double *x = sw_xmalloc(sizeof(double) * (size_t)n * 6);
+	double *p05 = x + n, *lo = x + 2 * n, *hi = x + 3 * n, *p50 = x + 4 * n,
+	       *p95 = x + 5 * n;
+	double ymax = 0;
+	for (int i = 0; i < n; i++) {
+		x[i] = s->pt[i].value;
+		p05[i] = s->pt[i].p05;
+		lo[i] = s->pt[i].p05_lo;
+		hi[i] = s->pt[i].p05_hi;
+		p50[i] = s->pt[i].p50;
+		p95[i] = s->pt[i].p95;
+	}
+	ymax = fmax(max_of(p95, n), max_of(hi, n));
+	fill_white(f);
+	struct axes a = plot_box(1);
+	a.x0 = x[0];
+	a.x1 = x[n - 1];
+	if (!(a.x1 > a.x0)) {
+		a.x0 -= 0.5;
+		a.x1 += 0.5;
+	}
+	a.y0 = 0;
+	a.y1 = ymax > 0 ? ymax * 1.08 : 1;
+	axes_draw(f, &a, s->xlabel, c->axis, "Collapse load against the "
+		  "parameter", 0);
+	axes_clip(cr, &a);
+	/* the band of p05, in runs of values that have one */
+	for (int i = 0; i < n;) {
+		if (!isfinite(lo[i]) || !isfinite(hi[i])) {
+			i++;
+			continue;
+		}
+		int j = i;
+		while (j + 1 < n && isfinite(lo[j + 1]) && isfinite(hi[j + 1]))
+			j++;
+		if (j == i) {
+			set_rgb(cr, C_ORANGE, 0.8);
+			cairo_set_line_width(cr, 4);
+			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
+			cairo_line_to(cr, ax_x(&a, x[i]), ax_y(&a, hi[i]));
+			cairo_stroke(cr);
+		} else {
+			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
+			for (int k = i + 1; k <= j; k++)
+				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, lo[k]));
+			for (int k = j; k >= i; k--)
+				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, hi[k]));
+			cairo_close_path(cr);
+			set_rgb(cr, C_ORANGE, 0.35);
+			cairo_fill(cr);
+		}
+		i = j + 1;
+	}
+	set_style(cr, LG_DASH, C_BLACK);
+	curve(cr, &a, x, p95, n);
+	set_style(cr, LG_THIN, C_BLACK);
+	curve(cr, &a, x, p50, n);
+	set_style(cr, LG_LINE, C_VERMILLION);
+	curve(cr, &a, x, p05, n);
+	cairo_set_dash(cr, NULL, 0, 0);
+	for (int i = 0; i < n; i++) {
+		if (!isfinite(p05[i]))
+			continue;
+		cairo_arc(cr, ax_x(&a, x[i]), ax_y(&a, p05[i]), 2.6, 0,
+			  2 * M_PI);
+		cairo_fill(cr);
+	}
+	cairo_restore(cr);
+	struct lg_item it[4] = {
+		{LG_LINE, C_VERMILLION, "p05 (characteristic value)"},
+		{LG_BAND, C_ORANGE, "99 % interval of p05"},
+		{LG_THIN, C_BLACK, "p50"},
+		{LG_DASH, C_BLACK, "p95"},
+	};
+	/* the legend on the side where the curves are low */
+	legend(f, &a, it, 4, p95[0] < p95[n - 1] || !isfinite(p95[0]) ?
+	       LG_LEFT : 0);
+	if (s->caption)
+		caption(f, PLOT_H + 6, s->caption);
+	free(x);
+}
+
+static double h_sweep(const struct rctx *c)
+{
+	(void)c;
+	return fig_height(1);
+}
+
+enum sw_status report_write_sweep(const struct report_sweep *s,
+				  const char *dir, const struct report_opts *o,
+				  char *err)
+{
+	static const struct figdef fig = {"sweep", "Collapse load against "
+					  "the parameter (slipwall sweep)",
+					  draw_sweep, h_sweep};
+	struct report_opts def;
+	if (!o) {
+		report_opts_default(&def);
+		o = &def;
+	}
+	if (s->n < 1)
+		return sw_fail(err, SW_EINPUT, "sweep: no values to draw");
+	enum sw_status st = make_dir(dir, err);
+	if (st != SW_OK)
+		return st;
+	struct report_input in;
+	memset(&in, 0, sizeof in);
+	in.w = s->w;
+	in.run.version = s->version;
+	struct rctx c;
+	memset(&c, 0, sizeof c);
+	c.in = &in;
+	c.w = s->w;
+	c.sweep = s;
+	report_load_unit(s->w, c.axis, sizeof c.axis, &c.unit);
+	for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK; fmt <<= 1)
+		if (o->formats & fmt)
+			st = render(&fig, &c, dir, fmt, o, err);
 	return st;
 }
 

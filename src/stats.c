@@ -564,3 +564,38 @@ void stats_sorted_free(struct stats_sorted *s)
 	s->x = NULL;
 	s->n = s->cap = 0;
 }
+
+/* ---- probability of collapse at a load ----------------------------------- */
+
+size_t stats_count_le(const double *sorted, size_t n, double v)
+{
+	size_t lo = 0, hi = n;	/* the first index with x > v */
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		if (sorted[mid] <= v)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+void stats_binomial_ci(size_t k, size_t n, double conf, double *lo,
+		       double *hi)
+{
+	if (n < 1 || k > n || !(conf > 0 && conf < 1)) {
+		*lo = *hi = NAN;
+		return;
+	}
+	double a = (1 - conf) / 2;
+	*lo = k == 0 ? 0 : gsl_cdf_beta_Pinv(a, (double)k, (double)(n - k + 1));
+	*hi = k == n ? 1 : gsl_cdf_beta_Pinv(1 - a, (double)(k + 1),
+					     (double)(n - k));
+}
+
+double stats_dkw_eps(size_t n, double conf)
+{
+	if (n < 1 || !(conf > 0 && conf < 1))
+		return NAN;
+	return sqrt(log(2 / (1 - conf)) / (2 * (double)n));
+}

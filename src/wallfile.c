@@ -67,7 +67,14 @@ struct reader {
 	struct wall *w;
 	char *err;
 	long visits;
+	const struct wallfile_edit *edits;	/* wallfile_load_edited */
+	int nedits;
 };
+
+/* The nodes an edit adds carry this line (plus the edit's index) in
+ * their marks, so that a message about them names the edit, not a place
+ * in the file. */
+#define EDIT_LINE ((size_t)1 << 40)
 
 /* ---------------------------------------------------------------- errors */
 
@@ -82,8 +89,12 @@ static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof msg, fmt, ap);
 	va_end(ap);
-	sw_fail(r->err, SW_EINPUT, "%s:%zu:%zu: %s", r->name, m.line + 1,
-		m.column + 1, msg);
+	if (m.line >= EDIT_LINE && m.line - EDIT_LINE < (size_t)r->nedits)
+		sw_fail(r->err, SW_EINPUT, "%s: %s",
+			r->edits[m.line - EDIT_LINE].label, msg);
+	else
+		sw_fail(r->err, SW_EINPUT, "%s:%zu:%zu: %s", r->name,
+			m.line + 1, m.column + 1, msg);
 	return -1;
 }
 
@@ -93,6 +104,8 @@ static struct wall_mark mark_of(const yaml_node_t *n)
 {
 	struct wall_mark m = {(int)n->start_mark.line + 1,
 			      (int)n->start_mark.column + 1};
+	if (n->start_mark.line >= EDIT_LINE)	/* an edit: no place */
+		m.line = m.col = 0;
 	return m;
 }
 
@@ -749,8 +762,9 @@ static int read_contacts(struct reader *r, yaml_node_t *n)
 
 static int read_analysis(struct reader *r, yaml_node_t *n)
 {
-	static const char *const keys[] = {"samples", "seed", NULL};
-	yaml_node_t *v[2];
+	static const char *const keys[] = {"samples", "seed", "design_load",
+					   NULL};
+	yaml_node_t *v[3];
 	unsigned long long x;
 
 	if (reader_map(r, n, "analysis", keys, v))
@@ -765,6 +779,9 @@ static int read_analysis(struct reader *r, yaml_node_t *n)
 			return -1;
 		r->w->seed = (unsigned long)x;
 	}
+	if (v[2] && reader_number_in(r, v[2], "design_load", 0, 1, INFINITY,
+				     &r->w->design_load))
+		return -1;
 	return 0;
 }
 
@@ -852,6 +869,212 @@ static int read_wall(struct reader *r, yaml_node_t *root)
 	return 0;
 }
 
+/* ------------------------------------------------------------------ edits */
+
+/* wallfile_load_edited: each edit changes the document before the walk,
+ * as editing the file would.  Nodes are referred to by id, never by
+ * pointer: adding a node may move the node array. */
+
+static void edit_mark(struct reader *r, int id, int k)
+{
+	yaml_node_t *n = yaml_document_get_node(&r->doc, id);
+	n->start_mark.line = n->end_mark.line = EDIT_LINE + (size_t)k;
+	n->start_mark.column = n->end_mark.column = 0;
+}
+
+/* Copy node id of src (the edit's value) into r->doc; the new id, or 0
+ * (out of memory, or nested too deep). */
+static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
+		     int depth)
+{
+	yaml_node_t *n = yaml_document_get_node(src, id);
+	int out = 0;
+	if (!n || depth > WALLFILE_MAX_DEPTH)
+		return 0;
+	switch (n->type) {
+	case YAML_SCALAR_NODE:
+		out = yaml_document_add_scalar(&r->doc, NULL,
+					       n->data.scalar.value,
+					       (int)n->data.scalar.length,
+					       n->data.scalar.style);
+		break;
+	case YAML_SEQUENCE_NODE: {
+		int nitems = (int)(n->data.sequence.items.top -
+				   n->data.sequence.items.start);
+		out = yaml_document_add_sequence(&r->doc, NULL,
+						 YAML_FLOW_SEQUENCE_STYLE);
+		for (int i = 0; out && i < nitems; i++) {
+			n = yaml_document_get_node(src, id);
+			int c = edit_copy(r, src, n->data.sequence.items.start[i],
+					  k, depth + 1);
+			if (!c || !yaml_document_append_sequence_item(&r->doc,
+								      out, c))
+				return 0;
+		}
+		break;
+	}
+	case YAML_MAPPING_NODE: {
+		int npairs = (int)(n->data.mapping.pairs.top -
+				   n->data.mapping.pairs.start);
+		out = yaml_document_add_mapping(&r->doc, NULL,
+						YAML_FLOW_MAPPING_STYLE);
+		for (int i = 0; out && i < npairs; i++) {
+			n = yaml_document_get_node(src, id);
+			yaml_node_pair_t p = n->data.mapping.pairs.start[i];
+			int kc = edit_copy(r, src, p.key, k, depth + 1);
+			int vc = kc ? edit_copy(r, src, p.value, k, depth + 1) : 0;
+			if (!vc || !yaml_document_append_mapping_pair(&r->doc,
+								      out, kc, vc))
+				return 0;
+		}
+		break;
+	}
+	default:
+		return 0;
+	}
+	if (out)
+		edit_mark(r, out, k);
+	return out;
+}
+
+/* Apply edit k: parse its value, find or make the path, put the value
+ * there. */
+static int edit_apply(struct reader *r, int k)
+{
+	const struct wallfile_edit *e = &r->edits[k];
+	yaml_parser_t p;
+	yaml_document_t val;
+	char key[256];
+	int rc = -1;
+
+	if (strlen(e->key) >= sizeof key || !*e->key) {
+		sw_fail(r->err, SW_EINPUT, "%s: not a key of a wall file",
+			e->label);
+		return -1;
+	}
+	yaml_parser_initialize(&p);
+	yaml_parser_set_input_string(&p, (const unsigned char *)e->value,
+				     strlen(e->value));
+	if (!yaml_parser_load(&p, &val)) {
+		sw_fail(r->err, SW_EINPUT, "%s: not a YAML value: %s",
+			e->label, p.problem ? p.problem : "syntax error");
+		yaml_parser_delete(&p);
+		return -1;
+	}
+	yaml_parser_delete(&p);
+	if (!yaml_document_get_root_node(&val)) {
+		sw_fail(r->err, SW_EINPUT, "%s: no value", e->label);
+		goto out;
+	}
+
+	/* walk the path; make the mappings it lacks */
+	snprintf(key, sizeof key, "%s", e->key);
+	int cur = 1;		/* the root */
+	char *save = NULL;
+	char *comp = strtok_r(key, ".", &save);
+	while (comp) {
+		char *next = strtok_r(NULL, ".", &save);
+		yaml_node_t *n = yaml_document_get_node(&r->doc, cur);
+		int child = 0;
+		if (n->type == YAML_MAPPING_NODE) {
+			yaml_node_pair_t *pair = NULL;
+			for (yaml_node_pair_t *q = n->data.mapping.pairs.start;
+			     q < n->data.mapping.pairs.top; q++) {
+				yaml_node_t *kn = yaml_document_get_node(&r->doc,
+									 q->key);
+				if (kn && kn->type == YAML_SCALAR_NODE &&
+				    key_is(kn, comp))
+					pair = q;
+			}
+			if (!next) {
+				int v = edit_copy(r, &val, 1, k, 0);
+				if (!v)
+					goto oom;
+				n = yaml_document_get_node(&r->doc, cur);
+				if (pair) {
+					/* (the array did not move: no pair
+					 * was added to this mapping) */
+					for (yaml_node_pair_t *q =
+					     n->data.mapping.pairs.start;
+					     q < n->data.mapping.pairs.top; q++) {
+						yaml_node_t *kn =
+						    yaml_document_get_node(&r->doc,
+									   q->key);
+						if (kn->type == YAML_SCALAR_NODE &&
+						    key_is(kn, comp))
+							q->value = v;
+					}
+				} else {
+					int kc = yaml_document_add_scalar(&r->doc,
+						NULL, (yaml_char_t *)comp, -1,
+						YAML_PLAIN_SCALAR_STYLE);
+					if (!kc || !yaml_document_append_mapping_pair(
+						    &r->doc, cur, kc, v))
+						goto oom;
+					edit_mark(r, kc, k);
+				}
+				rc = 0;
+				goto out;
+			}
+			if (pair) {
+				child = pair->value;
+			} else {
+				int kc = yaml_document_add_scalar(&r->doc, NULL,
+					(yaml_char_t *)comp, -1,
+					YAML_PLAIN_SCALAR_STYLE);
+				child = yaml_document_add_mapping(&r->doc, NULL,
+					YAML_BLOCK_MAPPING_STYLE);
+				if (!kc || !child ||
+				    !yaml_document_append_mapping_pair(&r->doc,
+								       cur, kc,
+								       child))
+					goto oom;
+				edit_mark(r, kc, k);
+				edit_mark(r, child, k);
+			}
+		} else if (n->type == YAML_SEQUENCE_NODE) {
+			long len = (long)(n->data.sequence.items.top -
+					  n->data.sequence.items.start);
+			long idx;
+			char *end;
+			errno = 0;
+			idx = strtol(comp, &end, 10);
+			if (!isdigit((unsigned char)*comp) || *end || errno ||
+			    idx >= len) {
+				sw_fail(r->err, SW_EINPUT, "%s: '%s' is not an "
+					"item of a list of %ld (items count from "
+					"0)", e->label, comp, len);
+				goto out;
+			}
+			if (!next) {
+				int v = edit_copy(r, &val, 1, k, 0);
+				if (!v)
+					goto oom;
+				n = yaml_document_get_node(&r->doc, cur);
+				n->data.sequence.items.start[idx] = v;
+				rc = 0;
+				goto out;
+			}
+			child = n->data.sequence.items.start[idx];
+		} else {
+			sw_fail(r->err, SW_EINPUT, "%s: '%s' is inside a "
+				"single value, which has no keys", e->label,
+				comp);
+			goto out;
+		}
+		cur = child;
+		comp = next;
+	}
+	sw_fail(r->err, SW_EINPUT, "%s: not a key of a wall file", e->label);
+	goto out;
+oom:
+	sw_fail(r->err, SW_EINPUT, "%s: cannot apply (out of memory, or the "
+		"value is nested too deeply)", e->label);
+out:
+	yaml_document_delete(&val);
+	return rc;
+}
+
 /* ------------------------------------------------------------------ entry */
 
 /* Pass 1: nesting depth and event count, before libyaml builds a
@@ -893,8 +1116,10 @@ static int wallfile_prescan(struct reader *r, const char *buf, size_t len)
 	return rc;
 }
 
-enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
-			      struct wall **out, char *err)
+static enum sw_status parse_edited(const char *buf, size_t len,
+				   const char *name,
+				   const struct wallfile_edit *edits,
+				   int nedits, struct wall **out, char *err)
 {
 	struct reader r;
 	yaml_parser_t p;
@@ -937,6 +1162,21 @@ enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
 	if (rc)
 		goto out;
 
+	r.edits = edits;
+	r.nedits = nedits;
+	for (int k = 0; k < nedits && !rc; k++) {
+		if (root->type != YAML_MAPPING_NODE) {
+			FAIL(&r, root, "the top level must be a mapping, not %s",
+			     kind_of(root));
+			rc = -1;
+		} else {
+			rc = edit_apply(&r, k);
+		}
+		root = yaml_document_get_root_node(&r.doc);
+	}
+	if (rc)
+		goto out;
+
 	r.w = wall_new();
 	r.w->path = sw_xstrdup(r.name);
 	r.visits = 0;
@@ -955,7 +1195,20 @@ out:
 	return SW_OK;
 }
 
+enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
+			      struct wall **out, char *err)
+{
+	return parse_edited(buf, len, name, NULL, 0, out, err);
+}
+
 enum sw_status wallfile_load(const char *path, struct wall **out, char *err)
+{
+	return wallfile_load_edited(path, NULL, 0, out, err);
+}
+
+enum sw_status wallfile_load_edited(const char *path,
+				    const struct wallfile_edit *edits,
+				    int nedits, struct wall **out, char *err)
 {
 	*out = NULL;
 	FILE *f = fopen(path, "rb");
@@ -999,7 +1252,8 @@ enum sw_status wallfile_load(const char *path, struct wall **out, char *err)
 			       "%s: file is larger than %u bytes", path,
 			       WALLFILE_MAX_BYTES);
 	}
-	enum sw_status st2 = wallfile_parse(buf, len, path, out, err);
+	enum sw_status st2 = parse_edited(buf, len, path, edits, nedits, out,
+					  err);
 	free(buf);
 	return st2;
 }
@@ -1213,6 +1467,8 @@ static void save_wall(FILE *f, const struct wall *w)
 	fprintf(f, "analysis:\n");
 	fprintf(f, "  samples: %d\n", w->samples);
 	fprintf(f, "  seed: %lu\n", w->seed);
+	if (w->design_load > 0)
+		fprintf(f, "  design_load: %.17g\n", w->design_load);
 	if (w->ntests) {
 		fprintf(f, "tests:\n  loads: [");
 		for (int i = 0; i < w->ntests; i++)

@@ -25,8 +25,9 @@
 #include "tap.h"
 
 static const char *figs[] = {"frequencies", "densities", "cumulative",
-			     "single-solutions", "mechanisms", "convergence"};
-#define NFIGS 6
+			     "single-solutions", "mechanisms", "convergence",
+			     "fragility"};
+#define NFIGS 7
 
 /* ---- reading files back ---------------------------------------------------- */
 

@@ -498,8 +498,85 @@ static void test_sorted_insert(void)
 	tap_ok(s.x == NULL && s.n == 0, "sorted free resets");
 }
 
+static int cmp_dbl(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* P(B >= k), B ~ Binomial(n, p), by summing the pmf (lgamma): an
+ * independent check of the beta quantiles. */
+static double binom_upper(size_t k, size_t n, double p)
+{
+	double sum = 0;
+	for (size_t j = k; j <= n; j++)
+		sum += exp(lgamma((double)n + 1) - lgamma((double)j + 1) -
+			   lgamma((double)(n - j) + 1) + (double)j * log(p) +
+			   (double)(n - j) * log1p(-p));
+	return sum;
+}
+
+static void test_collapse_probability(void)
+{
+	double x[] = {1, 2, 2, 2, 3, 5};
+	tap_ok(stats_count_le(x, 6, 0.5) == 0 && stats_count_le(x, 6, 2) == 4 &&
+	       stats_count_le(x, 6, 2.5) == 4 && stats_count_le(x, 6, 5) == 6 &&
+	       stats_count_le(x, 6, 9) == 6, "count_le with ties and ends");
+
+	/* Clopper-Pearson: each end leaves 0.5 % in its tail */
+	static const size_t cases[][2] = {{1, 10}, {7, 40}, {50, 200},
+					  {199, 200}, {3, 1000}};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		size_t k = cases[i][0], n = cases[i][1];
+		double lo, hi;
+		stats_binomial_ci(k, n, 0.99, &lo, &hi);
+		tap_ok(lo < (double)k / (double)n && (double)k / (double)n < hi &&
+		       fabs(binom_upper(k, n, lo) - 0.005) < 1e-7 &&
+		       fabs((1 - binom_upper(k + 1, n, hi)) - 0.005) < 1e-7,
+		       "binomial 99 %% interval of %zu of %zu: [%g, %g], tails "
+		       "0.005 (by summing the pmf)", k, n, lo, hi);
+	}
+	double lo, hi;
+	stats_binomial_ci(0, 50, 0.99, &lo, &hi);
+	tap_near(hi, 1 - pow(0.005, 1.0 / 50), 1e-9,
+		 "0 of 50: [0, 1 - 0.005^(1/50)]");
+	tap_ok(lo == 0, "0 of 50: the low end is 0");
+	stats_binomial_ci(50, 50, 0.99, &lo, &hi);
+	tap_ok(hi == 1 && fabs(lo - pow(0.005, 1.0 / 50)) < 1e-9,
+	       "50 of 50: [0.005^(1/50), 1]");
+	stats_binomial_ci(3, 2, 0.99, &lo, &hi);
+	tap_ok(isnan(lo) && isnan(hi), "k > n: NaN");
+
+	/* DKW: over many uniform samples the true CDF (F(u) = u) stays in
+	 * the band in at least 99 % of them; a band 0.7 times as wide
+	 * misses often, so the band is not vacuous */
+	size_t n = 40, reps = 4000, in = 0, in_narrow = 0;
+	double eps = stats_dkw_eps(n, 0.99), u[40];
+	tap_near(eps, sqrt(log(200.0) / 80), 1e-12, "DKW eps(40, 0.99)");
+	unsigned long long st = 12345;
+	for (size_t r = 0; r < reps; r++) {
+		for (size_t i = 0; i < n; i++) {
+			st = st * 6364136223846793005ULL + 1442695040888963407ULL;
+			u[i] = (double)(st >> 11) / 9007199254740992.0;
+		}
+		qsort(u, n, sizeof u[0], cmp_dbl);
+		double d = 0;
+		for (size_t i = 0; i < n; i++)
+			d = fmax(d, fmax(fabs((double)(i + 1) / (double)n - u[i]),
+					 fabs((double)i / (double)n - u[i])));
+		in += d <= eps;
+		in_narrow += d <= 0.7 * eps;
+	}
+	tap_ok((double)in / (double)reps >= 0.99,
+	       "DKW band holds the true CDF in %zu of %zu samples (>= 99 %%)",
+	       in, reps);
+	tap_ok((double)in_narrow / (double)reps < 0.98,
+	       "a band 0.7 times as wide holds it in only %zu", in_narrow);
+}
+
 int main(void)
 {
+	test_collapse_probability();
 	test_quantiles();
 	test_ci_ranks();
 	test_summary();

@@ -103,6 +103,29 @@ void report_opts_default(struct report_opts *o);
 enum sw_status report_write(const struct report_input *in, const char *dir,
 			    const struct report_opts *o, char *err);
 
+/* A sweep (`slipwall sweep`): the load statistics at each value of one
+ * parameter.  p05_lo/p05_hi are NaN where there is no interval. */
+struct report_sweep_point {
+	double value;
+	long accepted;
+	double p05, p05_lo, p05_hi, p50, p95;
+};
+struct report_sweep {
+	const struct wall *w;	/* for the load axis */
+	const char *xlabel;	/* the parameter, with its unit */
+	const char *caption;	/* one line under the plot, or NULL */
+	const char *version;	/* the slipwall version (PDF metadata) */
+	const struct report_sweep_point *pt;	/* by increasing value */
+	int n;			/* >= 1 */
+};
+/* Draw sweep.svg, sweep.pdf and sweep.png (o->formats) into dir
+ * (created if missing): p05 with its 99 % band, p50 and p95 against
+ * the value, in the style of the report's figures.  Errors as for
+ * report_write. */
+enum sw_status report_write_sweep(const struct report_sweep *s,
+				  const char *dir, const struct report_opts *o,
+				  char *err);
+
 /* Free the process-wide caches of cairo and fontconfig (fonts, glyphs),
  * so that a leak checker sees a clean exit.  Call once, at exit, when
  * no thread is drawing; report_write() works again afterwards. */

@@ -34,6 +34,21 @@ int stats_quantile_ci_ranks(size_t n, double p, double conf, size_t *lo,
  * and 0 < p < 1. */
 double stats_quantile_ci_coverage(size_t n, double p, size_t lo, size_t hi);
 
+/* The probability of collapse at a load (`run --at`, fragility):
+ * stats_count_le is the number of sorted x[0..n-1] that are <= v;
+ * stats_binomial_ci the exact (Clopper-Pearson) interval of a binomial
+ * proportion, k of n (1 <= n, k <= n), at confidence conf in (0,1):
+ * lo = Beta^-1((1-conf)/2; k, n-k+1) (0 when k = 0), hi = Beta^-1((1+conf)/2;
+ * k+1, n-k) (1 when k = n), so P(B >= k | lo) = P(B <= k | hi) = (1-conf)/2;
+ * NaNs for bad arguments.  stats_dkw_eps: the half-width of the
+ * Dvoretzky-Kiefer-Wolfowitz band, sqrt(ln(2/(1-conf)) / (2n)) (Massart's
+ * constant): the true CDF lies within the empirical CDF +- eps at every
+ * load at once with probability >= conf. */
+size_t stats_count_le(const double *sorted, size_t n, double v);
+void stats_binomial_ci(size_t k, size_t n, double conf, double *lo,
+		       double *hi);
+double stats_dkw_eps(size_t n, double conf);
+
 struct stats_summary {
 	size_t n;
 	double min, p05, p50, p95, max;

@@ -97,6 +97,8 @@ struct wall {
 	int anywhere;		/* contacts.positions: anywhere */
 	int samples;		/* analysis.samples */
 	unsigned long seed;	/* analysis.seed, 0..WALL_SEED_MAX */
+	double design_load;	/* analysis.design_load (the load factor's
+				 * unit, N for a 1 N point load); 0: none */
 	double *tests;		/* experimental collapse loads, N; owned */
 	int ntests;
 

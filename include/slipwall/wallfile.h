@@ -19,6 +19,24 @@ enum sw_status wallfile_load(const char *path, struct wall **out, char *err);
 /* The same from memory; name is used in messages. */
 enum sw_status wallfile_parse(const char *buf, size_t len, const char *name,
 			      struct wall **out, char *err);
+/* One change to a wall file, made to its YAML document before the
+ * document is read, exactly as editing the file would make it.  key is
+ * a dotted path: material.friction, loads.0.point.at (list items count
+ * from 0); mappings missing on the way are created, the last key is
+ * added or its value replaced.  value is YAML text: a scalar, or a flow
+ * list or mapping ("[0, 0.5]", "{bed: 0.6, head: 0.5}").  label names
+ * the change in messages: an error in the value reads "LABEL: message"
+ * (the checks of wall_finish have no place to point at for it). */
+struct wallfile_edit {
+	const char *key;
+	const char *value;
+	const char *label;
+};
+/* wallfile_load with the edits applied in order (edits may be NULL when
+ * nedits is 0). */
+enum sw_status wallfile_load_edited(const char *path,
+				    const struct wallfile_edit *edits,
+				    int nedits, struct wall **out, char *err);
 /* Write w as YAML that loads again to the same model: material, every
  * free block as explicit vertices, supports, loads, contacts, analysis,
  * tests.  Written to PATH.tmp, flushed, then renamed over PATH. */

@@ -1,0 +1,37 @@
+#!/bin/bash
+# cli_solve.sh - what `slipwall solve` says about its result.
+#
+# Usage (from the source root): bash tests/cli_solve.sh SLIPWALL
+# Proves: gilbert's text names the load factor as the result (the same
+# number as the JSON's load_factor, which has "result": "load_factor")
+# and the onset check's load as a check, not the result; global says up
+# front, on stderr before anything else, when the wall is larger than it
+# proves in its time limit (the demo wall), and says nothing of the kind
+# for a small wall, which it proves.  TAP output.
+
+bin=${1:?usage: cli_solve.sh SLIPWALL}
+cd "$(dirname "$0")/.." || exit 1
+. tests/tap.sh
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$bin" solve walls/demo.yaml --method gilbert >"$tmp/g.txt" 2>&1
+"$bin" solve walls/demo.yaml --method gilbert --json >"$tmp/g.json" 2>&1
+check "gilbert: the load factor line, then 'the result: the load of the converged sequential LP'" \
+	eval 'grep -A1 "^load factor:" "$tmp/g.txt" | tail -n 1 | grep -q "the result: the load of the converged sequential LP"'
+check "gilbert: the text's result is the JSON's load_factor, and the JSON names it" python3 -c '
+import json, re, sys
+d = json.load(open(sys.argv[2]))
+m = re.search(r"^load factor: ([0-9.e+-]+)", open(sys.argv[1]).read(), re.M)
+sys.exit(not (m and d["result"] == "load_factor" and abs(float(m.group(1)) - d["load_factor"]) <= 1e-5 * d["load_factor"]))' "$tmp/g.txt" "$tmp/g.json"
+check "gilbert: the onset load is labelled a check, not the result" \
+	eval 'grep -q "^onset check: mechanism found; the least load that keeps it is" "$tmp/g.txt" && grep -q "(a check of the mechanism, not the result" "$tmp/g.txt"'
+
+"$bin" solve walls/demo.yaml --method global --time-limit 1 >"$tmp/d.out" 2>"$tmp/d.err"
+check "global on the 36-block demo wall: the first word on stderr is the forecast" \
+	eval 'head -n 1 "$tmp/d.err" | grep -q "^slipwall solve: walls/demo.yaml has 36 free blocks and [0-9]* interfaces ([0-9]* binary variables): most likely beyond what the mixed-integer program can prove within 1 s"'
+"$bin" solve walls/two-block-stack.yaml --method global >"$tmp/s.out" 2>"$tmp/s.err"
+check "global on two blocks: no forecast, and proven" \
+	eval '! grep -q "beyond" "$tmp/s.err" && grep -q "^optimality:  proven" "$tmp/s.out"'
+tap_end
