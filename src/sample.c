@@ -530,7 +530,7 @@ static enum lp_status tiebreak(struct sample_ws *ws, enum role role,
 
 /* The names of the starts, in enum sample_start's order. */
 static const char *const start_names[SAMPLE_START_COUNT] = {
-	"slack-primal", "slack-dual", "crash", "canonical", "previous",
+	"slack-primal", "slack-dual", "crash", "canonical", "previous", "auto",
 };
 
 const char *sample_start_name(enum sample_start s)
@@ -619,13 +619,33 @@ static void put_lp2_objective(struct sample_ws *ws)
 			lp_set_obj(ws->lp[LP2], 3 * k + e, TIE_LP2 * ws->r[2 * k + e]);
 }
 
+/* `auto`: walls with more interfaces than this start LP-max from the
+ * slack basis (by the primal simplex) and LP2 from the slack basis; all
+ * other roles, and every role of smaller walls, from the canonical bases.
+ * Measured pivots per sample (docs/performance.md): Ferris & Tin-Loi
+ * wall 2 (141 interfaces), LP-max 29 from the canonical basis, 407 from
+ * the slack basis by the primal simplex; LP2 20.5 and 24.5 per solve; the
+ * 1,020-block wall (2,956 interfaces), LP-max 20,744 and 13,751, the
+ * first LP2 of a sample 12,254 and 3,884 (the other roles: canonical
+ * fewer on both). */
+#define AUTO_SLACK_IFACES 1000
+
+/* The start of role p's LPs in this workspace. */
+static enum sample_start role_start(const struct sample_ws *ws, int p)
+{
+	if (ws->start != SAMPLE_START_AUTO)
+		return ws->start;
+	if (ws->m > AUTO_SLACK_IFACES && (p == AMAX || p == LP2))
+		return SAMPLE_START_SLACK_PRIMAL;
+	return SAMPLE_START_CANONICAL;
+}
+
 /* Place the contact points and the tie-break weights, and choose every
  * problem's starting basis (SLIPWALL_LP_START).  With the tie-breaks a
  * sample is a function of its contact points alone, whatever the start
  * (tests/test_start.c checks it); the start only decides how many
- * pivots it takes.  The default, `canonical`, is the optimal basis of
- * each role at the classical contact (sample_ws_new): a function of the
- * wall alone, so that the CSV is byte-identical whatever the thread
+ * pivots it takes.  The default, `auto` (role_start), is a function of
+ * the wall alone, so that the CSV is byte-identical whatever the thread
  * count, which `previous` (the basis the thread's last sample left)
  * cannot promise to the last bit.  For the same reason every start but
  * `previous` builds fresh problems at its points: GLPK's storage keeps a
@@ -647,7 +667,7 @@ static void set_points(struct sample_ws *ws, const double *xi)
 	}
 	put_lp2_objective(ws);
 	for (int p = 0; p < ROLES; p++) {
-		switch (ws->start) {
+		switch (role_start(ws, p)) {
 		case SAMPLE_START_SLACK_PRIMAL:
 		case SAMPLE_START_SLACK_DUAL:
 			lp_reset_basis(ws->lp[p]);
@@ -727,7 +747,8 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 	 * vertex the simplex reached (the SLP's start).  The dual simplex
 	 * from the start's basis, except for `slack-primal`. */
 	struct lp *P = ws->lp[AMAX];
-	enum lp_method m = ws->start == SAMPLE_START_SLACK_PRIMAL ? LP_PRIMAL : LP_DUAL;
+	enum sample_start st = role_start(ws, AMAX);
+	enum lp_method m = st == SAMPLE_START_SLACK_PRIMAL ? LP_PRIMAL : LP_DUAL;
 	enum lp_status s = solve(ws, AMAX, m, r);
 	/* A load factor <= 0 is re-checked by the primal simplex from the
 	 * slack basis, as solve() re-checks a "no": the dual simplex has

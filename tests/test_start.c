@@ -1,10 +1,11 @@
 /*
  * test_start.c - "One answer per sample" (SPEC section 2): a sample is a
  * function of its contact positions alone, whatever the LP solver's path.
- * Every sample is solved by five workspaces that start every LP from a
- * different basis (SLIPWALL_LP_START's values: the slack basis by the
- * primal and by the dual simplex, GLPK's crash basis, the canonical
- * bases, the previous sample's bases), and must give the same status,
+ * Every sample is solved by six workspaces that start every LP from a
+ * different basis (SLIPWALL_LP_START's values: the default `auto`, the
+ * slack basis by the primal and by the dual simplex, GLPK's crash basis,
+ * the canonical bases, the previous sample's bases), and must give the
+ * same status,
  * the same lambda_min (1e-9 relative) and the same mechanism (the joint
  * classification of every interface).  Without the tie-breaks, changing
  * only LP-max's start moved 47-88 % of the demo wall's samples.
@@ -25,7 +26,7 @@
 /* the starts, the default first: ws[s] starts from start_of[s] */
 static const enum sample_start start_of[SAMPLE_START_COUNT] = {
 	SAMPLE_START_DEFAULT, SAMPLE_START_SLACK_PRIMAL, SAMPLE_START_SLACK_DUAL,
-	SAMPLE_START_CRASH, SAMPLE_START_PREVIOUS,
+	SAMPLE_START_CRASH, SAMPLE_START_CANONICAL, SAMPLE_START_PREVIOUS,
 };
 
 struct tally {
@@ -84,7 +85,7 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	free(xi);
 }
 
-/* The five workspaces of w, the default start first. */
+/* The six workspaces of w, the default start first. */
 static void open_all(struct sample_ws **ws, const struct wall *w)
 {
 	for (int s = 0; s < SAMPLE_START_COUNT; s++)

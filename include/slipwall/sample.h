@@ -89,18 +89,21 @@ void sample_result_free(struct sample_result *r);
 /* Where every LP of a sample starts (SLIPWALL_LP_START, docs/method.md):
  * the slack basis with LP-max by the primal or the dual simplex, GLPK's
  * crash basis, the canonical bases (each role's optimal basis at the
- * classical contact, a function of the wall alone), or the basis the
- * workspace's previous sample left.  A sample's result does not depend
- * on it (the tie-breaks of SPEC section 2); its cost does. */
+ * classical contact, a function of the wall alone), the basis the
+ * workspace's previous sample left, or (`auto`, the default) the start
+ * measured fastest for each role and size of wall, a function of the
+ * wall alone.  A sample's result does not depend on it (the tie-breaks
+ * of "one answer per sample"); its cost does. */
 enum sample_start {
 	SAMPLE_START_SLACK_PRIMAL,
 	SAMPLE_START_SLACK_DUAL,
 	SAMPLE_START_CRASH,
 	SAMPLE_START_CANONICAL,
 	SAMPLE_START_PREVIOUS,
+	SAMPLE_START_AUTO,	/* by role and wall size (docs/method.md) */
 	SAMPLE_START_COUNT
 };
-#define SAMPLE_START_DEFAULT SAMPLE_START_CANONICAL
+#define SAMPLE_START_DEFAULT SAMPLE_START_AUTO
 const char *sample_start_name(enum sample_start s);
 /* The start of a name ("slack-primal", ...), or -1. */
 int sample_start_parse(const char *name);
