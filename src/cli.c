@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 
 int cli_load_wall(const char *path, struct wall **w)
@@ -135,6 +136,25 @@ int cli_ncpu(void)
 	return n > 0 ? (int)n : 1;
 }
 
+/* Bounds of a file of test loads: a line, and the whole file (the wall
+ * loader's 16 MiB; a million loads fit in a tenth of it). */
+#define TESTS_LINE_MAX 4096
+#define TESTS_FILE_MAX ((size_t)16 << 20)
+
+/* A load as people write it: decimal digits, a point, an exponent -
+ * not strtod's hexadecimal, infinity or NaN. */
+static int decimal_number(const char *p, const char *end)
+{
+	int digits = 0;
+	for (const char *q = p; q < end; q++) {
+		if (isdigit((unsigned char)*q))
+			digits = 1;
+		else if (!strchr("+-.eE", *q))
+			return 0;
+	}
+	return digits;
+}
+
 enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err)
 {
@@ -143,17 +163,19 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
 			       strerror(errno));
 	char *line = NULL;
-	size_t cap = 0;
+	size_t cap = 0, len, total = 0;
 	long lineno = 0, n = 0, xcap = 0;
 	double *x = NULL;
 	enum sw_status st = SW_OK;
-	ssize_t len;
-	while (st == SW_OK && (len = getline(&line, &cap, f)) >= 0) {
+	enum text_line got = TEXT_LINE_EOF;
+	while (st == SW_OK && (got = text_getline(f, &line, &cap,
+						  TESTS_LINE_MAX, &len)) > 0) {
 		lineno++;
-		if ((size_t)len != strlen(line)) {
-			st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in "
-				     "a text file", path, lineno,
-				     strlen(line) + 1);
+		total += len + 1;
+		if (total > TESTS_FILE_MAX) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:1: more than %zu "
+				     "MiB: too large for a file of test loads",
+				     path, lineno, TESTS_FILE_MAX >> 20);
 			break;
 		}
 		char *hash = strchr(line, '#');
@@ -169,9 +191,10 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		errno = 0;
 		double v = strtod(p, &end);
 		if (end == p || errno == ERANGE || !isfinite(v) ||
+		    !decimal_number(p, end) ||
 		    (*end && !isspace((unsigned char)*end))) {
 			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
-				     "a number", path, lineno, col);
+				     "a decimal number", path, lineno, col);
 			break;
 		}
 		if (v < 0) {
@@ -194,7 +217,14 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		}
 		x[n++] = v;
 	}
-	if (st == SW_OK && ferror(f))
+	if (st == SW_OK && got == TEXT_LINE_NUL)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text "
+			     "file", path, lineno + 1, len + 1);
+	else if (st == SW_OK && got == TEXT_LINE_LONG)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: a line longer than %d "
+			     "bytes: not a file of test loads", path, lineno + 1,
+			     TESTS_LINE_MAX);
+	else if (st == SW_OK && got == TEXT_LINE_ERROR)
 		st = sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
 			     strerror(errno));
 	free(line);

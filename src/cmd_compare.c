@@ -389,10 +389,13 @@ int cmd_compare(int argc, char **argv)
 		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
 	}
 	if (ntests == 0) {
+		/* w->tests is NULL when the file has no tests: key, an
+		 * empty array when its list of loads is empty */
 		status = cli_usage_error(CMD, "no experimental loads: %s%s%s",
 					 a.tests ? a.tests : a.wall,
 					 a.tests ? " holds no load" :
-					 " has no tests: key",
+					 w->tests ? ": its tests: loads list "
+					 "is empty" : " has no tests: key",
 					 a.tests ? "" : "; give --tests FILE");
 		goto out;
 	}
@@ -425,11 +428,15 @@ int cmd_compare(int argc, char **argv)
 	struct model *md = &one;
 	if (a.samples) {
 		long n;
-		if (runlog_read_loads(a.samples, &one.lam, &n, err) != SW_OK) {
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, &one.lam, &n, warn, err) !=
+		    SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			status = 2;
 			goto out;
 		}
+		if (warn[0])
+			fprintf(stderr, "%s\n", warn);
 		one.samples = one.accepted = n;
 		one.depth = NAN;
 		analyse(&one, tests, ntests);

@@ -277,13 +277,17 @@ int cmd_report(int argc, char **argv)
 	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	if (a.samples) {
 		long rows;
-		if (runlog_read_loads(a.samples, &lam, &nlam, err) != SW_OK ||
-		    runlog_read_positions(a.samples, w, &xi, &rows, err) !=
-		    SW_OK) {
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, &lam, &nlam, NULL, err) !=
+		    SW_OK ||
+		    runlog_read_positions(a.samples, w, &xi, &rows, warn,
+					  err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			status = 2;
 			goto out;
 		}
+		if (warn[0])
+			fprintf(stderr, "%s\n", warn);
 		if (rows < 1) {
 			fprintf(stderr, "%s: no samples\n", a.samples);
 			status = 2;

@@ -244,9 +244,6 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 	}
 	if (!a->wall)
 		return cli_usage_error(CMD, "which wall? (slipwall run WALL.yaml)");
-	if (a->samples && a->positions && !strcmp(a->samples, a->positions))
-		return cli_usage_error(CMD, "--samples would overwrite the "
-				       "--positions file '%s'", a->positions);
 	if (a->positions && (a->seed_set || a->depth >= 0))
 		return cli_usage_error(CMD, "--positions replays the contact "
 				       "positions of a file: --seed and --depth "
@@ -626,11 +623,14 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	mc_config_default(cfg, w);
 	if (a->positions) {
 		long rows;
+		char warn[SW_ERRLEN];
 		if (runlog_read_positions(a->positions, w, &s->replay, &rows,
-					  err) != SW_OK) {
+					  warn, err) != SW_OK) {
 			fprintf(stderr, "%s\n", err);
 			return 2;
 		}
+		if (warn[0])
+			fprintf(stderr, "%s\n", warn);
 		if (a->n_set && a->n > rows)
 			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
 					       "samples", a->n, a->positions, rows);
@@ -647,10 +647,14 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	cfg->threads = a->threads ? a->threads :
 		       cl ? cluster_threads(cl) : cli_ncpu();
 
-	if (a->samples && cluster_rank(cl) == 0 &&
-	    !(s->log = runlog_open(a->samples, w, err))) {
-		fprintf(stderr, "slipwall run: %s\n", err);
-		return 1;
+	if (a->samples && cluster_rank(cl) == 0) {
+		const char *keep[] = {a->wall, a->positions, NULL};
+		enum sw_status st = runlog_create(&s->log, a->samples, w, keep,
+						  err);
+		if (st != SW_OK) {
+			fprintf(stderr, "slipwall run: %s\n", err);
+			return sw_status_exit(st);
+		}
 	}
 	return 0;
 }

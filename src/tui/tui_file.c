@@ -274,7 +274,7 @@ static void tui_file_report_to(struct tui *t, const char *dir)
 		return;
 	}
 	if (!t->run.csv[0] ||
-	    runlog_read_loads(t->run.csv, &lam, &n, err) != SW_OK) {
+	    runlog_read_loads(t->run.csv, &lam, &n, NULL, err) != SW_OK) {
 		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
 		return;
 	}
