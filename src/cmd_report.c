@@ -13,9 +13,16 @@
  * (solve_run): standard and gilbert always, global only for walls of at
  * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
  * Then report_write() (report.c) draws everything.
+ *
+ * SIGINT, SIGTERM and SIGHUP stop the command at once wherever it is
+ * (the pool is stopped, report_write is cancelled between two files),
+ * and the report directory is then as it was: report_write writes into
+ * a directory beside it and puts it in place only when everything is
+ * written.  The exit status is 1, "interrupted", as for `run`.
  */
 #include <ctype.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -125,14 +132,57 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 }
 
 
+/* ---- signals ----------------------------------------------------------- */
+
+/* The signal that arrived and the pool to stop: globals because a
+ * signal handler has no other way to reach them. */
+static volatile sig_atomic_t report_signal;
+static struct mc *volatile report_pool;
+
+static void on_signal(int sig)
+{
+	report_signal = sig;
+	struct mc *m = report_pool;
+	if (m)
+		mc_stop(m);
+}
+
+static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* Catch the three (a signal ignored at start stays ignored); old gets
+ * the handlers to put back. */
+static void signals_catch(struct sigaction old[3])
+{
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART;
+	for (int k = 0; k < 3; k++) {
+		sigaction(catch_sigs[k], NULL, &old[k]);
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &sa, NULL);
+	}
+}
+
+static void signals_restore(const struct sigaction old[3])
+{
+	for (int k = 0; k < 3; k++)
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &old[k], NULL);
+}
+
 /* Run the pool to the end: the tally and, in sample order, the accepted
- * loads (when lam is not NULL). */
+ * loads (when lam is not NULL).  SW_EINTR when a signal stopped it. */
 static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 			       double **lam, long *nlam, char *err)
 {
 	struct mc *m = mc_start(cfg, err);
 	if (!m)
 		return SW_EANALYSIS;
+	report_pool = m;
+	if (report_signal)
+		mc_stop(m);
 	int tty = isatty(STDERR_FILENO);
 	struct mc_item it;
 	mc_item_init(&it, cfg->w);
@@ -155,8 +205,12 @@ static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 	}
 	if (tty)
 		fprintf(stderr, "\r\033[K");
+	report_pool = NULL;
 	mc_item_free(&it);
 	mc_free(m);
+	if (report_signal)
+		return sw_fail(err, SW_EINTR, "interrupted (%s): no report "
+			       "written", strsignal(report_signal));
 	return SW_OK;
 }
 
@@ -213,31 +267,61 @@ static void single_solutions(const struct wall *w, double tlim,
 	lp_thread_done();
 }
 
-/* Append s to buf, single-quoted for a POSIX shell when needed. */
-static void shell_arg(char *buf, size_t len, const char *s)
+/* Write " s" to f, single-quoted for a POSIX shell when needed. */
+static void shell_arg(FILE *f, const char *s)
 {
-	size_t u = strlen(buf);
 	int plain = *s != 0;
 	for (const char *p = s; *p; p++)
 		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
 			plain = 0;
 	if (plain) {
-		snprintf(buf + u, len - u, " %s", s);
+		fprintf(f, " %s", s);
 		return;
 	}
-	snprintf(buf + u, len - u, " '");
+	fputs(" '", f);
 	for (const char *p = s; *p; p++) {
-		u = strlen(buf);
 		if (*p == '\'')
-			snprintf(buf + u, len - u, "'\\''");
+			fputs("'\\''", f);
 		else
-			snprintf(buf + u, len - u, "%c", *p);
+			fputc(*p, f);
 	}
-	u = strlen(buf);
-	snprintf(buf + u, len - u, "'");
+	fputc('\'', f);
 }
 
-int cmd_report(int argc, char **argv)
+/* The command that reproduces the report, malloc'd: the paths are the
+ * user's, of any length. */
+static char *command_line(const struct report_args *a,
+			  const struct mc_config *cfg)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&buf, &len);
+	if (!f)
+		return sw_xstrdup("slipwall report");
+	fputs("slipwall report", f);
+	shell_arg(f, a->wall);
+	if (a->samples) {
+		fputs(" --samples", f);
+		shell_arg(f, a->samples);
+	} else {
+		fprintf(f, " -n %ld --seed %lu", cfg->n, cfg->seed);
+		if (a->depth >= 0)
+			fprintf(f, " --depth %g", a->depth);
+	}
+	if (a->tests) {
+		fputs(" --tests", f);
+		shell_arg(f, a->tests);
+	}
+	fputs(" --out", f);
+	shell_arg(f, a->out);
+	if (fclose(f) != 0 || !buf) {
+		free(buf);
+		return sw_xstrdup("slipwall report");
+	}
+	return buf;
+}
+
+static int report_main(int argc, char **argv)
 {
 	struct report_args a;
 	int rc = parse_args(argc, argv, &a);
@@ -250,6 +334,7 @@ int cmd_report(int argc, char **argv)
 	char err[SW_ERRLEN], note[512] = "";
 	int status = 0;
 	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
+	char *cmdline = NULL, *tsrc = NULL;
 	long ntests = 0, nlam = 0;
 	struct tally t;
 	tally_init(&t, w);
@@ -296,9 +381,10 @@ int cmd_report(int argc, char **argv)
 		cfg.positions = xi;
 		cfg.n = rows;
 		long nrep = 0;
-		if (run_pool(&cfg, &t, &replay, &nrep, err) != SW_OK) {
+		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
+		if (pst != SW_OK) {
 			fprintf(stderr, "slipwall report: %s\n", err);
-			status = 1;
+			status = sw_status_exit(pst);
 			goto out;
 		}
 		long differ = nrep != nlam;
@@ -322,9 +408,10 @@ int cmd_report(int argc, char **argv)
 		if (a.seed_set)
 			cfg.seed = a.seed;
 		cfg.depth = a.depth;
-		if (run_pool(&cfg, &t, &lam, &nlam, err) != SW_OK) {
+		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
+		if (pst != SW_OK) {
 			fprintf(stderr, "slipwall report: %s\n", err);
-			status = 1;
+			status = sw_status_exit(pst);
 			goto out;
 		}
 	}
@@ -339,31 +426,14 @@ int cmd_report(int argc, char **argv)
 	int nsol;
 	single_solutions(w, a.time_limit, sol, &nsol);
 
-	char cmdline[2048] = "slipwall report";
-	shell_arg(cmdline, sizeof cmdline, a.wall);
-	if (a.samples) {
-		strcat(cmdline, " --samples");
-		shell_arg(cmdline, sizeof cmdline, a.samples);
-	} else {
-		size_t u = strlen(cmdline);
-		snprintf(cmdline + u, sizeof cmdline - u, " -n %ld --seed %lu",
-			 cfg.n, cfg.seed);
-		if (a.depth >= 0) {
-			u = strlen(cmdline);
-			snprintf(cmdline + u, sizeof cmdline - u, " --depth %g",
-				 a.depth);
-		}
-	}
+	cmdline = command_line(&a, &cfg);
 	if (a.tests) {
-		strcat(cmdline, " --tests");
-		shell_arg(cmdline, sizeof cmdline, a.tests);
+		size_t len = strlen(a.tests) + 3;
+		tsrc = sw_xmalloc(len);
+		snprintf(tsrc, len, "`%s`", a.tests);
+	} else {
+		tsrc = sw_xstrdup("the wall's tests: key");
 	}
-	strcat(cmdline, " --out");
-	shell_arg(cmdline, sizeof cmdline, a.out);
-
-	char tsrc[1024];
-	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`" : "the wall's tests: key",
-		 a.tests);
 	struct report_input in = {
 		.w = w,
 		.lam = lam,
@@ -392,7 +462,10 @@ int cmd_report(int argc, char **argv)
 		},
 	};
 	memcpy(in.run.rejected, t.rejected, sizeof t.rejected);
-	if (report_write(&in, a.out, NULL, err) != SW_OK) {
+	struct report_opts ro;
+	report_opts_default(&ro);
+	ro.cancel = &report_signal;
+	if (report_write(&in, a.out, &ro, err) != SW_OK) {
 		fprintf(stderr, "slipwall report: %s\n", err);
 		status = 1;
 		goto out;
@@ -404,6 +477,8 @@ int cmd_report(int argc, char **argv)
 		       "alone\n");
 out:
 	report_cleanup();
+	free(cmdline);
+	free(tsrc);
 	tally_free(&t);
 	free(lam);
 	free(replay);
@@ -411,4 +486,14 @@ out:
 	free(tests);
 	wall_free(w);
 	return status;
+}
+
+int cmd_report(int argc, char **argv)
+{
+	struct sigaction old[3];
+	report_signal = 0;
+	signals_catch(old);
+	int rc = report_main(argc, argv);
+	signals_restore(old);
+	return rc;
 }

@@ -27,6 +27,7 @@
 #include <cairo.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
+#include <dirent.h>
 #include <errno.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
@@ -1524,8 +1525,10 @@ static const struct figdef figures[] = {
 };
 #define NFIGURES (int)(sizeof figures / sizeof figures[0])
 
+/* Draw figure d into dir; messages name the file in shown (the
+ * report's directory: dir is its staging directory). */
 static enum sw_status render(const struct figdef *d, const struct rctx *c,
-			     const char *dir, int format,
+			     const char *dir, const char *shown, int format,
 			     const struct report_opts *o, char *err)
 {
 	/* The figure is drawn into PATH.tmp and renamed over PATH when it
@@ -1538,6 +1541,8 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 			     ext) >= sizeof final)
 		return sw_fail(err, SW_EIO, "%s: path too long", dir);
 	snprintf(path, sizeof path, "%s.tmp", final);
+	char named[4096];
+	snprintf(named, sizeof named, "%s/%s.%s", shown, d->name, ext);
 	struct fig f = {0};
 	f.w = FIG_W;
 	f.h = d->height(c);
@@ -1562,7 +1567,7 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 					       (int)ceil(f.h * o->png_scale));
 	}
 	if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", final,
+		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", named,
 			cairo_status_to_string(cairo_surface_status(s)));
 		cairo_surface_destroy(s);
 		unlink(path);
@@ -1583,12 +1588,12 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 	cairo_surface_destroy(s);
 	enum sw_status st = SW_OK;
 	if (cs != CAIRO_STATUS_SUCCESS)
-		st = sw_fail(err, SW_EIO, "%s: %s", final,
+		st = sw_fail(err, SW_EIO, "%s: %s", named,
 			     cairo_status_to_string(cs));
 	else if (format == REPORT_SVG)
-		st = svg_add_text_layer(path, final, &f, err);
+		st = svg_add_text_layer(path, named, &f, err);
 	if (st == SW_OK && rename(path, final) != 0)
-		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
+		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", named,
 			     strerror(errno));
 	if (st != SW_OK)
 		unlink(path);
@@ -1778,6 +1783,7 @@ void report_opts_default(struct report_opts *o)
 	o->formats = REPORT_ALL;
 	o->max_mechanisms = MAX_PANELS;
 	o->png_scale = 2.5;
+	o->cancel = NULL;
 }
 
 static enum sw_status make_dir(const char *dir, char *err)
@@ -1803,6 +1809,162 @@ static enum sw_status make_dir(const char *dir, char *err)
 	return SW_OK;
 }
 
+/* The staging directory of a report: where it is and what it holds. */
+struct stage {
+	char *dir;		/* ".NAME.XXXXXX" beside the report's dir */
+	char *final;		/* the report's dir */
+	char **names;		/* files written into it */
+	int n;
+};
+
+static char *path_join(const char *dir, const char *name)
+{
+	size_t n = strlen(dir) + strlen(name) + 2;
+	char *p = sw_xmalloc(n);
+	snprintf(p, n, "%s/%s", dir, name);
+	return p;
+}
+
+static enum sw_status stage_open(struct stage *s, const char *dir, char *err)
+{
+	memset(s, 0, sizeof *s);
+	size_t len = strlen(dir);
+	while (len > 1 && dir[len - 1] == '/')
+		len--;
+	char *d = sw_xmalloc(len + 1);
+	memcpy(d, dir, len);
+	d[len] = 0;
+	char *slash = strrchr(d, '/');
+	const char *base = slash ? slash + 1 : d;
+	char *parent = slash ? (slash == d ? sw_xstrdup("/") :
+				strndup(d, (size_t)(slash - d))) :
+		       sw_xstrdup(".");
+	if (!parent)
+		abort();
+	enum sw_status st = SW_OK;
+	size_t n = strlen(parent) + strlen(base) + 16;
+	s->dir = sw_xmalloc(n);
+	snprintf(s->dir, n, "%s/.%s.XXXXXX", parent, base);
+	char *tmpl = sw_xstrdup(s->dir);
+	if (!mkdtemp(s->dir)) {
+		/* a missing parent is created, as the directory itself was */
+		int e = errno;
+		if (e == ENOENT && (st = make_dir(parent, err)) == SW_OK) {
+			memcpy(s->dir, tmpl, n);
+			if (!mkdtemp(s->dir))
+				e = errno;
+			else
+				e = 0;
+		}
+		if (st == SW_OK && e)
+			st = sw_fail(err, SW_EIO, "%s: cannot create: %s", d,
+				     strerror(e));
+		if (st != SW_OK) {
+			free(s->dir);
+			s->dir = NULL;
+		}
+	}
+	free(tmpl);
+	free(parent);
+	if (st != SW_OK) {
+		free(d);
+		return st;
+	}
+	s->final = d;
+	return SW_OK;
+}
+
+/* Remove the staging directory and everything in it (the temporary
+ * files of a figure cut short included). */
+static void stage_remove(struct stage *s)
+{
+	DIR *d = opendir(s->dir);
+	if (d) {
+		struct dirent *e;
+		while ((e = readdir(d))) {
+			if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+				continue;
+			char *p = path_join(s->dir, e->d_name);
+			unlink(p);
+			free(p);
+		}
+		closedir(d);
+	}
+	rmdir(s->dir);
+}
+
+static void stage_free(struct stage *s)
+{
+	for (int i = 0; i < s->n; i++)
+		free(s->names[i]);
+	free(s->names);
+	free(s->dir);
+	free(s->final);
+}
+
+static void stage_add(struct stage *s, const char *name)
+{
+	s->names = sw_xrealloc(s->names, sizeof *s->names * (size_t)(s->n + 1));
+	s->names[s->n++] = sw_xstrdup(name);
+}
+
+static int stage_has(const struct stage *s, const char *name)
+{
+	for (int i = 0; i < s->n; i++)
+		if (!strcmp(s->names[i], name))
+			return 1;
+	return 0;
+}
+
+/* Make the staged report the report: one rename when the directory is
+ * new; else the figures of an older report that this one lacks are
+ * removed, the figures renamed in, and report.md last. */
+static enum sw_status stage_publish(struct stage *s, char *err)
+{
+	if (rename(s->dir, s->final) == 0)
+		return SW_OK;
+	if (errno != EEXIST && errno != ENOTEMPTY)
+		return sw_fail(err, SW_EIO, "%s: cannot create: %s", s->final,
+			       strerror(errno));
+	struct stat st;
+	if (stat(s->final, &st) != 0 || !S_ISDIR(st.st_mode))
+		return sw_fail(err, SW_EIO, "%s: not a directory", s->final);
+	static const char *const ext[] = {"svg", "pdf", "png"};
+	for (int i = 0; i < NFIGURES; i++)
+		for (int k = 0; k < 3; k++) {
+			char name[128];
+			snprintf(name, sizeof name, "%s.%s", figures[i].name,
+				 ext[k]);
+			if (stage_has(s, name))
+				continue;
+			char *p = path_join(s->final, name);
+			unlink(p);
+			free(p);
+		}
+	for (int pass = 0; pass < 2; pass++)
+		for (int i = 0; i < s->n; i++) {
+			if ((pass == 0) == !strcmp(s->names[i], "report.md"))
+				continue;
+			char *from = path_join(s->dir, s->names[i]);
+			char *to = path_join(s->final, s->names[i]);
+			int rc = rename(from, to);
+			int e = errno;
+			free(from);
+			free(to);
+			if (rc != 0)
+				return sw_fail(err, SW_EIO, "%s/%s: cannot "
+					       "write: %s", s->final,
+					       s->names[i], strerror(e));
+		}
+	rmdir(s->dir);
+	return SW_OK;
+}
+
+static int cancelled(const struct report_opts *o)
+{
+	return o->cancel && *o->cancel;
+}
+
 enum sw_status report_write(const struct report_input *in, const char *dir,
 			    const struct report_opts *o, char *err)
 {
@@ -1814,21 +1976,51 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (!(o->png_scale > 0) || o->png_scale > 20)
 		return sw_fail(err, SW_EINPUT, "report: PNG scale %g out of range",
 			       o->png_scale);
-	enum sw_status st = make_dir(dir, err);
-	if (st != SW_OK)
-		return st;
 	struct rctx c;
-	st = rctx_init(&c, in, o, err);
+	enum sw_status st = rctx_init(&c, in, o, err);
+	if (st != SW_OK) {
+		rctx_free(&c);
+		return st;
+	}
+	struct stage s;
+	st = stage_open(&s, dir, err);
+	if (st != SW_OK) {
+		rctx_free(&c);
+		return st;
+	}
+	static const char *const ext[] = {"svg", "pdf", "png"};
 	for (int i = 0; i < NFIGURES && st == SW_OK; i++) {
 		if (!figure_wanted(&c, i))
 			continue;
-		for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK;
-		     fmt <<= 1)
-			if (o->formats & fmt)
-				st = render(&figures[i], &c, dir, fmt, o, err);
+		for (int fmt = REPORT_SVG, k = 0; fmt <= REPORT_PNG &&
+		     st == SW_OK; fmt <<= 1, k++) {
+			if (!(o->formats & fmt))
+				continue;
+			if (cancelled(o)) {
+				st = sw_fail(err, SW_EINTR, "%s: interrupted: "
+					     "nothing written", dir);
+				break;
+			}
+			st = render(&figures[i], &c, s.dir, s.final, fmt, o,
+				    err);
+			if (st == SW_OK) {
+				char name[128];
+				snprintf(name, sizeof name, "%s.%s",
+					 figures[i].name, ext[k]);
+				stage_add(&s, name);
+			}
+		}
 	}
+	if (st == SW_OK && cancelled(o))
+		st = sw_fail(err, SW_EINTR, "%s: interrupted: nothing written",
+			     dir);
+	if (st == SW_OK && (st = write_markdown(&c, s.dir, o, err)) == SW_OK)
+		stage_add(&s, "report.md");
 	if (st == SW_OK)
-		st = write_markdown(&c, dir, o, err);
+		st = stage_publish(&s, err);
+	if (st != SW_OK)
+		stage_remove(&s);
+	stage_free(&s);
 	rctx_free(&c);
 	return st;
 }
