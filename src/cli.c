@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -134,6 +135,54 @@ int cli_ncpu(void)
 {
 	long n = sysconf(_SC_NPROCESSORS_ONLN);
 	return n > 0 ? (int)n : 1;
+}
+
+double cli_worker_bytes(const struct wall *w)
+{
+	return 1048576.0 + 16384.0 * (double)w->nifaces +
+	       4096.0 * (double)w->nblocks;
+}
+
+/* Bytes the process may use: the machine's memory, or RLIMIT_AS. */
+static double memory_bytes(void)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+	double m = pages > 0 && size > 0 ? (double)pages * (double)size :
+		   INFINITY;
+	struct rlimit rl;
+	if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+	    (double)rl.rlim_cur < m)
+		m = (double)rl.rlim_cur;
+	return m;
+}
+
+int cli_threads(const char *cmd, const struct wall *w, int requested,
+		int def, long n, int *threads)
+{
+	int t = requested > 0 ? requested : def;
+	if (t < 1)
+		t = 1;
+	if (n > 0 && t > n)
+		t = (int)n;
+	double per = cli_worker_bytes(w), mem = memory_bytes();
+	/* half the memory for the workers: the rest is the wall, the
+	 * samples in flight, the tally and everything else */
+	double fit = floor(0.5 * mem / per);
+	if ((double)t > fit) {
+		int k = fit >= 1 ? (int)fit : 1;
+		if (requested > 0 && requested > k)
+			return cli_usage_error(cmd, "--threads %d: each worker "
+					       "needs about %.0f MB for this wall "
+					       "(%d interfaces), %.1f GB in all: "
+					       "use at most %d (half of the %.1f "
+					       "GB of memory)", requested,
+					       per / 1048576.0, w->nifaces,
+					       (double)t * per / 1e9, k,
+					       mem / 1e9);
+		t = k;
+	}
+	*threads = t;
+	return 0;
 }
 
 /* Bounds of a file of test loads: a line, and the whole file (the wall

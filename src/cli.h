@@ -56,5 +56,18 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
+/* Estimated memory of one worker of a pool sampling w (its sampling
+ * workspace: the GLPK problems and the operators grow with the
+ * interfaces; measured about 11 KB per interface on walls/large.yaml,
+ * estimated at 16 KB), in bytes. */
+double cli_worker_bytes(const struct wall *w);
+/* The worker threads for n samples of w into *threads: requested (0:
+ * the default, def) but never more than n, nor than the memory holds
+ * at cli_worker_bytes each (the machine's memory, or the address-space
+ * limit when lower).  A default is cut down to fit; an explicit request
+ * that does not fit is a usage error: returns 2 after printing it, with
+ * the count that fits.  Else 0. */
+int cli_threads(const char *cmd, const struct wall *w, int requested,
+		int def, long n, int *threads);
 
 #endif

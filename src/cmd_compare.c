@@ -418,10 +418,13 @@ int cmd_compare(int argc, char **argv)
 		cfg.n = a.n;
 	if (a.seed_set)
 		cfg.seed = a.seed;
-	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	cfg.depth = a.depth;
 	if (cfg.n < 1) {
 		status = cli_usage_error(CMD, "no samples to compute (-n)");
+		goto out;
+	}
+	if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+				  &cfg.threads))) {
 		goto out;
 	}
 

@@ -359,7 +359,6 @@ static int report_main(int argc, char **argv)
 
 	struct mc_config cfg;
 	mc_config_default(&cfg, w);
-	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	if (a.samples) {
 		long rows;
 		char warn[SW_ERRLEN];
@@ -380,6 +379,9 @@ static int report_main(int argc, char **argv)
 		}
 		cfg.positions = xi;
 		cfg.n = rows;
+		if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
 		long nrep = 0;
 		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
 		if (pst != SW_OK) {
@@ -408,6 +410,9 @@ static int report_main(int argc, char **argv)
 		if (a.seed_set)
 			cfg.seed = a.seed;
 		cfg.depth = a.depth;
+		if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
 		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
 		if (pst != SW_OK) {
 			fprintf(stderr, "slipwall report: %s\n", err);

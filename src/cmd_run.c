@@ -644,8 +644,9 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	if (a->seed_set)
 		cfg->seed = a->seed;
 	cfg->depth = a->depth;
-	cfg->threads = a->threads ? a->threads :
-		       cl ? cluster_threads(cl) : cli_ncpu();
+	if ((rc = cli_threads(CMD, w, a->threads, cl ? cluster_threads(cl) :
+			      cli_ncpu(), cfg->n, &cfg->threads)))
+		return rc;
 
 	if (a->samples && cluster_rank(cl) == 0) {
 		const char *keep[] = {a->wall, a->positions, NULL};
