@@ -19,7 +19,7 @@ int cli_load_wall(const char *path, struct wall **w)
 	char err[SW_ERRLEN];
 	enum sw_status st = wallfile_load(path, w, err);
 	if (st != SW_OK) {
-		fprintf(stderr, "%s\n", err);
+		cli_errorf("%s", err);
 		return sw_status_exit(st);
 	}
 	return 0;
@@ -47,14 +47,57 @@ const char *cli_demo_wall(void)
 	return path;
 }
 
+/* The cleaned copies cli_text returned last: a ring, so that one printf
+ * can take several; the copies are freed as the ring turns (and the
+ * last ones at exit, by the system). */
+static char *text_ring[8];
+static int text_next;
+
+const char *cli_text(const char *s)
+{
+	if (!s || text_is_clean(s))
+		return s;
+	free(text_ring[text_next]);
+	char *c = text_ring[text_next] = text_clean(s);
+	text_next = (text_next + 1) % 8;
+	return c;
+}
+
+/* vprintf into a malloc'd string, cleaned for printing. */
+static char *clean_vformat(const char *fmt, va_list ap)
+{
+	va_list aq;
+	va_copy(aq, ap);
+	int n = vsnprintf(NULL, 0, fmt, aq);
+	va_end(aq);
+	if (n < 0)
+		return sw_xstrdup(fmt);
+	char *raw = sw_xmalloc((size_t)n + 1);
+	vsnprintf(raw, (size_t)n + 1, fmt, ap);
+	char *c = text_clean(raw);
+	free(raw);
+	return c;
+}
+
+void cli_errorf(const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	char *s = clean_vformat(fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "%s\n", s);
+	free(s);
+}
+
 int cli_usage_error(const char *cmd, const char *fmt, ...)
 {
 	va_list ap;
-	fprintf(stderr, "slipwall %s: ", cmd);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	char *s = clean_vformat(fmt, ap);
 	va_end(ap);
-	fprintf(stderr, "\nTry 'slipwall %s --help'.\n", cmd);
+	fprintf(stderr, "slipwall %s: %s\nTry 'slipwall %s --help'.\n", cmd, s,
+		cmd);
+	free(s);
 	return 2;
 }
 

@@ -28,6 +28,13 @@ int cli_load_wall(const char *path, struct wall **w);
 /* The bundled demo wall: from the build tree when the program runs from
  * it, else the installed copy.  Never NULL (may not exist). */
 const char *cli_demo_wall(void);
+/* s as it may be printed (text_clean): s itself when it is clean, else
+ * a cleaned copy that lives until eight more calls have been made - for
+ * printf arguments: printf("%s", cli_text(w->name)).  NULL stays NULL. */
+const char *cli_text(const char *s);
+/* Print a message and a newline to stderr, its control characters and
+ * invalid UTF-8 escaped (text_clean): messages carry paths and names. */
+void cli_errorf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* Print "slipwall CMD: message" and a hint to stderr; returns 2. */
 int cli_usage_error(const char *cmd, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));

@@ -379,7 +379,7 @@ int cmd_compare(int argc, char **argv)
 
 	if (a.tests) {
 		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
@@ -434,32 +434,32 @@ int cmd_compare(int argc, char **argv)
 		char warn[SW_ERRLEN];
 		if (runlog_read_loads(a.samples, &one.lam, &n, warn, err) !=
 		    SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
 		if (warn[0])
-			fprintf(stderr, "%s\n", warn);
+			cli_errorf("%s", warn);
 		one.samples = one.accepted = n;
 		one.depth = NAN;
 		analyse(&one, tests, ntests);
 	} else if (a.fit_depth) {
 		if (fit_depth(&cfg, tests, ntests, &prof, &nprof, &best,
 			      isatty(STDERR_FILENO), err) != SW_OK) {
-			fprintf(stderr, "slipwall compare: %s\n", err);
+			cli_errorf("slipwall compare: %s", err);
 			status = 1;
 			goto out;
 		}
 		if (best < 0) {
-			fprintf(stderr, "slipwall compare: no depth gave an "
-				"accepted sample: the analysis failed\n");
+			cli_errorf("slipwall compare: no depth gave an "
+				"accepted sample: the analysis failed");
 			status = 1;
 			goto out;
 		}
 		md = &prof[best];
 	} else {
 		if (run_model(&cfg, &one, err) != SW_OK) {
-			fprintf(stderr, "slipwall compare: %s\n", err);
+			cli_errorf("slipwall compare: %s", err);
 			status = 1;
 			goto out;
 		}
@@ -535,16 +535,17 @@ int cmd_compare(int argc, char **argv)
 		json_object_end(&j);
 		json_end(&j);
 	} else {
-		printf("%s  [%s]\n", w->name ? w->name : a.wall, a.wall);
+		printf("%s  [%s]\n", cli_text(w->name ? w->name : a.wall),
+		       cli_text(a.wall));
 		if (a.samples)
 			printf("model: %ld accepted loads from %s\n", md->accepted,
-			       a.samples);
+			       cli_text(a.samples));
 		else
 			printf("model: %ld of %ld samples accepted (seed %lu, %s "
 			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
 			       a.fit_depth ? "best depth" : "depth", md->depth);
 		printf("tests: %ld loads from %s\n\n", ntests,
-		       a.tests ? a.tests : "the wall's tests: key");
+		       a.tests ? cli_text(a.tests) : "the wall's tests: key");
 		if (a.fit_depth) {
 			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
 			       "p05", "KS D", "p two-sided");
@@ -565,8 +566,8 @@ int cmd_compare(int argc, char **argv)
 		print_ks(md);
 	}
 	if (md->accepted == 0) {
-		fprintf(stderr, "slipwall compare: no model sample was accepted: "
-			"the analysis failed\n");
+		cli_errorf("slipwall compare: no model sample was accepted: "
+			"the analysis failed");
 		status = 1;
 	}
 out:

@@ -347,7 +347,7 @@ static int report_main(int argc, char **argv)
 	}
 	if (a.tests) {
 		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
@@ -366,14 +366,14 @@ static int report_main(int argc, char **argv)
 		    SW_OK ||
 		    runlog_read_positions(a.samples, w, &xi, &rows, warn,
 					  err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
 		if (warn[0])
-			fprintf(stderr, "%s\n", warn);
+			cli_errorf("%s", warn);
 		if (rows < 1) {
-			fprintf(stderr, "%s: no samples\n", a.samples);
+			cli_errorf("%s: no samples", a.samples);
 			status = 2;
 			goto out;
 		}
@@ -385,7 +385,7 @@ static int report_main(int argc, char **argv)
 		long nrep = 0;
 		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
 		if (pst != SW_OK) {
-			fprintf(stderr, "slipwall report: %s\n", err);
+			cli_errorf("slipwall report: %s", err);
 			status = sw_status_exit(pst);
 			goto out;
 		}
@@ -415,14 +415,14 @@ static int report_main(int argc, char **argv)
 			goto out;
 		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
 		if (pst != SW_OK) {
-			fprintf(stderr, "slipwall report: %s\n", err);
+			cli_errorf("slipwall report: %s", err);
 			status = sw_status_exit(pst);
 			goto out;
 		}
 	}
 	if (nlam == 0) {
-		fprintf(stderr, "slipwall report: no accepted sample (%ld "
-			"computed): nothing to plot\n", t.samples);
+		cli_errorf("slipwall report: no accepted sample (%ld "
+			"computed): nothing to plot", t.samples);
 		status = 1;
 		goto out;
 	}
@@ -471,12 +471,13 @@ static int report_main(int argc, char **argv)
 	report_opts_default(&ro);
 	ro.cancel = &report_signal;
 	if (report_write(&in, a.out, &ro, err) != SW_OK) {
-		fprintf(stderr, "slipwall report: %s\n", err);
+		cli_errorf("slipwall report: %s", err);
 		status = 1;
 		goto out;
 	}
 	printf("%s/report.md: %ld accepted loads of %ld samples, %ld tests, "
-	       "%d mechanisms\n", a.out, nlam, t.samples, ntests, t.nmech);
+	       "%d mechanisms\n", cli_text(a.out), nlam, t.samples, ntests,
+	       t.nmech);
 	if (!ntests)
 		printf("no experimental loads: the figures show the model "
 		       "alone\n");

@@ -43,6 +43,7 @@
 
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
+#include "slipwall/text.h"
 
 #define FIG_W 480.0		/* figure width, pt */
 #define PLOT_H 300.0		/* a single plot figure's height, pt */
@@ -143,9 +144,11 @@ static void fig_text(struct fig *f, double x, double y, double size, int bold,
 	l->bold = bold;
 }
 
-static void xml_escape(FILE *o, const char *s)
+static void xml_escape(FILE *o, const char *text)
 {
-	for (; *s; s++) {
+	/* no control character: XML 1.0 forbids most of them */
+	char *clean = text_clean(text);
+	for (const char *s = clean; *s; s++) {
 		switch (*s) {
 		case '&':
 			fputs("&amp;", o);
@@ -163,6 +166,7 @@ static void xml_escape(FILE *o, const char *s)
 			fputc(*s, o);
 		}
 	}
+	free(clean);
 }
 
 /* Splice the recorded labels into the SVG file PATH before its </svg>;
@@ -1624,6 +1628,12 @@ static int figure_wanted(const struct rctx *c, int i)
 	return strcmp(figures[i].name, "mechanisms") || c->ntop > 0;
 }
 
+/* A copy of s for report.md (text_clean); NULL stays NULL. */
+static char *md_clean(const char *s)
+{
+	return s ? text_clean(s) : NULL;
+}
+
 static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 				     const struct report_opts *o, char *err)
 {
@@ -1637,13 +1647,20 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	if (st != SW_OK)
 		return st;
 	FILE *f = out.f;
+	/* names and paths as they may be printed: no control character
+	 * (a newline would end a table row, an ESC reach a terminal) */
+	char *name = md_clean(w->name), *wall_path = md_clean(r->wall_path),
+	     *command = md_clean(r->command),
+	     *samples_file = md_clean(r->samples_file),
+	     *tests_source = md_clean(r->tests_source),
+	     *note = md_clean(r->note);
 	const char *u = c->unit;
-	fprintf(f, "# slipwall report: %s\n\n", w->name ? w->name :
-		(r->wall_path ? r->wall_path : "wall"));
+	fprintf(f, "# slipwall report: %s\n\n", name ? name :
+		(wall_path ? wall_path : "wall"));
 	fprintf(f, "Written by slipwall %s from `%s`.", r->version ? r->version :
-		"(unknown version)", r->wall_path ? r->wall_path : "?");
-	if (r->command)
-		fprintf(f, " To reproduce it:\n\n    %s\n\n", r->command);
+		"(unknown version)", wall_path ? wall_path : "?");
+	if (command)
+		fprintf(f, " To reproduce it:\n\n    %s\n\n", command);
 	else
 		fprintf(f, "\n\n");
 	fprintf(f, "Loads: %s.\n\n", c->axis);
@@ -1714,10 +1731,10 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	}
 
 	fprintf(f, "\n## Run\n\n| setting | value |\n|---|---|\n");
-	fprintf(f, "| wall file | `%s` |\n", r->wall_path ? r->wall_path : "?");
+	fprintf(f, "| wall file | `%s` |\n", wall_path ? wall_path : "?");
 	fprintf(f, "| slipwall version | %s |\n", r->version ? r->version : "?");
-	if (r->samples_file)
-		fprintf(f, "| loads read from | `%s` |\n", r->samples_file);
+	if (samples_file)
+		fprintf(f, "| loads read from | `%s` |\n", samples_file);
 	if (r->seed_known)
 		fprintf(f, "| seed | %lu |\n", r->seed);
 	else
@@ -1748,9 +1765,9 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
 	if (c->m)
 		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
-			r->tests_source ? r->tests_source : "?");
-	if (r->note)
-		fprintf(f, "\n%s\n", r->note);
+			tests_source ? tests_source : "?");
+	if (note)
+		fprintf(f, "\n%s\n", note);
 
 	fprintf(f, "\n## Figures\n\n");
 	for (int i = 0; i < NFIGURES; i++) {
@@ -1773,6 +1790,12 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		if (any)
 			fprintf(f, "\n\n");
 	}
+	free(name);
+	free(wall_path);
+	free(command);
+	free(samples_file);
+	free(tests_source);
+	free(note);
 	return sw_whole_close(&out, err);
 }
 
