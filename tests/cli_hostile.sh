@@ -76,17 +76,15 @@ else
 fi
 
 # ---- one writer per samples file ---------------------------------------------
-set -m
 "$bin" run $demo -n 1000000 --threads 1 --seed 1 --samples "$tmp/shared.csv" \
 	>/dev/null 2>&1 &
 first=$!
 pids="$pids $first"
-set +m
 wait_rows "$tmp/shared.csv" 2
 "$bin" run $demo -n 50 --threads 1 --seed 2 --samples "$tmp/shared.csv" \
 	>/dev/null 2>"$tmp/e"
 rc=$?
-kill -INT $first 2>/dev/null
+kill -TERM $first 2>/dev/null
 wait $first 2>/dev/null
 # the file: the first run's rows only, 0, 1, 2, ... each complete
 seq_ok=$(awk -F, -v c="$(awk -F, 'NR == 1 { print NF; exit }' "$tmp/shared.csv")" \
@@ -101,36 +99,50 @@ fi
 # ---- SIGKILL in the middle of a row larger than a page -----------------------
 # A 1020-block wall without friction: every sample is rejected after one
 # LP (fast), and each row holds 2 x 2,956 positions: over 100 KB.  The
-# rows go through a FIFO to a reader that drains 100 KB/s, slower than
-# the rows come: the run spends its time blocked inside write(2), and the
-# SIGKILL lands in the middle of a row.
+# rows go through a FIFO to a reader that, after a few rows, stops
+# reading where a row ends and the pipe is empty: the next row fills the
+# pipe (64 KB) and the run blocks inside that row's write(2), where the
+# SIGKILL finds it.  Then the reader drains the pipe.
 sed 's/friction: 0.6/friction: 0/' walls/large.yaml >"$tmp/f0.yaml"
 mkfifo "$tmp/fifo"
-python3 - "$tmp/fifo" "$tmp/cut.csv" <<'EOF' &
-import os, sys, time
-fd = os.open(sys.argv[1], os.O_RDONLY)
-with open(sys.argv[2], "wb") as out:
+python3 - "$tmp/fifo" "$tmp/cut.csv" "$tmp/paused" "$tmp/go" <<'EOF' &
+import array, fcntl, os, sys, termios, time
+fifo, path, paused, go = sys.argv[1:]
+fd = os.open(fifo, os.O_RDONLY)
+lines, waited = 0, False
+with open(path, "wb") as out:
     while True:
-        b = os.read(fd, 4096)
+        b = os.read(fd, 65536)
         if not b:
             break
         out.write(b)
         out.flush()
-        time.sleep(0.04)
+        lines += b.count(b"\n")
+        avail = array.array("i", [0])
+        fcntl.ioctl(fd, termios.FIONREAD, avail)
+        if not waited and lines >= 3 and b.endswith(b"\n") and avail[0] == 0:
+            waited = True
+            open(paused, "w").close()
+            while not os.path.exists(go):
+                time.sleep(0.05)
 EOF
-reader=$!
-pids="$pids $reader"
+job=$!
+pids="$pids $job"
 "$bin" run "$tmp/f0.yaml" -n 1000 --threads 1 --samples "$tmp/fifo" \
 	>/dev/null 2>&1 &
 writer=$!
 pids="$pids $writer"
-bytes_over() {	# FILE N: FILE exists and has more than N bytes
-	[ -f "$1" ] && [ "$(wc -c <"$1")" -gt "$2" ]
+in_pipe_write() {	# PID: blocked writing to a pipe (as the kernel says)
+	grep -q pipe_write "/proc/$1/wchan" 2>/dev/null
 }
-within 60 bytes_over "$tmp/cut.csv" 400000
+within 120 test -e "$tmp/paused"
+# a kernel that hides wchan: a few seconds are enough for a sample
+if grep -q '^0$' "/proc/$writer/wchan" 2>/dev/null; then sleep 5; else
+	within 30 in_pipe_write $writer; fi
 kill -KILL $writer 2>/dev/null
 wait $writer 2>/dev/null
-wait $reader 2>/dev/null
+touch "$tmp/go"
+wait $job 2>/dev/null
 rowlen=$(awk 'NR == 2 { print length($0); exit }' "$tmp/cut.csv")
 last=$(tail -c 1 "$tmp/cut.csv" | od -An -c | tr -d ' ')
 whole=$(($(wc -l <"$tmp/cut.csv") - 1))
