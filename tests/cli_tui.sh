@@ -154,6 +154,20 @@ else
 	not_ok "a bad wall file shows FILE:LINE:COLUMN and the wall stays" "$(screen w)"
 fi
 
+# --- 3b. a FIFO via the open prompt: refused at once, the UI lives ---
+# (opening it for reading would block the UI thread until a writer came)
+mkfifo "$tmp/pipe.yaml"
+T send-keys -t t:w o
+wait_for w 'open wall file:' 5
+T send-keys -t t:w -l "$tmp/pipe.yaml"
+T send-keys -t t:w Enter
+if wait_for w 'pipe\.yaml: not a regular file \(a FIFO\)' 5 &&
+   screen w | grep -q 'Demo wall'; then
+	ok "o on a FIFO: 'not a regular file (a FIFO)', the workbench goes on"
+else
+	not_ok "o on a FIFO must not freeze the workbench" "$(screen w)"
+fi
+
 # --- 4. raising the friction moves the median up, by the closed form ---
 # A low slab pushed at mid-height on its end face can only slide: every
 # sample gives lambda_min = mu W, W = 19620 * 0.8 * 0.2 * 0.1 = 313.92 N:
