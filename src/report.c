@@ -1873,7 +1873,7 @@ static enum sw_status stage_open(struct stage *s, const char *dir, char *err)
 		/* a missing parent is created, as the directory itself was */
 		int e = errno;
 		if (e == ENOENT && (st = make_dir(parent, err)) == SW_OK) {
-			memcpy(s->dir, tmpl, n);
+			memcpy(s->dir, tmpl, strlen(tmpl) + 1);
 			if (!mkdtemp(s->dir))
 				e = errno;
 			else
