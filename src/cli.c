@@ -286,7 +286,7 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		    !decimal_number(p, end) ||
 		    (*end && !isspace((unsigned char)*end))) {
 			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
-				     "a decimal number", path, lineno, col);
+				     "a number, in decimal", path, lineno, col);
 			break;
 		}
 		if (v < 0) {

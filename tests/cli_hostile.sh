@@ -368,7 +368,7 @@ else
 	not_ok "an empty tests: list is told apart" "exit $rc" "$(head -c 300 "$tmp/e")"
 fi
 printf '0x1p-1\n' >"$tmp/hex.txt"
-bounded "--tests with a hexadecimal load" "hex.txt:1:1: a load must be a decimal number" \
+bounded "--tests with a hexadecimal load" "hex.txt:1:1: a load must be a number, in decimal" \
 	"$bin" compare $demo --tests "$tmp/hex.txt"
 
 tap_end
