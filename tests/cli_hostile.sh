@@ -289,15 +289,7 @@ if [ $rc -eq 0 ] && [ "$th" = 1 ] && [ $secs -le 10 ]; then
 else
 	not_ok "-n 1 --threads 1000 starts one worker" "exit $rc, threads '$th', ${secs} s"
 fi
-cat >"$tmp/big.yaml" <<'EOF'
-name: 10,050 blocks
-material: {friction: 0.6, unit_weight: 19620, thickness: 0.10}
-layout: {block: [0.20, 0.10], courses: 100, length: 20.0, bond: running, first_course: half}
-supports:
-  - ground: {y: 0}
-loads:
-  - point: {at: [20.0, 4.95], direction: [1, 0], magnitude: 1}
-EOF
+cp tests/wall-10050.yaml "$tmp/big.yaml"
 bounded "--threads 1024 on a 10,050-block wall (hundreds of GB)" "use at most" \
 	"$bin" run "$tmp/big.yaml" -n 5000 --threads 1024
 

@@ -56,6 +56,12 @@ screen_has() {
 wait_for() {
 	within "$3" screen_has "$1" "$2"
 }
+open_wall() {	# PATH: through the workbench's o prompt
+	T send-keys -t t:w o
+	wait_for w 'open wall file:' 5
+	T send-keys -t t:w -l "$1"
+	T send-keys -t t:w Enter
+}
 samples() {
 	screen "$1" | sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1
 }
@@ -143,10 +149,7 @@ else
 fi
 
 # --- 3. a bad wall file via the open prompt ---
-T send-keys -t t:w o
-wait_for w 'open wall file:' 5
-T send-keys -t t:w -l "$root/tests/bad/friction-negative.yaml"
-T send-keys -t t:w Enter
+open_wall "$root/tests/bad/friction-negative.yaml"
 if wait_for w 'friction-negative\.yaml:[0-9]+:[0-9]+: ' 5 &&
    screen w | grep -q 'Demo wall'; then
 	ok "a bad wall file shows FILE:LINE:COLUMN and the wall stays"
@@ -157,10 +160,7 @@ fi
 # --- 3b. a FIFO via the open prompt: refused at once, the UI lives ---
 # (opening it for reading would block the UI thread until a writer came)
 mkfifo "$tmp/pipe.yaml"
-T send-keys -t t:w o
-wait_for w 'open wall file:' 5
-T send-keys -t t:w -l "$tmp/pipe.yaml"
-T send-keys -t t:w Enter
+open_wall "$tmp/pipe.yaml"
 if wait_for w 'pipe\.yaml: not a regular file \(a FIFO\)' 5 &&
    screen w | grep -q 'Demo wall'; then
 	ok "o on a FIFO: 'not a regular file (a FIFO)', the workbench goes on"
@@ -185,10 +185,7 @@ loads:
 contacts: {depth: 0.25}
 analysis: {samples: 1000000, seed: 1}
 EOF
-T send-keys -t t:w o
-wait_for w 'open wall file:' 5
-T send-keys -t t:w -l "$tmp/slider.yaml"
-T send-keys -t t:w Enter
+open_wall "$tmp/slider.yaml"
 if wait_for w 'Sliding slab' 5 && wait_samples w 20 20 && wait_for w ' p50  188\.4 ' 5; then
 	ok "o opens another wall; its median is mu W = 188.4 N"
 else
