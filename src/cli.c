@@ -66,14 +66,16 @@ const char *cli_text(const char *s)
 /* vprintf into a malloc'd string, cleaned for printing. */
 static char *clean_vformat(const char *fmt, va_list ap)
 {
-	va_list aq;
-	va_copy(aq, ap);
-	int n = vsnprintf(NULL, 0, fmt, aq);
-	va_end(aq);
-	if (n < 0)
-		return sw_xstrdup(fmt);
-	char *raw = sw_xmalloc((size_t)n + 1);
-	vsnprintf(raw, (size_t)n + 1, fmt, ap);
+	char *raw = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&raw, &len);
+	if (!f)
+		return text_clean(fmt);
+	vfprintf(f, fmt, ap);
+	if (fclose(f) != 0 || !raw) {
+		free(raw);
+		return text_clean(fmt);
+	}
 	char *c = text_clean(raw);
 	free(raw);
 	return c;
