@@ -82,6 +82,18 @@ export SLIPWALL_LP_FAULT=error:40
 vg 0 "run -n 10 --threads 2 with every 40th LP a GLPK error" \
 	run walls/demo.yaml -n 10 --threads 2 --json
 unset SLIPWALL_LP_FAULT
+# issue 16: a cut last row, an output over an input, control characters,
+# a report with its signal handler and staging directory
+head -c $(($(wc -c <"$tmp/demo.csv") - 10)) "$tmp/demo.csv" >"$tmp/cut.csv"
+vg 0 "run --positions of a file with a cut last row" run walls/demo.yaml \
+	--positions "$tmp/cut.csv" --threads 1
+cp walls/two-block-stack.yaml "$tmp/w.yaml"
+vg 2 "run --samples over its own wall (refused)" run "$tmp/w.yaml" -n 2 \
+	--samples "$tmp/./w.yaml"
+sed 's/^name: .*/name: "a\\e[2Jb\\a\\nc"/' walls/two-block-stack.yaml >"$tmp/evil.yaml"
+vg 0 "check of a wall named with control characters" check "$tmp/evil.yaml"
+vg 0 "report of a wall named with control characters" report "$tmp/evil.yaml" \
+	-n 10 --threads 1 --out "$tmp/evil-report"
 echo "1..$n"
 echo "tests: $((n - failed)) passed, $failed failed"
 [ "$failed" = 0 ]

@@ -7,9 +7,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 
 int cli_load_wall(const char *path, struct wall **w)
@@ -17,7 +19,7 @@ int cli_load_wall(const char *path, struct wall **w)
 	char err[SW_ERRLEN];
 	enum sw_status st = wallfile_load(path, w, err);
 	if (st != SW_OK) {
-		fprintf(stderr, "%s\n", err);
+		cli_errorf("%s", err);
 		return sw_status_exit(st);
 	}
 	return 0;
@@ -45,14 +47,59 @@ const char *cli_demo_wall(void)
 	return path;
 }
 
+/* The cleaned copies cli_text returned last: a ring, so that one printf
+ * can take several; the copies are freed as the ring turns (and the
+ * last ones at exit, by the system). */
+static char *text_ring[8];
+static int text_next;
+
+const char *cli_text(const char *s)
+{
+	if (!s || text_is_clean(s))
+		return s;
+	free(text_ring[text_next]);
+	char *c = text_ring[text_next] = text_clean(s);
+	text_next = (text_next + 1) % 8;
+	return c;
+}
+
+/* vprintf into a malloc'd string, cleaned for printing. */
+static char *clean_vformat(const char *fmt, va_list ap)
+{
+	char *raw = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&raw, &len);
+	if (!f)
+		return text_clean(fmt);
+	vfprintf(f, fmt, ap);
+	if (fclose(f) != 0 || !raw) {
+		free(raw);
+		return text_clean(fmt);
+	}
+	char *c = text_clean(raw);
+	free(raw);
+	return c;
+}
+
+void cli_errorf(const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	char *s = clean_vformat(fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "%s\n", s);
+	free(s);
+}
+
 int cli_usage_error(const char *cmd, const char *fmt, ...)
 {
 	va_list ap;
-	fprintf(stderr, "slipwall %s: ", cmd);
 	va_start(ap, fmt);
-	vfprintf(stderr, fmt, ap);
+	char *s = clean_vformat(fmt, ap);
 	va_end(ap);
-	fprintf(stderr, "\nTry 'slipwall %s --help'.\n", cmd);
+	fprintf(stderr, "slipwall %s: %s\nTry 'slipwall %s --help'.\n", cmd, s,
+		cmd);
+	free(s);
 	return 2;
 }
 
@@ -158,6 +205,73 @@ int cli_ncpu(void)
 	return n > 0 ? (int)n : 1;
 }
 
+double cli_worker_bytes(const struct wall *w)
+{
+	return 1048576.0 + 16384.0 * (double)w->nifaces +
+	       4096.0 * (double)w->nblocks;
+}
+
+/* Bytes the process may use: the machine's memory, or RLIMIT_AS. */
+static double memory_bytes(void)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+	double m = pages > 0 && size > 0 ? (double)pages * (double)size :
+		   INFINITY;
+	struct rlimit rl;
+	if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+	    (double)rl.rlim_cur < m)
+		m = (double)rl.rlim_cur;
+	return m;
+}
+
+int cli_threads(const char *cmd, const struct wall *w, int requested,
+		int def, long n, int *threads)
+{
+	int t = requested > 0 ? requested : def;
+	if (t < 1)
+		t = 1;
+	if (n > 0 && t > n)
+		t = (int)n;
+	double per = cli_worker_bytes(w), mem = memory_bytes();
+	/* half the memory for the workers: the rest is the wall, the
+	 * samples in flight, the tally and everything else */
+	double fit = floor(0.5 * mem / per);
+	if ((double)t > fit) {
+		int k = fit >= 1 ? (int)fit : 1;
+		if (requested > 0 && requested > k)
+			return cli_usage_error(cmd, "--threads %d: each worker "
+					       "needs about %.0f MB for this wall "
+					       "(%d interfaces), %.1f GB in all: "
+					       "use at most %d (half of the %.1f "
+					       "GB of memory)", requested,
+					       per / 1048576.0, w->nifaces,
+					       (double)t * per / 1e9, k,
+					       mem / 1e9);
+		t = k;
+	}
+	*threads = t;
+	return 0;
+}
+
+/* Bounds of a file of test loads: a line, and the whole file (the wall
+ * loader's 16 MiB; a million loads fit in a tenth of it). */
+#define TESTS_LINE_MAX 4096
+#define TESTS_FILE_MAX ((size_t)16 << 20)
+
+/* A load as people write it: decimal digits, a point, an exponent -
+ * not strtod's hexadecimal, infinity or NaN. */
+static int decimal_number(const char *p, const char *end)
+{
+	int digits = 0;
+	for (const char *q = p; q < end; q++) {
+		if (isdigit((unsigned char)*q))
+			digits = 1;
+		else if (!strchr("+-.eE", *q))
+			return 0;
+	}
+	return digits;
+}
+
 enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err)
 {
@@ -166,17 +280,19 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
 			       strerror(errno));
 	char *line = NULL;
-	size_t cap = 0;
+	size_t cap = 0, len, total = 0;
 	long lineno = 0, n = 0, xcap = 0;
 	double *x = NULL;
 	enum sw_status st = SW_OK;
-	ssize_t len;
-	while (st == SW_OK && (len = getline(&line, &cap, f)) >= 0) {
+	enum text_line got = TEXT_LINE_EOF;
+	while (st == SW_OK && (got = text_getline(f, &line, &cap,
+						  TESTS_LINE_MAX, &len)) > 0) {
 		lineno++;
-		if ((size_t)len != strlen(line)) {
-			st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in "
-				     "a text file", path, lineno,
-				     strlen(line) + 1);
+		total += len + 1;
+		if (total > TESTS_FILE_MAX) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:1: more than %zu "
+				     "MiB: too large for a file of test loads",
+				     path, lineno, TESTS_FILE_MAX >> 20);
 			break;
 		}
 		char *hash = strchr(line, '#');
@@ -192,9 +308,10 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		errno = 0;
 		double v = strtod(p, &end);
 		if (end == p || errno == ERANGE || !isfinite(v) ||
+		    !decimal_number(p, end) ||
 		    (*end && !isspace((unsigned char)*end))) {
 			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
-				     "a number", path, lineno, col);
+				     "a number, in decimal", path, lineno, col);
 			break;
 		}
 		if (v < 0) {
@@ -217,7 +334,14 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		}
 		x[n++] = v;
 	}
-	if (st == SW_OK && ferror(f))
+	if (st == SW_OK && got == TEXT_LINE_NUL)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text "
+			     "file", path, lineno + 1, len + 1);
+	else if (st == SW_OK && got == TEXT_LINE_LONG)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: a line longer than %d "
+			     "bytes: not a file of test loads", path, lineno + 1,
+			     TESTS_LINE_MAX);
+	else if (st == SW_OK && got == TEXT_LINE_ERROR)
 		st = sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
 			     strerror(errno));
 	free(line);
@@ -250,25 +374,22 @@ int cli_tests_synthetic(const char *path)
 	return yes;
 }
 
-void cli_shell_arg(char *buf, size_t len, const char *s)
+void cli_shell_arg(FILE *f, const char *s)
 {
-	size_t u = strlen(buf);
 	int plain = *s != 0;
 	for (const char *p = s; *p; p++)
 		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
 			plain = 0;
 	if (plain) {
-		snprintf(buf + u, len - u, " %s", s);
+		fprintf(f, " %s", s);
 		return;
 	}
-	snprintf(buf + u, len - u, " '");
+	fputs(" '", f);
 	for (const char *p = s; *p; p++) {
-		u = strlen(buf);
 		if (*p == '\'')
-			snprintf(buf + u, len - u, "'\\''");
+			fputs("'\\''", f);
 		else
-			snprintf(buf + u, len - u, "%c", *p);
+			fputc(*p, f);
 	}
-	u = strlen(buf);
-	snprintf(buf + u, len - u, "'");
+	fputc('\'', f);
 }

@@ -29,6 +29,13 @@ int cli_load_wall(const char *path, struct wall **w);
 /* The bundled demo wall: from the build tree when the program runs from
  * it, else the installed copy.  Never NULL (may not exist). */
 const char *cli_demo_wall(void);
+/* s as it may be printed (text_clean): s itself when it is clean, else
+ * a cleaned copy that lives until eight more calls have been made - for
+ * printf arguments: printf("%s", cli_text(w->name)).  NULL stays NULL. */
+const char *cli_text(const char *s);
+/* Print a message and a newline to stderr, its control characters and
+ * invalid UTF-8 escaped (text_clean): messages carry paths and names. */
+void cli_errorf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* Print "slipwall CMD: message" and a hint to stderr; returns 2. */
 int cli_usage_error(const char *cmd, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
@@ -66,10 +73,23 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 /* Does a loads file call its loads synthetic (the word in a '#'
  * comment, any case)?  Then compare and report say so. */
 int cli_tests_synthetic(const char *path);
-/* Append " s" to buf (len bytes in all, cut short if full), single-
+/* Write " s" to f, single-
  * quoted for a POSIX shell when a shell would change it. */
-void cli_shell_arg(char *buf, size_t len, const char *s);
+void cli_shell_arg(FILE *f, const char *s);
 /* Number of online processors (>= 1). */
 int cli_ncpu(void);
+/* Estimated memory of one worker of a pool sampling w (its sampling
+ * workspace: the GLPK problems and the operators grow with the
+ * interfaces; measured about 11 KB per interface on walls/large.yaml,
+ * estimated at 16 KB), in bytes. */
+double cli_worker_bytes(const struct wall *w);
+/* The worker threads for n samples of w into *threads: requested (0:
+ * the default, def) but never more than n, nor than the memory holds
+ * at cli_worker_bytes each (the machine's memory, or the address-space
+ * limit when lower).  A default is cut down to fit; an explicit request
+ * that does not fit is a usage error: returns 2 after printing it, with
+ * the count that fits.  Else 0. */
+int cli_threads(const char *cmd, const struct wall *w, int requested,
+		int def, long n, int *threads);
 
 #endif

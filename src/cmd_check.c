@@ -156,8 +156,9 @@ static void print_text(const struct wall *w)
 	}
 	for (int k = 0; k < w->nblocks; k++)
 		nfixed += w->blocks[k].fixed;
-	printf("wall:       %s%s%s%s\n", w->name ? w->name : "(unnamed)",
-	       w->path ? " (" : "", w->path ? w->path : "", w->path ? ")" : "");
+	printf("wall:       %s%s%s%s\n", w->name ? cli_text(w->name) :
+	       "(unnamed)", w->path ? " (" : "", w->path ? cli_text(w->path) :
+	       "", w->path ? ")" : "");
 	printf("material:   friction bed %g, head %g; unit weight %g N/m^3; thickness %g m\n",
 	       w->mu_bed, w->mu_head, w->unit_weight, w->thickness);
 	printf("blocks:     %d free, %d support%s; total weight %.6g N (mean block %.6g N)\n",
@@ -169,7 +170,8 @@ static void print_text(const struct wall *w)
 		const struct wall_load *ld = &w->loads[l];
 		if (ld->kind == LOAD_POINT)
 			printf("load:       point at (%g, %g) on block %s, direction (%g, %g), reference %g N\n",
-			       ld->at[0], ld->at[1], w->blocks[ld->block].id,
+			       ld->at[0], ld->at[1],
+			       cli_text(w->blocks[ld->block].id),
 			       ld->dir[0], ld->dir[1], ld->magnitude);
 		else
 			printf("load:       body load %g x weight, direction (%g, %g)\n",
@@ -191,7 +193,8 @@ static void print_text(const struct wall *w)
 			snprintf(wt, sizeof wt, "support");
 		else
 			snprintf(wt, sizeof wt, "%.5g", b->weight);
-		printf("%-10s %10.4f %10.4f %10.5f %12s\n", b->id, b->cx, b->cy,
+		printf("%-10s %10.4f %10.4f %10.5f %12s\n", cli_text(b->id),
+		       b->cx, b->cy,
 		       b->area, wt);
 	}
 	printf("\n%-5s %-10s %-10s %-21s %-21s %6s %s\n", "#", "a", "b",
@@ -202,7 +205,8 @@ static void print_text(const struct wall *w)
 		snprintf(p1, sizeof p1, "(%.4g, %.4g)", it->p1[0], it->p1[1]);
 		snprintf(p2, sizeof p2, "(%.4g, %.4g)", it->p2[0], it->p2[1]);
 		printf("%-5d %-10s %-10s %-21s %-21s %6.3g %s\n", k + 1,
-		       w->blocks[it->a].id, w->blocks[it->b].id, p1, p2,
+		       cli_text(w->blocks[it->a].id),
+		       cli_text(w->blocks[it->b].id), p1, p2,
 		       it->mu, kind_name(it->kind));
 	}
 }

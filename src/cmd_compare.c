@@ -398,7 +398,7 @@ int cmd_compare(int argc, char **argv)
 
 	if (a.tests) {
 		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
@@ -408,10 +408,13 @@ int cmd_compare(int argc, char **argv)
 		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
 	}
 	if (ntests == 0) {
+		/* w->tests is NULL when the file has no tests: key, an
+		 * empty array when its list of loads is empty */
 		status = cli_usage_error(CMD, "no experimental loads: %s%s%s",
 					 a.tests ? a.tests : a.wall,
 					 a.tests ? " holds no load" :
-					 " has no tests: key",
+					 w->tests ? ": its tests: loads list "
+					 "is empty" : " has no tests: key",
 					 a.tests ? "" : "; give --tests FILE");
 		goto out;
 	}
@@ -434,41 +437,48 @@ int cmd_compare(int argc, char **argv)
 		cfg.n = a.n;
 	if (a.seed_set)
 		cfg.seed = a.seed;
-	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	cfg.depth = a.depth;
 	if (cfg.n < 1) {
 		status = cli_usage_error(CMD, "no samples to compute (-n)");
+		goto out;
+	}
+	if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+				  &cfg.threads))) {
 		goto out;
 	}
 
 	struct model *md = &one;
 	if (a.samples) {
 		long n;
-		if (runlog_read_loads(a.samples, w, &one.lam, &n, err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, w, &one.lam, &n, warn, err) !=
+		    SW_OK) {
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
+		if (warn[0])
+			cli_errorf("%s", warn);
 		one.samples = one.accepted = n;
 		one.depth = NAN;
 		analyse(&one, tests, ntests);
 	} else if (a.fit_depth) {
 		if (fit_depth(&cfg, tests, ntests, &prof, &nprof, &best,
 			      isatty(STDERR_FILENO), err) != SW_OK) {
-			fprintf(stderr, "slipwall compare: %s\n", err);
+			cli_errorf("slipwall compare: %s", err);
 			status = 1;
 			goto out;
 		}
 		if (best < 0) {
-			fprintf(stderr, "slipwall compare: no depth gave an "
-				"accepted sample: the analysis failed\n");
+			cli_errorf("slipwall compare: no depth gave an "
+				"accepted sample: the analysis failed");
 			status = 1;
 			goto out;
 		}
 		md = &prof[best];
 	} else {
 		if (run_model(&cfg, &one, err) != SW_OK) {
-			fprintf(stderr, "slipwall compare: %s\n", err);
+			cli_errorf("slipwall compare: %s", err);
 			status = 1;
 			goto out;
 		}
@@ -547,21 +557,22 @@ int cmd_compare(int argc, char **argv)
 		json_object_end(&j);
 		json_end(&j);
 	} else {
-		printf("%s  [%s]\n", w->name ? w->name : a.wall, a.wall);
+		printf("%s  [%s]\n", cli_text(w->name ? w->name : a.wall),
+		       cli_text(a.wall));
 		if (a.ov.n > 0) {
 			char d[1024];
 			override_describe(&a.ov, d, sizeof d);
-			printf("overrides: %s\n", d);
+			printf("overrides: %s\n", cli_text(d));
 		}
 		if (a.samples)
 			printf("model: %ld accepted loads from %s\n", md->accepted,
-			       a.samples);
+			       cli_text(a.samples));
 		else
 			printf("model: %ld of %ld samples accepted (seed %lu, %s "
 			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
 			       a.fit_depth ? "best depth" : "depth", md->depth);
 		printf("tests: %ld loads from %s%s\nloads: %s\n\n", ntests,
-		       a.tests ? a.tests : "the wall's tests: key",
+		       a.tests ? cli_text(a.tests) : "the wall's tests: key",
 		       a.tests && cli_tests_synthetic(a.tests) ?
 		       " (SYNTHETIC: not measurements, the file says so)" : "",
 		       w->nloads && w->loads[0].kind == LOAD_BODY
@@ -598,8 +609,8 @@ int cmd_compare(int argc, char **argv)
 		print_ks(md);
 	}
 	if (md->accepted == 0) {
-		fprintf(stderr, "slipwall compare: no model sample was accepted: "
-			"the analysis failed\n");
+		cli_errorf("slipwall compare: no model sample was accepted: "
+			"the analysis failed");
 		status = 1;
 	}
 out:

@@ -13,9 +13,16 @@
  * (solve_run): standard and gilbert always, global only for walls of at
  * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
  * Then report_write() (report.c) draws everything.
+ *
+ * SIGINT, SIGTERM and SIGHUP stop the command at once wherever it is
+ * (the pool is stopped, report_write is cancelled between two files),
+ * and the report directory is then as it was: report_write writes into
+ * a directory beside it and puts it in place only when everything is
+ * written.  The exit status is 1, "interrupted", as for `run`.
  */
 #include <ctype.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -138,14 +145,57 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 }
 
 
+/* ---- signals ----------------------------------------------------------- */
+
+/* The signal that arrived and the pool to stop: globals because a
+ * signal handler has no other way to reach them. */
+static volatile sig_atomic_t report_signal;
+static struct mc *volatile report_pool;
+
+static void on_signal(int sig)
+{
+	report_signal = sig;
+	struct mc *m = report_pool;
+	if (m)
+		mc_stop(m);
+}
+
+static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* Catch the three (a signal ignored at start stays ignored); old gets
+ * the handlers to put back. */
+static void signals_catch(struct sigaction old[3])
+{
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART;
+	for (int k = 0; k < 3; k++) {
+		sigaction(catch_sigs[k], NULL, &old[k]);
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &sa, NULL);
+	}
+}
+
+static void signals_restore(const struct sigaction old[3])
+{
+	for (int k = 0; k < 3; k++)
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &old[k], NULL);
+}
+
 /* Run the pool to the end: the tally and, in sample order, the accepted
- * loads (when lam is not NULL). */
+ * loads (when lam is not NULL).  SW_EINTR when a signal stopped it. */
 static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 			       double **lam, long *nlam, char *err)
 {
 	struct mc *m = mc_start(cfg, err);
 	if (!m)
 		return SW_EANALYSIS;
+	report_pool = m;
+	if (report_signal)
+		mc_stop(m);
 	int tty = isatty(STDERR_FILENO);
 	struct mc_item it;
 	mc_item_init(&it, cfg->w);
@@ -168,8 +218,12 @@ static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 	}
 	if (tty)
 		fprintf(stderr, "\r\033[K");
+	report_pool = NULL;
 	mc_item_free(&it);
 	mc_free(m);
+	if (report_signal)
+		return sw_fail(err, SW_EINTR, "interrupted (%s): no report "
+			       "written", strsignal(report_signal));
 	return SW_OK;
 }
 
@@ -259,31 +313,41 @@ static int cmp_load(const void *x, const void *y)
 	return (a > b) - (a < b);
 }
 
-/* Append s to buf, single-quoted for a POSIX shell when needed. */
-static void shell_arg(char *buf, size_t len, const char *s)
+/* The command that reproduces the report, malloc'd: the paths are the
+ * user's, of any length. */
+static char *command_line(const struct report_args *a,
+			  const struct mc_config *cfg)
 {
-	size_t u = strlen(buf);
-	int plain = *s != 0;
-	for (const char *p = s; *p; p++)
-		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
-			plain = 0;
-	if (plain) {
-		snprintf(buf + u, len - u, " %s", s);
-		return;
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&buf, &len);
+	if (!f)
+		return sw_xstrdup("slipwall report");
+	fputs("slipwall report", f);
+	cli_shell_arg(f, a->wall);
+	if (a->samples) {
+		fputs(" --samples", f);
+		cli_shell_arg(f, a->samples);
+	} else {
+		fprintf(f, " -n %ld --seed %lu", cfg->n, cfg->seed);
+		if (a->depth >= 0)
+			fprintf(f, " --depth %.17g", a->depth);
 	}
-	snprintf(buf + u, len - u, " '");
-	for (const char *p = s; *p; p++) {
-		u = strlen(buf);
-		if (*p == '\'')
-			snprintf(buf + u, len - u, "'\\''");
-		else
-			snprintf(buf + u, len - u, "%c", *p);
+	override_args(&a->ov, f);
+	if (a->tests) {
+		fputs(" --tests", f);
+		cli_shell_arg(f, a->tests);
 	}
-	u = strlen(buf);
-	snprintf(buf + u, len - u, "'");
+	fputs(" --out", f);
+	cli_shell_arg(f, a->out);
+	if (fclose(f) != 0 || !buf) {
+		free(buf);
+		return sw_xstrdup("slipwall report");
+	}
+	return buf;
 }
 
-int cmd_report(int argc, char **argv)
+static int report_main(int argc, char **argv)
 {
 	struct report_args a;
 	int rc = parse_args(argc, argv, &a);
@@ -298,6 +362,7 @@ int cmd_report(int argc, char **argv)
 	char err[SW_ERRLEN], note[2048] = "";
 	int status = 0;
 	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
+	char *cmdline = NULL, *tsrc = NULL;
 	long ntests = 0, nlam = 0;
 	struct tally t;
 	tally_init(&t, w);
@@ -310,7 +375,7 @@ int cmd_report(int argc, char **argv)
 	}
 	if (a.tests) {
 		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
@@ -322,30 +387,37 @@ int cmd_report(int argc, char **argv)
 
 	struct mc_config cfg;
 	mc_config_default(&cfg, w);
-	cfg.threads = a.threads ? a.threads : cli_ncpu();
 	if (a.samples) {
 		long rows;
-		if (runlog_read_loads(a.samples, w, &lam, &nlam, err) != SW_OK ||
-		    runlog_read_positions(a.samples, w, &xi, &rows, err) !=
-		    SW_OK) {
-			fprintf(stderr, "%s\n", err);
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, w, &lam, &nlam, NULL, err) !=
+		    SW_OK ||
+		    runlog_read_positions(a.samples, w, &xi, &rows, warn,
+					  err) != SW_OK) {
+			cli_errorf("%s", err);
 			status = 2;
 			goto out;
 		}
+		if (warn[0])
+			cli_errorf("%s", warn);
 		if (rows < 1) {
-			fprintf(stderr, "%s: no samples\n", a.samples);
+			cli_errorf("%s: no samples", a.samples);
 			status = 2;
 			goto out;
 		}
 		cfg.positions = xi;
 		cfg.n = rows;
+		if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
 		long nrep = 0;
 		fprintf(stderr, "report: %ld loads from %s; replaying their "
 			"contact positions to recover the mechanisms (the file "
-			"holds none)...\n", nlam, a.samples);
-		if (run_pool(&cfg, &t, &replay, &nrep, err) != SW_OK) {
-			fprintf(stderr, "slipwall report: %s\n", err);
-			status = 1;
+			"holds none)...\n", nlam, cli_text(a.samples));
+		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
+		if (pst != SW_OK) {
+			cli_errorf("slipwall report: %s", err);
+			status = sw_status_exit(pst);
 			goto out;
 		}
 		long differ = nrep != nlam;
@@ -369,15 +441,19 @@ int cmd_report(int argc, char **argv)
 		if (a.seed_set)
 			cfg.seed = a.seed;
 		cfg.depth = a.depth;
-		if (run_pool(&cfg, &t, &lam, &nlam, err) != SW_OK) {
-			fprintf(stderr, "slipwall report: %s\n", err);
-			status = 1;
+		if ((status = cli_threads(CMD, w, a.threads, cli_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
+		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
+		if (pst != SW_OK) {
+			cli_errorf("slipwall report: %s", err);
+			status = sw_status_exit(pst);
 			goto out;
 		}
 	}
 	if (nlam == 0) {
-		fprintf(stderr, "slipwall report: no accepted sample (%ld "
-			"computed): nothing to plot\n", t.samples);
+		cli_errorf("slipwall report: no accepted sample (%ld "
+			"computed): nothing to plot", t.samples);
 		status = 1;
 		goto out;
 	}
@@ -407,25 +483,15 @@ int cmd_report(int argc, char **argv)
 	int nsol;
 	single_solutions(w, a.time_limit, sf, sol, &nsol);
 
-	char cmdline[2048] = "slipwall report";
-	shell_arg(cmdline, sizeof cmdline, a.wall);
-	if (a.samples) {
-		strcat(cmdline, " --samples");
-		shell_arg(cmdline, sizeof cmdline, a.samples);
-	} else {
-		size_t u = strlen(cmdline);
-		snprintf(cmdline + u, sizeof cmdline - u, " -n %ld --seed %lu",
-			 cfg.n, cfg.seed);
-		if (a.depth >= 0) {
-			u = strlen(cmdline);
-			snprintf(cmdline + u, sizeof cmdline - u, " --depth %g",
-				 a.depth);
-		}
-	}
-	override_args(&a.ov, cmdline, sizeof cmdline);
+	cmdline = command_line(&a, &cfg);
 	if (a.tests) {
-		strcat(cmdline, " --tests");
-		shell_arg(cmdline, sizeof cmdline, a.tests);
+		const char *syn = cli_tests_synthetic(a.tests) ?
+			" (**synthetic**: not measurements, the file says so)" : "";
+		size_t len = strlen(a.tests) + strlen(syn) + 3;
+		tsrc = sw_xmalloc(len);
+		snprintf(tsrc, len, "`%s`%s", a.tests, syn);
+	} else {
+		tsrc = sw_xstrdup("the wall's tests: key");
 	}
 	if (w->design_load > 0) {
 		/* the probability of collapse at the design load */
@@ -450,13 +516,6 @@ int cmd_report(int argc, char **argv)
 		snprintf(note + u, sizeof note - u, "%sThe wall file's values "
 			 "were changed for this report: %s.", u ? " " : "", d);
 	}
-	strcat(cmdline, " --out");
-	shell_arg(cmdline, sizeof cmdline, a.out);
-
-	char tsrc[1024];
-	snprintf(tsrc, sizeof tsrc, a.tests ? "`%s`%s" : "the wall's tests: key",
-		 a.tests, a.tests && cli_tests_synthetic(a.tests) ?
-		 " (**synthetic**: not measurements, the file says so)" : "");
 	struct report_input in = {
 		.w = w,
 		.lam = lam,
@@ -485,13 +544,17 @@ int cmd_report(int argc, char **argv)
 		},
 	};
 	memcpy(in.run.rejected, t.rejected, sizeof t.rejected);
-	if (report_write(&in, a.out, NULL, err) != SW_OK) {
-		fprintf(stderr, "slipwall report: %s\n", err);
+	struct report_opts ro;
+	report_opts_default(&ro);
+	ro.cancel = &report_signal;
+	if (report_write(&in, a.out, &ro, err) != SW_OK) {
+		cli_errorf("slipwall report: %s", err);
 		status = 1;
 		goto out;
 	}
 	printf("%s/report.md: %ld accepted loads of %ld samples, %ld tests, "
-	       "%d mechanisms\n", a.out, nlam, t.samples, ntests, t.nmech);
+	       "%d mechanisms\n", cli_text(a.out), nlam, t.samples, ntests,
+	       t.nmech);
 	if (!ntests)
 		printf("no experimental loads: the figures show the model "
 		       "alone\n");
@@ -500,6 +563,8 @@ int cmd_report(int argc, char **argv)
 		       "measurements, the file says so)\n", a.tests);
 out:
 	report_cleanup();
+	free(cmdline);
+	free(tsrc);
 	tally_free(&t);
 	free(lam);
 	free(replay);
@@ -508,4 +573,14 @@ out:
 	wall_free(w);
 	override_free(&a.ov);
 	return status;
+}
+
+int cmd_report(int argc, char **argv)
+{
+	struct sigaction old[3];
+	report_signal = 0;
+	signals_catch(old);
+	int rc = report_main(argc, argv);
+	signals_restore(old);
+	return rc;
 }

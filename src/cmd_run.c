@@ -286,9 +286,6 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 	}
 	if (!a->wall)
 		return cli_usage_error(CMD, "which wall? (slipwall run WALL.yaml)");
-	if (a->samples && a->positions && !strcmp(a->samples, a->positions))
-		return cli_usage_error(CMD, "--samples would overwrite the "
-				       "--positions file '%s'", a->positions);
 	if (a->positions && (a->seed_set || a->depth >= 0))
 		return cli_usage_error(CMD, "--positions replays the contact "
 				       "positions of a file: --seed and --depth "
@@ -457,12 +454,12 @@ static void print_text(const struct run_info *r, const struct tally *t)
 	const struct wall *w = r->w;
 
 	if (w->name)
-		printf("%s  [%s]\n", w->name, r->a->wall);
+		printf("%s  [%s]\n", cli_text(w->name), cli_text(r->a->wall));
 	else
-		printf("%s\n", r->a->wall);
+		printf("%s\n", cli_text(r->a->wall));
 	printf("samples      %ld of %ld (", t->samples, r->requested);
 	if (r->a->positions)
-		printf("positions of %s", r->a->positions);
+		printf("positions of %s", cli_text(r->a->positions));
 	else if (w->anywhere)
 		printf("seed %lu, positions anywhere", r->cfg->seed);
 	else
@@ -534,7 +531,7 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		       "              H hinges and slides, o opens)\n");
 	}
 	if (r->a->samples)
-		printf("samples file %s\n", r->a->samples);
+		printf("samples file %s\n", cli_text(r->a->samples));
 }
 
 static void print_json(const struct run_info *r, const struct tally *t)
@@ -726,11 +723,14 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	cfg->opts.slp = (enum sample_slp)a->slp;
 	if (a->positions) {
 		long rows;
+		char warn[SW_ERRLEN];
 		if (runlog_read_positions(a->positions, w, &s->replay, &rows,
-					  err) != SW_OK) {
-			fprintf(stderr, "%s\n", err);
+					  warn, err) != SW_OK) {
+			cli_errorf("%s", err);
 			return 2;
 		}
+		if (warn[0])
+			cli_errorf("%s", warn);
 		if (a->n_set && a->n > rows)
 			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
 					       "samples", a->n, a->positions, rows);
@@ -744,13 +744,18 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	if (a->seed_set)
 		cfg->seed = a->seed;
 	cfg->depth = a->depth;
-	cfg->threads = a->threads ? a->threads :
-		       cl ? cluster_threads(cl) : cli_ncpu();
+	if ((rc = cli_threads(CMD, w, a->threads, cl ? cluster_threads(cl) :
+			      cli_ncpu(), cfg->n, &cfg->threads)))
+		return rc;
 
-	if (a->samples && cluster_rank(cl) == 0 &&
-	    !(s->log = runlog_open(a->samples, w, err))) {
-		fprintf(stderr, "slipwall run: %s\n", err);
-		return 1;
+	if (a->samples && cluster_rank(cl) == 0) {
+		const char *keep[] = {a->wall, a->positions, NULL};
+		enum sw_status st = runlog_create(&s->log, a->samples, w, keep,
+						  err);
+		if (st != SW_OK) {
+			cli_errorf("slipwall run: %s", err);
+			return sw_status_exit(st);
+		}
 	}
 	return 0;
 }
@@ -836,28 +841,28 @@ static int sample(struct run_setup *s, const struct source *src,
 
 	int status = 0;
 	if (stop == STOP_WRITE) {
-		fprintf(stderr, "slipwall run: %s\n", werr);
+		cli_errorf("slipwall run: %s", werr);
 		status = 1;
 	} else if (cst != SW_OK) {
-		fprintf(stderr, "slipwall run: %s\n", err);
+		cli_errorf("slipwall run: %s", err);
 		status = 1;
 	}
 	if (stop == STOP_SIGNAL) {
-		fprintf(stderr, "slipwall run: interrupted (%s) after %ld of %ld "
-			"samples\n", why, t.samples, cfg->n);
+		cli_errorf("slipwall run: interrupted (%s) after %ld of %ld "
+			"samples", why, t.samples, cfg->n);
 		status = sw_status_exit(SW_EINTR);
 	}
 	if (stop == STOP_LOST) {
-		fprintf(stderr, "slipwall run: %s: stopped after %ld of %ld "
-			"samples\n", serr, t.samples, cfg->n);
+		cli_errorf("slipwall run: %s: stopped after %ld of %ld "
+			"samples", serr, t.samples, cfg->n);
 		status = 1;
 	} else if (sst != SW_OK && sst != SW_EINTR) {
-		fprintf(stderr, "slipwall run: %s\n", serr);
+		cli_errorf("slipwall run: %s", serr);
 		status = 1;
 	}
 	if (t.accepted == 0 && t.samples > 0) {
-		fprintf(stderr, "slipwall run: no sample was accepted: the "
-			"analysis failed (see the rejections above)\n");
+		cli_errorf("slipwall run: no sample was accepted: the "
+			"analysis failed (see the rejections above)");
 		status = 1;
 	}
 	tally_free(&t);
@@ -873,7 +878,7 @@ static int serve(struct cluster *cl, const struct source *src)
 	enum sw_status st = cluster_serve(cl, err);
 	signals_restore(&caught);
 	if (st != SW_OK && st != SW_EINTR)
-		fprintf(stderr, "slipwall run: %s\n", err);
+		cli_errorf("slipwall run: %s", err);
 	return sw_status_exit(st);
 }
 
@@ -889,10 +894,10 @@ static int run_job(struct cluster *cl, int argc, char **argv)
 	int rc = setup(argc, argv, cl, &s);
 	double t0 = now();
 	if (rc == 0 && cl && cluster_open(cl, &s.cfg, err) != SW_OK) {
-		fprintf(stderr, "slipwall run: %s\n", err);
+		cli_errorf("slipwall run: %s", err);
 		rc = 1;
 	} else if (rc == 0 && !cl && !(pool = mc_start(&s.cfg, err))) {
-		fprintf(stderr, "slipwall run: %s\n", err);
+		cli_errorf("slipwall run: %s", err);
 		rc = 1;
 	}
 	int root_rc;
@@ -919,7 +924,7 @@ int cmd_run(int argc, char **argv)
 	enum sw_status st = cluster_start(&cl, err);
 	if (st != SW_OK) {
 		if (err[0])	/* (empty: another process says it) */
-			fprintf(stderr, "slipwall run: %s\n", err);
+			cli_errorf("slipwall run: %s", err);
 		return sw_status_exit(st);
 	}
 	return cluster_end(cl, run_job(cl, argc, argv));

@@ -167,15 +167,15 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 	       "u", "v", "omega*L");
 	for (int b = 0; b < w->nblocks; b++)
 		if (!w->blocks[b].fixed && moving(&r->mech, b))
-			printf("%-10s %10.4f %10.4f %10.4f\n", w->blocks[b].id,
+			printf("%-10s %10.4f %10.4f %10.4f\n", cli_text(w->blocks[b].id),
 			       r->mech.vel[3 * b], r->mech.vel[3 * b + 1],
 			       r->mech.vel[3 * b + 2] * w->mean_size);
 	printf("\n%-5s %-10s %-10s %s\n", "#", "a", "b", "joint");
 	for (int k = 0; k < w->nifaces; k++)
 		if (r->mech.joint[k] != JOINT_CLOSED)
 			printf("%-5d %-10s %-10s %s\n", k + 1,
-			       w->blocks[w->ifaces[k].a].id,
-			       w->blocks[w->ifaces[k].b].id,
+			       cli_text(w->blocks[w->ifaces[k].a].id),
+			       cli_text(w->blocks[w->ifaces[k].b].id),
 			       joint_text(r->mech.joint[k]));
 }
 
@@ -284,7 +284,7 @@ int cmd_solve(int argc, char **argv)
 	char err[SW_ERRLEN];
 	enum sw_status st = solve_run(w, &o, &r, err);
 	if (st != SW_OK) {
-		fprintf(stderr, "%s: %s\n", argv[optind], err);
+		cli_errorf("%s: %s", argv[optind], err);
 		rc = sw_status_exit(st);
 	} else {
 		if (json)

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "slipwall/json.h"
+#include "slipwall/text.h"
 
 void json_init(struct json *j, FILE *f, int indent)
 {
@@ -61,10 +62,29 @@ void json_object_end(struct json *j) { close(j, '}'); }
 void json_array_begin(struct json *j) { open(j, '['); }
 void json_array_end(struct json *j) { close(j, ']'); }
 
+/* A JSON string: control characters (C0, DEL, C1) as \u escapes, so
+ * that the text is safe on a terminal too; bytes that are not valid
+ * UTF-8 (a path can hold any byte) as U+FFFD, so that the document is
+ * valid JSON whatever the input. */
 static void put_string(FILE *f, const char *s)
 {
 	fputc('"', f);
 	for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+		int n = text_utf8_len(p);
+		if (n == 0) {
+			fputs("\\ufffd", f);
+			continue;
+		}
+		if (n == 2 && p[0] == 0xc2 && p[1] < 0xa0) {
+			fprintf(f, "\\u%04x", p[1]);
+			p++;
+			continue;
+		}
+		if (n > 1) {
+			fwrite(p, 1, (size_t)n, f);
+			p += n - 1;
+			continue;
+		}
 		switch (*p) {
 		case '"': fputs("\\\"", f); break;
 		case '\\': fputs("\\\\", f); break;
@@ -72,7 +92,7 @@ static void put_string(FILE *f, const char *s)
 		case '\r': fputs("\\r", f); break;
 		case '\t': fputs("\\t", f); break;
 		default:
-			if (*p < 0x20)
+			if (*p < 0x20 || *p == 0x7f)
 				fprintf(f, "\\u%04x", *p);
 			else
 				fputc(*p, f);

@@ -5,6 +5,7 @@
  *   slipwall COMMAND ...        run, solve, check, compare, report, sweep
  */
 #include <errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,8 +84,13 @@ int main(int argc, char **argv)
 			return 0;
 		}
 		for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
-			if (!strcmp(a, commands[i].name))
+			if (!strcmp(a, commands[i].name)) {
+				/* a closed pipe (`--samples /dev/stdout |
+				 * head`) is a write error with a message
+				 * (EPIPE), not a silent death by SIGPIPE */
+				signal(SIGPIPE, SIG_IGN);
 				return finish(commands[i].fn(argc - 1, argv + 1));
+			}
 		if (a[0] == '-') {
 			fprintf(stderr, "slipwall: unknown option '%s'\n", a);
 			usage(stderr);

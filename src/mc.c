@@ -307,8 +307,10 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 		m->cfg.stride = 1;
 	m->count = c->n > c->first ? (c->n - c->first - 1) / m->cfg.stride + 1
 				   : 0;
-	m->nth = c->threads;
-	m->window = 64 + 16L * c->threads;
+	/* never more workers than samples to compute */
+	m->nth = m->count > 0 && m->count < c->threads ? (int)m->count :
+		 c->threads;
+	m->window = 64 + 16L * m->nth;
 	m->ring = sw_xcalloc((size_t)m->window, sizeof *m->ring);
 	for (long k = 0; k < m->window; k++)
 		mc_item_init(&m->ring[k].item, c->w);

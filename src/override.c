@@ -238,11 +238,11 @@ void override_describe(const struct overrides *ov, char *buf, size_t len)
 	}
 }
 
-void override_args(const struct overrides *ov, char *buf, size_t len)
+void override_args(const struct overrides *ov, FILE *f)
 {
 	for (int k = 0; k < ov->n; k++) {
-		cli_shell_arg(buf, len, ov->o[k].option);
-		cli_shell_arg(buf, len, ov->o[k].arg);
+		cli_shell_arg(f, ov->o[k].option);
+		cli_shell_arg(f, ov->o[k].arg);
 	}
 }
 

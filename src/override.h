@@ -61,8 +61,8 @@ void override_json(const struct overrides *ov, struct json *j);
  * there is none. */
 void override_describe(const struct overrides *ov, char *buf, size_t len);
 /* The options again, each argument quoted for a POSIX shell when it
- * needs it, each preceded by a space, appended to buf. */
-void override_args(const struct overrides *ov, char *buf, size_t len);
+ * needs it, each preceded by a space, written to f. */
+void override_args(const struct overrides *ov, FILE *f);
 void override_free(struct overrides *ov);
 
 #endif

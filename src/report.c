@@ -27,6 +27,7 @@
 #include <cairo.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
+#include <dirent.h>
 #include <errno.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
@@ -42,6 +43,7 @@
 
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
+#include "slipwall/text.h"
 
 #define FIG_W 480.0		/* figure width, pt */
 #define PLOT_H 300.0		/* a single plot figure's height, pt */
@@ -142,9 +144,11 @@ static void fig_text(struct fig *f, double x, double y, double size, int bold,
 	l->bold = bold;
 }
 
-static void xml_escape(FILE *o, const char *s)
+static void xml_escape(FILE *o, const char *text)
 {
-	for (; *s; s++) {
+	/* no control character: XML 1.0 forbids most of them */
+	char *clean = text_clean(text);
+	for (const char *s = clean; *s; s++) {
 		switch (*s) {
 		case '&':
 			fputs("&amp;", o);
@@ -162,6 +166,7 @@ static void xml_escape(FILE *o, const char *s)
 			fputc(*s, o);
 		}
 	}
+	free(clean);
 }
 
 /* Splice the recorded labels into the SVG file PATH before its </svg>;
@@ -1632,8 +1637,10 @@ static const struct figdef figures[] = {
 };
 #define NFIGURES (int)(sizeof figures / sizeof figures[0])
 
+/* Draw figure d into dir; messages name the file in shown (the
+ * report's directory: dir is its staging directory). */
 static enum sw_status render(const struct figdef *d, const struct rctx *c,
-			     const char *dir, int format,
+			     const char *dir, const char *shown, int format,
 			     const struct report_opts *o, char *err)
 {
 	/* The figure is drawn into PATH.tmp and renamed over PATH when it
@@ -1646,6 +1653,8 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 			     ext) >= sizeof final)
 		return sw_fail(err, SW_EIO, "%s: path too long", dir);
 	snprintf(path, sizeof path, "%s.tmp", final);
+	char named[4096];
+	snprintf(named, sizeof named, "%s/%s.%s", shown, d->name, ext);
 	struct fig f = {0};
 	f.w = FIG_W;
 	f.h = d->height(c);
@@ -1670,7 +1679,7 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 					       (int)ceil(f.h * o->png_scale));
 	}
 	if (cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
-		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", final,
+		enum sw_status st = sw_fail(err, SW_EIO, "%s: %s", named,
 			cairo_status_to_string(cairo_surface_status(s)));
 		cairo_surface_destroy(s);
 		unlink(path);
@@ -1691,12 +1700,12 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 	cairo_surface_destroy(s);
 	enum sw_status st = SW_OK;
 	if (cs != CAIRO_STATUS_SUCCESS)
-		st = sw_fail(err, SW_EIO, "%s: %s", final,
+		st = sw_fail(err, SW_EIO, "%s: %s", named,
 			     cairo_status_to_string(cs));
 	else if (format == REPORT_SVG)
-		st = svg_add_text_layer(path, final, &f, err);
+		st = svg_add_text_layer(path, named, &f, err);
 	if (st == SW_OK && rename(path, final) != 0)
-		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", final,
+		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", named,
 			     strerror(errno));
 	if (st != SW_OK)
 		unlink(path);
@@ -1727,6 +1736,12 @@ static int figure_wanted(const struct rctx *c, int i)
 	return strcmp(figures[i].name, "mechanisms") || c->ntop > 0;
 }
 
+/* A copy of s for report.md (text_clean); NULL stays NULL. */
+static char *md_clean(const char *s)
+{
+	return s ? text_clean(s) : NULL;
+}
+
 static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 				     const struct report_opts *o, char *err)
 {
@@ -1740,13 +1755,20 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	if (st != SW_OK)
 		return st;
 	FILE *f = out.f;
+	/* names and paths as they may be printed: no control character
+	 * (a newline would end a table row, an ESC reach a terminal) */
+	char *name = md_clean(w->name), *wall_path = md_clean(r->wall_path),
+	     *command = md_clean(r->command),
+	     *samples_file = md_clean(r->samples_file),
+	     *tests_source = md_clean(r->tests_source),
+	     *note = md_clean(r->note);
 	const char *u = c->unit;
-	fprintf(f, "# slipwall report: %s\n\n", w->name ? w->name :
-		(r->wall_path ? r->wall_path : "wall"));
+	fprintf(f, "# slipwall report: %s\n\n", name ? name :
+		(wall_path ? wall_path : "wall"));
 	fprintf(f, "Written by slipwall %s from `%s`.", r->version ? r->version :
-		"(unknown version)", r->wall_path ? r->wall_path : "?");
-	if (r->command)
-		fprintf(f, " To reproduce it:\n\n    %s\n\n", r->command);
+		"(unknown version)", wall_path ? wall_path : "?");
+	if (command)
+		fprintf(f, " To reproduce it:\n\n    %s\n\n", command);
 	else
 		fprintf(f, "\n\n");
 	fprintf(f, "Loads: %s.\n\n", c->axis);
@@ -1817,10 +1839,10 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 	}
 
 	fprintf(f, "\n## Run\n\n| setting | value |\n|---|---|\n");
-	fprintf(f, "| wall file | `%s` |\n", r->wall_path ? r->wall_path : "?");
+	fprintf(f, "| wall file | `%s` |\n", wall_path ? wall_path : "?");
 	fprintf(f, "| slipwall version | %s |\n", r->version ? r->version : "?");
-	if (r->samples_file)
-		fprintf(f, "| loads read from | `%s` |\n", r->samples_file);
+	if (samples_file)
+		fprintf(f, "| loads read from | `%s` |\n", samples_file);
 	if (r->seed_known)
 		fprintf(f, "| seed | %lu |\n", r->seed);
 	else
@@ -1851,9 +1873,9 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
 	if (c->m)
 		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
-			r->tests_source ? r->tests_source : "?");
-	if (r->note)
-		fprintf(f, "\n%s\n", r->note);
+			tests_source ? tests_source : "?");
+	if (note)
+		fprintf(f, "\n%s\n", note);
 
 	fprintf(f, "\n## Figures\n\n");
 	for (int i = 0; i < NFIGURES; i++) {
@@ -1876,6 +1898,12 @@ static enum sw_status write_markdown(const struct rctx *c, const char *dir,
 		if (any)
 			fprintf(f, "\n\n");
 	}
+	free(name);
+	free(wall_path);
+	free(command);
+	free(samples_file);
+	free(tests_source);
+	free(note);
 	return sw_whole_close(&out, err);
 }
 
@@ -1886,6 +1914,7 @@ void report_opts_default(struct report_opts *o)
 	o->formats = REPORT_ALL;
 	o->max_mechanisms = MAX_PANELS;
 	o->png_scale = 2.5;
+	o->cancel = NULL;
 }
 
 static enum sw_status make_dir(const char *dir, char *err)
@@ -1911,6 +1940,162 @@ static enum sw_status make_dir(const char *dir, char *err)
 	return SW_OK;
 }
 
+/* The staging directory of a report: where it is and what it holds. */
+struct stage {
+	char *dir;		/* ".NAME.XXXXXX" beside the report's dir */
+	char *final;		/* the report's dir */
+	char **names;		/* files written into it */
+	int n;
+};
+
+static char *path_join(const char *dir, const char *name)
+{
+	size_t n = strlen(dir) + strlen(name) + 2;
+	char *p = sw_xmalloc(n);
+	snprintf(p, n, "%s/%s", dir, name);
+	return p;
+}
+
+static enum sw_status stage_open(struct stage *s, const char *dir, char *err)
+{
+	memset(s, 0, sizeof *s);
+	size_t len = strlen(dir);
+	while (len > 1 && dir[len - 1] == '/')
+		len--;
+	char *d = sw_xmalloc(len + 1);
+	memcpy(d, dir, len);
+	d[len] = 0;
+	char *slash = strrchr(d, '/');
+	const char *base = slash ? slash + 1 : d;
+	char *parent = slash ? (slash == d ? sw_xstrdup("/") :
+				strndup(d, (size_t)(slash - d))) :
+		       sw_xstrdup(".");
+	if (!parent)
+		abort();
+	enum sw_status st = SW_OK;
+	size_t n = strlen(parent) + strlen(base) + 16;
+	s->dir = sw_xmalloc(n);
+	snprintf(s->dir, n, "%s/.%s.XXXXXX", parent, base);
+	char *tmpl = sw_xstrdup(s->dir);
+	if (!mkdtemp(s->dir)) {
+		/* a missing parent is created, as the directory itself was */
+		int e = errno;
+		if (e == ENOENT && (st = make_dir(parent, err)) == SW_OK) {
+			memcpy(s->dir, tmpl, strlen(tmpl) + 1);
+			if (!mkdtemp(s->dir))
+				e = errno;
+			else
+				e = 0;
+		}
+		if (st == SW_OK && e)
+			st = sw_fail(err, SW_EIO, "%s: cannot create: %s", d,
+				     strerror(e));
+		if (st != SW_OK) {
+			free(s->dir);
+			s->dir = NULL;
+		}
+	}
+	free(tmpl);
+	free(parent);
+	if (st != SW_OK) {
+		free(d);
+		return st;
+	}
+	s->final = d;
+	return SW_OK;
+}
+
+/* Remove the staging directory and everything in it (the temporary
+ * files of a figure cut short included). */
+static void stage_remove(struct stage *s)
+{
+	DIR *d = opendir(s->dir);
+	if (d) {
+		struct dirent *e;
+		while ((e = readdir(d))) {
+			if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+				continue;
+			char *p = path_join(s->dir, e->d_name);
+			unlink(p);
+			free(p);
+		}
+		closedir(d);
+	}
+	rmdir(s->dir);
+}
+
+static void stage_free(struct stage *s)
+{
+	for (int i = 0; i < s->n; i++)
+		free(s->names[i]);
+	free(s->names);
+	free(s->dir);
+	free(s->final);
+}
+
+static void stage_add(struct stage *s, const char *name)
+{
+	s->names = sw_xrealloc(s->names, sizeof *s->names * (size_t)(s->n + 1));
+	s->names[s->n++] = sw_xstrdup(name);
+}
+
+static int stage_has(const struct stage *s, const char *name)
+{
+	for (int i = 0; i < s->n; i++)
+		if (!strcmp(s->names[i], name))
+			return 1;
+	return 0;
+}
+
+/* Make the staged report the report: one rename when the directory is
+ * new; else the figures of an older report that this one lacks are
+ * removed, the figures renamed in, and report.md last. */
+static enum sw_status stage_publish(struct stage *s, char *err)
+{
+	if (rename(s->dir, s->final) == 0)
+		return SW_OK;
+	if (errno != EEXIST && errno != ENOTEMPTY)
+		return sw_fail(err, SW_EIO, "%s: cannot create: %s", s->final,
+			       strerror(errno));
+	struct stat st;
+	if (stat(s->final, &st) != 0 || !S_ISDIR(st.st_mode))
+		return sw_fail(err, SW_EIO, "%s: not a directory", s->final);
+	static const char *const ext[] = {"svg", "pdf", "png"};
+	for (int i = 0; i < NFIGURES; i++)
+		for (int k = 0; k < 3; k++) {
+			char name[128];
+			snprintf(name, sizeof name, "%s.%s", figures[i].name,
+				 ext[k]);
+			if (stage_has(s, name))
+				continue;
+			char *p = path_join(s->final, name);
+			unlink(p);
+			free(p);
+		}
+	for (int pass = 0; pass < 2; pass++)
+		for (int i = 0; i < s->n; i++) {
+			if ((pass == 0) == !strcmp(s->names[i], "report.md"))
+				continue;
+			char *from = path_join(s->dir, s->names[i]);
+			char *to = path_join(s->final, s->names[i]);
+			int rc = rename(from, to);
+			int e = errno;
+			free(from);
+			free(to);
+			if (rc != 0)
+				return sw_fail(err, SW_EIO, "%s/%s: cannot "
+					       "write: %s", s->final,
+					       s->names[i], strerror(e));
+		}
+	rmdir(s->dir);
+	return SW_OK;
+}
+
+static int cancelled(const struct report_opts *o)
+{
+	return o->cancel && *o->cancel;
+}
+
 enum sw_status report_write(const struct report_input *in, const char *dir,
 			    const struct report_opts *o, char *err)
 {
@@ -1922,21 +2107,51 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (!(o->png_scale > 0) || o->png_scale > 20)
 		return sw_fail(err, SW_EINPUT, "report: PNG scale %g out of range",
 			       o->png_scale);
-	enum sw_status st = make_dir(dir, err);
-	if (st != SW_OK)
-		return st;
 	struct rctx c;
-	st = rctx_init(&c, in, o, err);
+	enum sw_status st = rctx_init(&c, in, o, err);
+	if (st != SW_OK) {
+		rctx_free(&c);
+		return st;
+	}
+	struct stage s;
+	st = stage_open(&s, dir, err);
+	if (st != SW_OK) {
+		rctx_free(&c);
+		return st;
+	}
+	static const char *const ext[] = {"svg", "pdf", "png"};
 	for (int i = 0; i < NFIGURES && st == SW_OK; i++) {
 		if (!figure_wanted(&c, i))
 			continue;
-		for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK;
-		     fmt <<= 1)
-			if (o->formats & fmt)
-				st = render(&figures[i], &c, dir, fmt, o, err);
+		for (int fmt = REPORT_SVG, k = 0; fmt <= REPORT_PNG &&
+		     st == SW_OK; fmt <<= 1, k++) {
+			if (!(o->formats & fmt))
+				continue;
+			if (cancelled(o)) {
+				st = sw_fail(err, SW_EINTR, "%s: interrupted: "
+					     "nothing written", dir);
+				break;
+			}
+			st = render(&figures[i], &c, s.dir, s.final, fmt, o,
+				    err);
+			if (st == SW_OK) {
+				char name[128];
+				snprintf(name, sizeof name, "%s.%s",
+					 figures[i].name, ext[k]);
+				stage_add(&s, name);
+			}
+		}
 	}
+	if (st == SW_OK && cancelled(o))
+		st = sw_fail(err, SW_EINTR, "%s: interrupted: nothing written",
+			     dir);
+	if (st == SW_OK && (st = write_markdown(&c, s.dir, o, err)) == SW_OK)
+		stage_add(&s, "report.md");
 	if (st == SW_OK)
-		st = write_markdown(&c, dir, o, err);
+		st = stage_publish(&s, err);
+	if (st != SW_OK)
+		stage_remove(&s);
+	stage_free(&s);
 	rctx_free(&c);
 	return st;
 }
@@ -2065,7 +2280,7 @@ enum sw_status report_write_sweep(const struct report_sweep *s,
 	report_load_unit(s->w, c.axis, sizeof c.axis, &c.unit);
 	for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK; fmt <<= 1)
 		if (o->formats & fmt)
-			st = render(&fig, &c, dir, fmt, o, err);
+			st = render(&fig, &c, dir, dir, fmt, o, err);
 	return st;
 }
 

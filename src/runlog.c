@@ -21,9 +21,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "slipwall/runlog.h"
+#include "slipwall/text.h"
 
 struct runlog {
 	char *path;
@@ -91,13 +94,64 @@ static enum sw_status flush_row(struct runlog *l, char *err)
 	return SW_OK;
 }
 
-struct runlog *runlog_open(const char *path, const struct wall *w, char *err)
+/* Is path the file f (the same device and inode, whatever the
+ * spelling of either path)? */
+static int same_file(const struct stat *f, const char *path)
 {
-	int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-	if (fd < 0) {
-		sw_fail(err, SW_EIO, "%s: cannot create: %s", path,
-			strerror(errno));
-		return NULL;
+	struct stat p;
+	return stat(path, &p) == 0 && p.st_dev == f->st_dev &&
+	       p.st_ino == f->st_ino;
+}
+
+static void runlog_free(struct runlog *l)
+{
+	free(l->buf);
+	free(l->path);
+	free(l);
+}
+
+enum sw_status runlog_create(struct runlog **out, const char *path,
+			     const struct wall *w, const char *const *keep,
+			     char *err)
+{
+	*out = NULL;
+	/* not O_TRUNC: the file is only cut once it is known to be none
+	 * of the inputs and not another run's */
+	int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
+	if (fd < 0)
+		return sw_fail(err, SW_EIO, "%s: cannot create: %s", path,
+			       strerror(errno));
+	struct stat st;
+	if (fstat(fd, &st) != 0) {
+		int e = errno;
+		close(fd);
+		return sw_fail(err, SW_EIO, "%s: %s", path, strerror(e));
+	}
+	for (int i = 0; keep && keep[i]; i++) {
+		if (same_file(&st, keep[i])) {
+			close(fd);
+			return sw_fail(err, SW_EINPUT, "%s: this is the input "
+				       "file %s: the samples would overwrite it",
+				       path, keep[i]);
+		}
+	}
+	if (S_ISREG(st.st_mode)) {
+		if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+			int e = errno;
+			close(fd);
+			if (e == EWOULDBLOCK)
+				return sw_fail(err, SW_EINPUT, "%s: another "
+					       "process is writing this samples "
+					       "file (it is locked)", path);
+			return sw_fail(err, SW_EIO, "%s: cannot lock: %s",
+				       path, strerror(e));
+		}
+		if (ftruncate(fd, 0) != 0) {
+			int e = errno;
+			close(fd);
+			return sw_fail(err, SW_EIO, "%s: cannot truncate: %s",
+				       path, strerror(e));
+		}
 	}
 	struct runlog *l = sw_xcalloc(1, sizeof *l);
 	l->path = sw_xstrdup(path);
@@ -110,14 +164,14 @@ struct runlog *runlog_open(const char *path, const struct wall *w, char *err)
 		put(l, tmp, (size_t)n);
 	}
 	put(l, "\n", 1);
-	if (flush_row(l, err) != SW_OK) {
+	enum sw_status rc = flush_row(l, err);
+	if (rc != SW_OK) {
 		close(fd);
-		free(l->buf);
-		free(l->path);
-		free(l);
-		return NULL;
+		runlog_free(l);
+		return rc;
 	}
-	return l;
+	*out = l;
+	return SW_OK;
 }
 
 enum sw_status runlog_write(struct runlog *l, const struct mc_item *it,
@@ -152,9 +206,7 @@ enum sw_status runlog_close(struct runlog *l, char *err)
 			     l->path);
 	if (close(l->fd) != 0 && st == SW_OK)
 		st = sw_fail(err, SW_EIO, "%s: %s", l->path, strerror(errno));
-	free(l->buf);
-	free(l->path);
-	free(l);
+	runlog_free(l);
 	return st;
 }
 
@@ -171,6 +223,16 @@ static const char *fixed_names[FIXED_COLS] = {
 	"sample", "status", "lambda_max", "lambda_min", "iterations",
 };
 
+/* Bounds on what a reader takes (docs/reliability.md): the header of
+ * the largest wall the loader accepts is a few MB; a row has five
+ * fields and two numbers per interface, each at most 24 characters
+ * ("-2.2250738585072014e-308"); the sample count is that of `run -n`;
+ * the positions held in memory are bounded too. */
+#define HEADER_MAX ((size_t)16 << 20)
+#define ROW_FIELD_MAX 32
+#define ROWS_MAX 1000000000L
+#define POSITIONS_MAX ((size_t)8 << 30)	/* bytes of positions held */
+
 /* A CSV file being read: the current line split in place into fields,
  * each with its 1-based column for messages. */
 struct reader {
@@ -178,7 +240,9 @@ struct reader {
 	FILE *f;
 	char *line;
 	size_t cap, len;	/* len: of the line before splitting */
+	size_t max;		/* longest line accepted */
 	long lineno;
+	int cut;		/* the last line had no end: dropped */
 	char **field;
 	int *col;
 	int nfield, capfield;
@@ -188,6 +252,7 @@ static int reader_open(struct reader *r, const char *path, char *err)
 {
 	memset(r, 0, sizeof *r);
 	r->path = path;
+	r->max = HEADER_MAX;
 	r->f = fopen(path, "r");
 	if (!r->f) {
 		sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
@@ -207,28 +272,40 @@ static void reader_close(struct reader *r)
 }
 
 /* The next line, split at commas.  Returns 1, 0 at the end of the file,
- * -1 (err filled) on a read error or a NUL byte. */
+ * -1 (err filled) on a read error, a NUL byte or a line longer than
+ * r->max.  A last line without its '\n' is a row that a kill cut while
+ * it was written (runlog_write writes whole rows): it is dropped and
+ * r->cut raised, for a warning. */
 static int reader_next(struct reader *r, char *err)
 {
-	errno = 0;
-	ssize_t n = getline(&r->line, &r->cap, r->f);
-	if (n < 0) {
-		if (ferror(r->f)) {
-			sw_fail(err, SW_EINPUT, "%s:%ld: cannot read: %s",
-				r->path, r->lineno + 1, strerror(errno));
-			return -1;
-		}
+	size_t n;
+	enum text_line got = text_getline(r->f, &r->line, &r->cap, r->max, &n);
+	switch (got) {
+	case TEXT_LINE_EOF:
 		return 0;
+	case TEXT_LINE_CUT:
+		r->cut = 1;
+		return 0;
+	case TEXT_LINE_ERROR:
+		sw_fail(err, SW_EINPUT, "%s:%ld: cannot read: %s", r->path,
+			r->lineno + 1, strerror(errno));
+		return -1;
+	case TEXT_LINE_NUL:
+		sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text file",
+			r->path, r->lineno + 1, n + 1);
+		return -1;
+	case TEXT_LINE_LONG:
+		sw_fail(err, SW_EINPUT, "%s:%ld:1: a line longer than %zu "
+			"bytes: not a samples file%s", r->path, r->lineno + 1,
+			r->max, r->lineno ? " of this header" : "");
+		return -1;
+	case TEXT_LINE_OK:
+		break;
 	}
 	r->lineno++;
-	if ((size_t)n != strlen(r->line)) {
-		sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text file",
-			r->path, r->lineno, strlen(r->line) + 1);
-		return -1;
-	}
-	while (n > 0 && (r->line[n - 1] == '\n' || r->line[n - 1] == '\r'))
+	while (n > 0 && r->line[n - 1] == '\r')
 		r->line[--n] = 0;
-	r->len = (size_t)n;
+	r->len = n;
 	r->nfield = 0;
 	char *p = r->line;
 	for (;;) {
@@ -251,6 +328,18 @@ static int reader_next(struct reader *r, char *err)
 	return 1;
 }
 
+/* The warning of a reader that dropped a cut last row; "" if none. */
+static void reader_warning(const struct reader *r, char *warn)
+{
+	if (!warn)
+		return;
+	warn[0] = 0;
+	if (r->cut)
+		snprintf(warn, SW_ERRLEN, "%s:%ld: warning: the last row is "
+			 "incomplete (no end of line: a run killed while "
+			 "writing it?); it is ignored", r->path, r->lineno + 1);
+}
+
 static enum sw_status at(const struct reader *r, int field, char *err,
 			 const char *what)
 {
@@ -267,8 +356,9 @@ static enum sw_status read_header(struct reader *r, int *m, char *err)
 	if (got < 0)
 		return SW_EINPUT;
 	if (got == 0)
-		return sw_fail(err, SW_EINPUT, "%s:1:1: empty file: not a "
-			       "samples file", r->path);
+		return sw_fail(err, SW_EINPUT, "%s:1:1: %s: not a samples "
+			       "file", r->path, r->cut ? "an incomplete header "
+			       "(no end of line)" : "empty file");
 	for (int k = 0; k < FIXED_COLS; k++) {
 		if (k >= r->nfield || strcmp(r->field[k], fixed_names[k])) {
 			char msg[128];
@@ -293,6 +383,7 @@ static enum sw_status read_header(struct reader *r, int *m, char *err)
 		}
 	}
 	*m = extra / 2;
+	r->max = 64 + ROW_FIELD_MAX * ((size_t)FIXED_COLS + (size_t)extra);
 	return SW_OK;
 }
 
@@ -343,8 +434,26 @@ static enum sw_status check_wall(const struct reader *r, int m,
 	return at(r, FIXED_COLS, err, msg);
 }
 
+/* The bound on rows: that of `run -n`, and for positions the memory
+ * they take. */
+static enum sw_status too_many(const struct reader *r, long n, size_t per,
+			       char *err)
+{
+	if (n >= ROWS_MAX)
+		return sw_fail(err, SW_EINPUT, "%s:%ld:1: more than %ld "
+			       "samples: too large for a samples file", r->path,
+			       r->lineno, ROWS_MAX);
+	if (per && ((size_t)n + 1) * per * sizeof(double) > POSITIONS_MAX)
+		return sw_fail(err, SW_EINPUT, "%s:%ld:1: the contact "
+			       "positions of more than %ld samples would take "
+			       "more than %zu GiB of memory", r->path, r->lineno,
+			       n, POSITIONS_MAX >> 30);
+	return SW_OK;
+}
+
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
-				     double **xi, long *rows, char *err)
+				     double **xi, long *rows, char *warn,
+				     char *err)
 {
 	struct reader r;
 	if (reader_open(&r, path, err))
@@ -364,7 +473,8 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 			break;
 		}
 		int status;
-		if ((st = check_row(&r, m, &status, err)) != SW_OK)
+		if ((st = check_row(&r, m, &status, err)) != SW_OK ||
+		    (st = too_many(&r, n, per, err)) != SW_OK)
 			break;
 		if (n == cap) {
 			cap = cap ? 2 * cap : 256;
@@ -390,6 +500,7 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 	if (st == SW_OK && n == 0)
 		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: no samples in the file",
 			     path, r.lineno + 1);
+	reader_warning(&r, warn);
 	reader_close(&r);
 	if (st != SW_OK) {
 		free(x);
@@ -401,7 +512,7 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 }
 
 enum sw_status runlog_read_loads(const char *path, const struct wall *w,
-				 double **lam, long *n, char *err)
+				 double **lam, long *n, char *warn, char *err)
 {
 	struct reader r;
 	if (reader_open(&r, path, err))
@@ -420,7 +531,8 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 			break;
 		}
 		int status;
-		if ((st = check_row(&r, m, &status, err)) != SW_OK)
+		if ((st = check_row(&r, m, &status, err)) != SW_OK ||
+		    (st = too_many(&r, r.lineno, 0, err)) != SW_OK)
 			break;
 		if (status != SAMPLE_ACCEPTED)
 			continue;
@@ -436,6 +548,7 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 		}
 		x[k++] = v;
 	}
+	reader_warning(&r, warn);
 	reader_close(&r);
 	if (st != SW_OK) {
 		free(x);

@@ -45,15 +45,7 @@ EOF
 # 100 courses of 0.20 x 0.10 m blocks, 20 m long, running bond: half
 # courses hold 101 blocks (a half, 99 full, a half), full courses 100:
 # 50 * 101 + 50 * 100 = 10,050 blocks
-cat >"$tmp/big.yaml" <<'EOF'
-name: 10,050 blocks
-material: {friction: 0.6, unit_weight: 19620, thickness: 0.10}
-layout: {block: [0.20, 0.10], courses: 100, length: 20.0, bond: running, first_course: half}
-supports:
-  - ground: {y: 0}
-loads:
-  - point: {at: [20.0, 4.95], direction: [1, 0], magnitude: 1}
-EOF
+cp tests/wall-10050.yaml "$tmp/big.yaml"
 measure "$tmp/big.json" "$tmp/big.err" "$bin" check "$tmp/big.yaml" --json
 counts=$(python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
 print(len(d["blocks"]), sum(1 for b in d["blocks"] if not b["fixed"]), len(d["interfaces"]))' "$tmp/big.json" 2>/dev/null)

@@ -26,6 +26,12 @@ tui_server "slipwall-test-$$" 100 30 || {
 	echo "1..0 # SKIP cannot start a tmux server"
 	exit 0
 }
+open_wall() {	# PATH: through the workbench's o prompt
+	T send-keys -t t:w o
+	wait_for w 'open wall file:' 5
+	T send-keys -t t:w -l "$1"
+	T send-keys -t t:w Enter
+}
 wall_pane() {	# the wall drawing: the left pane below its label line
 	# (strip from the last vertical bar: the separator of the right pane)
 	screen "$1" | sed -n '3,27p' | sed 's/\(.*\)[│|].*/\1/'
@@ -83,15 +89,23 @@ else
 fi
 
 # --- 3. a bad wall file via the open prompt ---
-T send-keys -t t:w o
-wait_for w 'open wall file:' 5
-T send-keys -t t:w -l "$root/tests/bad/friction-negative.yaml"
-T send-keys -t t:w Enter
+open_wall "$root/tests/bad/friction-negative.yaml"
 if wait_for w 'friction-negative\.yaml:[0-9]+:[0-9]+: ' 5 &&
    screen w | grep -q 'Demo wall'; then
 	ok "a bad wall file shows FILE:LINE:COLUMN and the wall stays"
 else
 	not_ok "a bad wall file shows FILE:LINE:COLUMN and the wall stays" "$(screen w)"
+fi
+
+# --- 3b. a FIFO via the open prompt: refused at once, the UI lives ---
+# (opening it for reading would block the UI thread until a writer came)
+mkfifo "$tmp/pipe.yaml"
+open_wall "$tmp/pipe.yaml"
+if wait_for w 'pipe\.yaml: not a regular file \(a FIFO\)' 5 &&
+   screen w | grep -q 'Demo wall'; then
+	ok "o on a FIFO: 'not a regular file (a FIFO)', the workbench goes on"
+else
+	not_ok "o on a FIFO must not freeze the workbench" "$(screen w)"
 fi
 
 # --- 4. raising the friction moves the median up, by the closed form ---
@@ -111,10 +125,7 @@ loads:
 contacts: {depth: 0.25}
 analysis: {samples: 1000000, seed: 1}
 EOF
-T send-keys -t t:w o
-wait_for w 'open wall file:' 5
-T send-keys -t t:w -l "$tmp/slider.yaml"
-T send-keys -t t:w Enter
+open_wall "$tmp/slider.yaml"
 if wait_for w 'Sliding slab' 5 && wait_samples w 20 20 && wait_for w ' p50  188\.4( |$)' 5; then
 	ok "o opens another wall; its median is mu W = 188.4 N"
 else

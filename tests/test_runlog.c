@@ -50,8 +50,9 @@ static void test_format(void)
 {
 	char err[SW_ERRLEN];
 	const char *p = path_of("fmt.csv");
-	struct runlog *l = runlog_open(p, &fake, err);
-	tap_ok(l != NULL, "runlog_open creates the file");
+	struct runlog *l = NULL;
+	runlog_create(&l, p, &fake, NULL, err);
+	tap_ok(l != NULL, "runlog_create creates the file");
 	if (!l)
 		return;
 	tap_ok(!strcmp(runlog_path(l), p), "runlog_path");
@@ -97,7 +98,8 @@ static void test_round_trip(void)
 {
 	char err[SW_ERRLEN];
 	const char *p = path_of("rt.csv");
-	struct runlog *l = runlog_open(p, &fake, err);
+	struct runlog *l = NULL;
+	runlog_create(&l, p, &fake, NULL, err);
 	struct mc_item it;
 	mc_item_init(&it, &fake);
 	/* values whose shortest decimal needs all 17 digits, the smallest
@@ -129,7 +131,7 @@ static void test_round_trip(void)
 
 	double *xi = NULL;
 	long n = 0;
-	enum sw_status st = runlog_read_positions(p, &fake, &xi, &n, err);
+	enum sw_status st = runlog_read_positions(p, &fake, &xi, &n, NULL, err);
 	tap_ok(st == SW_OK && n == rows, "positions read back: 50 rows");
 	tap_ok(st == SW_OK && !memcmp(xi, want, sizeof(double) * 2 * M *
 				      (size_t)rows),
@@ -138,7 +140,7 @@ static void test_round_trip(void)
 	free(want);
 
 	double *lam = NULL;
-	st = runlog_read_loads(p, &fake, &lam, &n, err);
+	st = runlog_read_loads(p, &fake, &lam, &n, NULL, err);
 	int ok = st == SW_OK && n == 40;
 	for (long i = 0, k = 0; ok && i < rows; i++)
 		if (i % 5)
@@ -157,8 +159,8 @@ static void refused(const char *name, const char *text, int loads,
 	spit(p, text);
 	double *x = NULL;
 	long n = -1;
-	enum sw_status st = loads ? runlog_read_loads(p, &fake, &x, &n, err) :
-			    runlog_read_positions(p, &fake, &x, &n, err);
+	enum sw_status st = loads ? runlog_read_loads(p, &fake, &x, &n, NULL, err) :
+			    runlog_read_positions(p, &fake, &x, &n, NULL, err);
 	char prefix[300];
 	snprintf(prefix, sizeof prefix, "%s:%s: ", p, where);
 	int ok = st == SW_EINPUT && !strncmp(err, prefix, strlen(prefix)) &&
@@ -222,19 +224,114 @@ static void test_errors(void)
 	double *x = NULL;
 	long n;
 	enum sw_status st = runlog_read_positions(path_of("missing.csv"),
-						  &fake, &x, &n, err);
+						  &fake, &x, &n, NULL, err);
 	tap_ok(st == SW_EINPUT && strstr(err, "missing.csv: cannot open"),
 	       "a missing file is refused with its name");
 
-	/* CRLF line ends and a last line without a newline are read */
+	/* CRLF line ends are read; a last line without its newline is a
+	 * row cut by a kill: dropped, with a warning */
 	const char *p = path_of("crlf.csv");
 	spit(p, "sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1,"
 	     "xa_2,xb_2\r\n0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\r\n"
 	     "1,accepted,1,0.25,3,0,1,0.5,0.5");
-	st = runlog_read_positions(p, &fake, &x, &n, err);
-	tap_ok(st == SW_OK && n == 2 && x[0] == 0.1 && x[7] == 0.5,
-	       "CRLF and a missing final newline are accepted");
+	char warn[SW_ERRLEN] = "x";
+	st = runlog_read_positions(p, &fake, &x, &n, warn, err);
+	tap_ok(st == SW_OK && n == 1 && x[0] == 0.1 && x[3] == 0.8,
+	       "CRLF accepted; a last row without its newline dropped");
+	tap_ok(strstr(warn, "crlf.csv:3: warning: the last row is "
+		      "incomplete") != NULL, "... with a warning at its line");
 	free(x);
+	double *lam = NULL;
+	st = runlog_read_loads(p, &fake, &lam, &n, warn, err);
+	tap_ok(st == SW_OK && n == 1 && lam[0] == 0.5 &&
+	       strstr(warn, "crlf.csv:3: warning"),
+	       "the loads reader drops it too, with the warning");
+	free(lam);
+	/* a whole file: no warning */
+	spit(p, HDR "0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\n");
+	st = runlog_read_loads(p, &fake, &lam, &n, warn, err);
+	tap_ok(st == SW_OK && n == 1 && warn[0] == 0, "no warning when whole");
+	free(lam);
+	/* a cut row cut in the middle of a number: still only dropped */
+	spit(p, HDR "0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\n1,accepted,1,0.2");
+	st = runlog_read_positions(p, &fake, &x, &n, warn, err);
+	tap_ok(st == SW_OK && n == 1 && warn[0], "a row cut mid-number "
+	       "dropped with a warning");
+	free(x);
+}
+
+/* Lines have a bound: a file without line ends (/dev/zero) is refused
+ * at once instead of filling the memory. */
+static void test_bounds(void)
+{
+	char err[SW_ERRLEN];
+	double *x = NULL;
+	long n = -1;
+	enum sw_status st = runlog_read_positions("/dev/zero", &fake, &x, &n,
+						  NULL, err);
+	tap_ok(st == SW_EINPUT && strstr(err, "/dev/zero:1:1: a NUL byte"),
+	       "/dev/zero refused at once: %s", err);
+	const char *p = path_of("longrow.csv");
+	FILE *f = fopen(p, "w");
+	fputs(HDR "0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\n", f);
+	for (int i = 0; i < 100000; i++)
+		fputs("0.1", f);
+	fputs("\n", f);
+	fclose(f);
+	st = runlog_read_loads(p, &fake, &x, &n, NULL, err);
+	tap_ok(st == SW_EINPUT && strstr(err, "longrow.csv:3:1: a line longer "
+					 "than"), "a row longer than its header "
+	       "allows is refused: %s", err);
+}
+
+/* An output never destroys an input, however its path is spelled, and
+ * one samples file has one writer. */
+static void test_guards(void)
+{
+	char err[SW_ERRLEN], other[4200], cwd[4096];
+	const char *p = path_of("input.csv");
+	spit(p, HDR "0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\n");
+	const char *keep[] = {"nothing-here.yaml", p, NULL};
+	struct runlog *l = NULL;
+	/* the same file through "dir/./input.csv" */
+	snprintf(other, sizeof other, "%s/./input.csv", dir);
+	enum sw_status st = runlog_create(&l, other, &fake, keep, err);
+	tap_ok(st == SW_EINPUT && !l && strstr(err, "the samples would "
+					       "overwrite it"),
+	       "another spelling of an input is refused: %s", err);
+	/* through a hard link */
+	snprintf(other, sizeof other, "%s/link.csv", dir);
+	unlink(other);
+	if (link(p, other) == 0) {
+		st = runlog_create(&l, other, &fake, keep, err);
+		tap_ok(st == SW_EINPUT && !l, "a hard link to an input is "
+		       "refused");
+	} else {
+		tap_ok(1, "# SKIP no hard links here");
+	}
+	const char *got = slurp(p);
+	tap_ok(got && !strncmp(got, HDR "0,accepted", strlen(HDR) + 10),
+	       "the input is untouched");
+	/* relative spelling from the directory */
+	if (getcwd(cwd, sizeof cwd) && chdir(dir) == 0) {
+		st = runlog_create(&l, "input.csv", &fake, keep, err);
+		tap_ok(st == SW_EINPUT && !l, "a relative spelling is refused");
+		if (chdir(cwd) != 0)
+			tap_ok(0, "chdir back");
+	}
+	/* two writers */
+	const char *q = path_of("shared.csv");
+	struct runlog *a = NULL, *b = NULL;
+	st = runlog_create(&a, q, &fake, keep, err);
+	tap_ok(st == SW_OK && a, "the first writer opens it");
+	st = runlog_create(&b, q, &fake, keep, err);
+	tap_ok(st == SW_EINPUT && !b && strstr(err, "another process is "
+					       "writing"),
+	       "the second is refused while the first holds it: %s", err);
+	runlog_close(a, err);
+	st = runlog_create(&b, q, &fake, keep, err);
+	tap_ok(st == SW_OK && b, "and accepted once the first is closed");
+	runlog_close(b, err);
 }
 
 int main(void)
@@ -247,6 +344,8 @@ int main(void)
 	}
 	test_format();
 	test_round_trip();
+	test_bounds();
+	test_guards();
 	test_errors();
 	char cmd[300];
 	snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);

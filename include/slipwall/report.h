@@ -38,6 +38,8 @@
 #ifndef SLIPWALL_REPORT_H
 #define SLIPWALL_REPORT_H
 
+#include <signal.h>
+
 #include "slipwall/sample.h"
 #include "slipwall/status.h"
 #include "slipwall/tally.h"
@@ -93,13 +95,26 @@ struct report_opts {
 	int formats;		/* REPORT_* bits (default all) */
 	int max_mechanisms;	/* panels of Fig. 6, 1..6 (default 6) */
 	double png_scale;	/* pixels per point (default 2.5) */
+	/* NULL, or a flag a signal handler raises: report_write stops
+	 * between two files, removes what it wrote and returns SW_EINTR */
+	const volatile sig_atomic_t *cancel;
 };
 void report_opts_default(struct report_opts *o);
 
 /* Write the figures and report.md into dir (created if missing; files
  * in it are overwritten).  o may be NULL for the defaults.  Returns
  * SW_OK; SW_EINPUT for unusable input (no loads, NaN loads), SW_EIO with
- * the file and the reason when something cannot be written. */
+ * the file and the reason when something cannot be written, SW_EINTR
+ * when o->cancel was raised.
+ *
+ * Complete or absent: everything is written into a new directory beside
+ * dir (".NAME.XXXXXX" in its parent), which becomes dir by one rename
+ * when dir does not exist; when it does, the files are renamed into it
+ * one by one (each rename is atomic, and the figures of an earlier
+ * report that this one does not draw are removed), so a reader sees the
+ * old report, or the new one, never a report.md beside figures of
+ * another run.  On a failure or a cancel the new directory is removed;
+ * a SIGKILL can leave it behind (hidden), never a half-written dir. */
 enum sw_status report_write(const struct report_input *in, const char *dir,
 			    const struct report_opts *o, char *err);
 

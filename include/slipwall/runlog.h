@@ -9,8 +9,19 @@
  * positions in the interface order of `check --json`.
  *
  * Nothing is lost: every row is written with a single write(2) of the
- * whole line, so a process killed at any moment leaves only complete
- * rows (a row is never split between two writes).
+ * whole line.  A kill (SIGKILL) can still stop the kernel in the middle
+ * of a write larger than a page, leaving the beginning of the last row
+ * without its '\n': every reader below recognises that row, drops it
+ * and says so in a warning.  Every other row is whole.
+ *
+ * Outputs never destroy inputs: runlog_create refuses a path that is
+ * one of the inputs (the same file however it is spelled) and locks
+ * the file (flock), so that a second process writing the same samples
+ * file is refused instead of mixing its rows with the first one's.
+ *
+ * Readers are bounded: a line longer than its header allows (or than
+ * 16 MiB for the header), more than 10^9 rows, or contact positions of
+ * more than 8 GiB are refused with a message, as is a NUL byte.
  */
 #ifndef SLIPWALL_RUNLOG_H
 #define SLIPWALL_RUNLOG_H
@@ -20,8 +31,15 @@
 
 struct runlog;
 
-/* Create (truncate) path and write the header.  NULL + err on failure. */
-struct runlog *runlog_open(const char *path, const struct wall *w, char *err);
+/* Create path, or truncate it, and write the header; *l gets the log.
+ * keep (NULL or NULL-terminated) names the input files of the run: a
+ * path that is one of them, however spelled (device and inode), is
+ * refused with SW_EINPUT, and so is a regular file that another process
+ * holds open through runlog_create (an exclusive flock, held until
+ * runlog_close).  SW_EIO when the file cannot be created. */
+enum sw_status runlog_create(struct runlog **l, const char *path,
+			     const struct wall *w, const char *const *keep,
+			     char *err);
 /* Append one sample's row.  SW_EIO + err on a write error (disk full). */
 enum sw_status runlog_write(struct runlog *l, const struct mc_item *it,
 			    char *err);
@@ -32,13 +50,16 @@ const char *runlog_path(const struct runlog *l);
 /* Read the contact positions of a samples file (for --positions):
  * *rows rows of 2 * w->nifaces numbers, malloc'd into *xi.  Errors are
  * "FILE:LINE:COLUMN: message", SW_EINPUT; a file whose header has
- * another number of interfaces than w is refused (another wall's). */
+ * another number of interfaces than w is refused (another wall's).  warn
+ * (SW_ERRLEN bytes, or NULL) gets "" or the warning of a cut last row,
+ * which was dropped. */
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
-				     double **xi, long *rows, char *err);
+				     double **xi, long *rows, char *warn,
+				     char *err);
 /* Read the accepted lambda_min column of a samples file of wall w (for
  * report and compare); refused like runlog_read_positions when its
- * header does not have w's interfaces. */
+ * header does not have w's interfaces; warn as above. */
 enum sw_status runlog_read_loads(const char *path, const struct wall *w,
-				 double **lam, long *n, char *err);
+				 double **lam, long *n, char *warn, char *err);
 
 #endif

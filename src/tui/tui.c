@@ -36,6 +36,7 @@
 #include <curses.h>
 
 #include "cli.h"
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "tui/tui.h"
 
@@ -93,6 +94,14 @@ void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii)
 
 void tui_text(int y, int x, int w, const char *s)
 {
+	/* names and paths come from files: a control character would move
+	 * the cursor or reach the terminal (curses passes ESC through) */
+	if (!text_is_clean(s)) {
+		char *c = text_clean(s);
+		tui_text(y, x, w, c);
+		free(c);
+		return;
+	}
 	int cols = 0;
 	size_t n = 0;
 	while (s[n]) {

@@ -216,6 +216,20 @@ static void tui_file_open_path(struct tui *t, const char *path)
 		tui_message(t, 1, "open: no path given");
 		return;
 	}
+	/* stat first: opening a FIFO or a terminal for reading would
+	 * block the UI thread (a FIFO until a writer comes) */
+	struct stat st;
+	if (stat(path, &st) != 0) {
+		tui_message(t, 1, "open: %s: %s", path, strerror(errno));
+		return;
+	}
+	if (!S_ISREG(st.st_mode)) {
+		tui_message(t, 1, "open: %s: not a regular file (%s)", path,
+			    S_ISDIR(st.st_mode) ? "a directory" :
+			    S_ISFIFO(st.st_mode) ? "a FIFO" :
+			    S_ISCHR(st.st_mode) ? "a device" : "not a file");
+		return;
+	}
 	if (wallfile_load(path, &nw, err) != SW_OK) {
 		tui_message(t, 1, "%s", err);
 		return;
@@ -244,7 +258,7 @@ static void tui_file_report_to(struct tui *t, const char *dir)
 		return;
 	}
 	if (!t->run.csv[0] ||
-	    runlog_read_loads(t->run.csv, t->w, &lam, &n, err) != SW_OK) {
+	    runlog_read_loads(t->run.csv, t->w, &lam, &n, NULL, err) != SW_OK) {
 		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
 		return;
 	}

@@ -144,8 +144,8 @@ void tui_run_start(struct tui *t)
 	snprintf(r->what, sizeof r->what, "%s", t->next_what[0] ? t->next_what : "reset");
 	t->next_what[0] = 0;
 	if (tui_file_csv_path(t, r->csv, sizeof r->csv, err) == 0) {
-		r->log = runlog_open(r->csv, w, err);
-		if (!r->log)
+		const char *keep[] = {w->path, NULL};
+		if (runlog_create(&r->log, r->csv, w, keep, err) != SW_OK)
 			tui_message(t, 1, "%s", err);
 	} else {
 		tui_message(t, 1, "%s", err);
