@@ -279,20 +279,7 @@ static void properties(void)
 	struct sample_opts o;
 	sample_opts_default(&o);
 	for (int c = 0; c < 200; c++) {
-		double bw = 0.1 + 0.4 * gsl_rng_uniform(g);
-		double bh = bw * (0.2 + 0.8 * gsl_rng_uniform(g));
-		int courses = 1 + (int)gsl_rng_uniform_int(g, 4);
-		int nb = 2 + (int)gsl_rng_uniform_int(g, 3);
-		double mu = 0.3 + 0.6 * gsl_rng_uniform(g);
-		int running = (int)gsl_rng_uniform_int(g, 2);
-		struct wall *w = tw_layout(bw, bh, courses, nb * bw, running,
-					   1, mu);
-		if (gsl_rng_uniform(g) < 0.5)
-			tw_body_load(w);
-		else
-			tw_point_load(w, 0, courses * bh * (0.05 + 0.9 * gsl_rng_uniform(g)), 1, 0);
-		w->depth = 0.5 * gsl_rng_uniform(g);
-		tw_finish(w);
+		struct wall *w = tw_random(g);
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r, s;
 		sample_result_init(&r, w);

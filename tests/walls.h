@@ -5,6 +5,7 @@
 #ifndef SLIPWALL_TEST_WALLS_H
 #define SLIPWALL_TEST_WALLS_H
 
+#include <gsl/gsl_rng.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -72,6 +73,27 @@ static inline struct wall *tw_layout(double bw, double bh, int courses,
 		fprintf(stderr, "test layout: %s\n", err);
 		abort();
 	}
+	return w;
+}
+
+/* A random small wall drawn from g (finished): 1-4 courses of 2-4
+ * blocks, running or stack bond, friction 0.3-0.9, a body load or a
+ * point load on the left face, depth 0-0.5. */
+static inline struct wall *tw_random(gsl_rng *g)
+{
+	double bw = 0.1 + 0.4 * gsl_rng_uniform(g);
+	double bh = bw * (0.2 + 0.8 * gsl_rng_uniform(g));
+	int courses = 1 + (int)gsl_rng_uniform_int(g, 4);
+	int nb = 2 + (int)gsl_rng_uniform_int(g, 3);
+	double mu = 0.3 + 0.6 * gsl_rng_uniform(g);
+	int running = (int)gsl_rng_uniform_int(g, 2);
+	struct wall *w = tw_layout(bw, bh, courses, nb * bw, running, 1, mu);
+	if (gsl_rng_uniform(g) < 0.5)
+		tw_body_load(w);
+	else
+		tw_point_load(w, 0, courses * bh * (0.05 + 0.9 * gsl_rng_uniform(g)), 1, 0);
+	w->depth = 0.5 * gsl_rng_uniform(g);
+	tw_finish(w);
 	return w;
 }
 
