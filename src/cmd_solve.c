@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cli.h"
 #include "slipwall/json.h"
@@ -184,8 +185,7 @@ static void print_text(const struct wall *w, const struct solve_result *r)
  * free blocks (report.c runs global up to the same size) are proven
  * within seconds; the 36-block demo wall and Ferris & Tin-Loi wall 1
  * (33 blocks) find no solution in 60 s.  So say it before the wait, not
- * after it.  (The best bound while it works needs a progress callback
- * from solve.c, which this file cannot reach.) */
+ * after it; and the best bound while it works (solve_progress). */
 #define GLOBAL_PROVEN_BLOCKS 12
 
 static void global_forecast(const char *path, const struct wall *w,
@@ -201,6 +201,40 @@ static void global_forecast(const char *path, const struct wall *w,
 		"time limit, then prints the best load it found, not proven, "
 		"or says it found none.\n", path, w->nfree, w->nifaces,
 		4 * w->nifaces, tlim, GLOBAL_PROVEN_BLOCKS);
+	fflush(stderr);
+}
+
+/* Progress on stderr (solve_opts.progress).  On a terminal one line,
+ * rewritten in place about once a second: what is being solved, the
+ * elapsed time and, in global's mixed-integer program, the incumbent and
+ * the best bound.  Elsewhere (a log, a pipe) only the bound lines, at
+ * most one a second: a long simplex says nothing there. */
+struct solve_progress {
+	const char *path, *method;
+	int tty;
+	int shown;		/* a line is on the terminal */
+	double last;		/* seconds of the last line */
+};
+
+static void solve_progress(void *ctx, const char *what, double seconds,
+			   double incumbent, double bound)
+{
+	struct solve_progress *p = ctx;
+	int mip = isfinite(bound);
+	if ((!p->tty && !mip) || (p->shown && seconds - p->last < 1))
+		return;
+	p->last = seconds;
+	p->shown = 1;
+	fprintf(stderr, "%sslipwall solve: %s: %s: solving %s, %.0f s",
+		p->tty ? "\r" : "", p->method, p->path, what, seconds);
+	if (mip) {
+		fprintf(stderr, ", best bound %.6g", bound);
+		if (isfinite(incumbent))
+			fprintf(stderr, ", incumbent %.6g", incumbent);
+		else
+			fprintf(stderr, ", no incumbent yet");
+	}
+	fprintf(stderr, p->tty ? "\033[K" : "\n");
 	fflush(stderr);
 }
 
@@ -222,6 +256,8 @@ static void usage(FILE *f)
 		"            program's bound and whether optimality was proven; says\n"
 		"            first when the wall is larger than it can prove within\n"
 		"            the time limit\n"
+		"On a terminal, stderr shows what is being solved and the elapsed\n"
+		"time; global prints its best bound there about once a second.\n"
 		"Prints the load factor (and the load in N for a point load) and the\n"
 		"mechanism.  Exit status 1 when there is no finite collapse load.\n");
 }
@@ -280,9 +316,16 @@ int cmd_solve(int argc, char **argv)
 	struct solve_opts o;
 	solve_opts_default(&o, (enum solve_method)method);
 	o.time_limit = tlim;
+	struct solve_progress prog = {
+		argv[optind], solve_method_name(o.method), isatty(2), 0, 0,
+	};
+	o.progress = solve_progress;
+	o.progress_ctx = &prog;
 	struct solve_result r;
 	char err[SW_ERRLEN];
 	enum sw_status st = solve_run(w, &o, &r, err);
+	if (prog.tty && prog.shown)
+		fputs("\r\033[K", stderr);	/* the line goes */
 	if (st != SW_OK) {
 		cli_errorf("%s: %s", argv[optind], err);
 		rc = sw_status_exit(st);

@@ -40,7 +40,9 @@
  * at the thread's stop flag and, if it is set, leaves the solve by the
  * same longjmp and recovery as an error.  Only whether a sample is
  * abandoned depends on the clock, never a value: an interrupted sample
- * is discarded, not reported (lp_thread_interrupted).
+ * is discarded, not reported (lp_thread_interrupted).  The same
+ * half-second lines call the thread's progress hook (lp_thread_progress),
+ * and so does the branch-and-cut callback, about once a second.
  */
 #include <glpk.h>
 #include <limits.h>
@@ -105,6 +107,17 @@ static double now(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 static _Thread_local double tl_gap;
+static _Thread_local lp_progress_fn tl_progress;	/* lp_thread_progress */
+static _Thread_local void *tl_progress_ctx;
+static _Thread_local double tl_progress_last;
+
+/* The thread's progress hook, with the branch-and-cut's incumbent and
+ * best bound (NAN: none, or a simplex) */
+static void progress(double incumbent, double bound)
+{
+	if (tl_progress)
+		tl_progress(tl_progress_ctx, incumbent, bound);
+}
 
 /* Branch-and-cut callback: remember the gap between the incumbent and
  * the best bound whenever either changes. */
@@ -114,6 +127,14 @@ static void mip_callback(glp_tree *T, void *info)
 	int r = glp_ios_reason(T);
 	if (r == GLP_IBINGO || r == GLP_ISELECT || r == GLP_IBRANCH)
 		tl_gap = glp_ios_mip_gap(T);
+	/* and, about once a second, the progress hook */
+	if (!tl_progress || r != GLP_ISELECT || now() - tl_progress_last < 1)
+		return;
+	tl_progress_last = now();
+	glp_prob *P = glp_ios_get_prob(T);
+	int best = glp_ios_best_node(T);
+	progress(glp_mip_status(P) == GLP_FEAS ? glp_mip_obj_val(P) : NAN,
+		 best ? glp_ios_node_bound(T, best) : NAN);
 }
 
 /* GLPK's text goes here instead of the terminal; the last line is kept. */
@@ -122,6 +143,8 @@ static int term_hook(void *info, const char *s)
 	(void)info;
 	if (tl_in_simplex && stop_requested())
 		longjmp(tl_jump, 2);	/* see "Interruption" above */
+	if (tl_in_simplex)
+		progress(NAN, NAN);	/* every half second of a long solve */
 	size_t n = strlen(s);
 	if (n >= sizeof tl_message)
 		n = sizeof tl_message - 1;
@@ -692,6 +715,12 @@ void lp_thread_stop_flag(const atomic_int *flag)
 	tl_interrupted = 0;
 }
 
+void lp_thread_progress(lp_progress_fn fn, void *ctx)
+{
+	tl_progress = fn;
+	tl_progress_ctx = ctx;
+}
+
 int lp_thread_interrupted(void)
 {
 	return tl_interrupted;
@@ -745,6 +774,7 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	ip.clq_cuts = GLP_ON;
 	ip.cb_func = mip_callback;
 	tl_gap = NAN;
+	tl_progress_last = now();
 	rc = glp_intopt(p->P, &ip);
 	tl_in_call = 0;
 	int st = glp_mip_status(p->P);

@@ -212,11 +212,25 @@ static double max_total_normal(const struct statics *st, double lam_hi)
 	return M;
 }
 
+/* lp_thread_progress's hook: the caller's, in seconds and user's units */
+struct progress {
+	const struct solve_opts *o;
+	struct timespec t0;
+	double scale;		/* the program's units to the user's */
+	const char *what;	/* the step being solved */
+};
+static void progress(void *ctx, double incumbent, double bound)
+{
+	struct progress *p = ctx;
+	p->o->progress(p->o->progress_ctx, p->what, elapsed(&p->t0),
+		       incumbent * p->scale, bound * p->scale);
+}
+
 static enum sw_status solve_global(const struct wall *w,
 				   const struct solve_opts *o,
 				   struct sample_ws *ws, const double *xi,
 				   double lam_std, struct solve_result *r,
-				   char *err)
+				   char *err, struct progress *prog)
 {
 	const struct statics *st = sample_statics(ws);
 	int m = w->nifaces, R = st->nrows;
@@ -369,7 +383,11 @@ static enum sw_status solve_global(const struct wall *w,
 	lp_set_maximize(P, 0);
 
 	double gap = NAN;
+	prog->scale = st->S;	/* the program's objective is lambda */
+	prog->what = "the mixed-integer program";
 	enum lp_mip_status ms = lp_solve_mip(P, o->time_limit, &gap);
+	prog->scale = 1;
+	prog->what = "the exact LPs of its pattern";
 	enum sw_status ret = SW_OK;
 	if (ms == LP_MIP_OPTIMAL || ms == LP_MIP_FEASIBLE) {
 		/* the pattern, checked by exact LPs (see the top) */
@@ -439,6 +457,9 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 {
 	struct timespec t0;
 	clock_gettime(CLOCK_MONOTONIC, &t0);
+	struct progress prog = { o, t0, 1, "the standard solution (LP-max)" };
+	if (o->progress)
+		lp_thread_progress(progress, &prog);
 	memset(r, 0, sizeof *r);
 	r->method = o->method;
 	r->lambda = r->lambda_onset = r->gap = r->lower_bound = NAN;
@@ -464,6 +485,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		r->has_mechanism = 1;
 		break;
 	case SOLVE_GILBERT:
+		prog.what = "the sequential LP and its onset check";
 		sample_run(ws, xi, &o->sample, &r->mech);
 		r->status = r->mech.status;
 		r->iterations = r->mech.iterations;
@@ -477,10 +499,11 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			ret = failure(r->status, r->mech.lambda_lpmax, err);
 		break;
 	case SOLVE_GLOBAL:
-		ret = solve_global(w, o, ws, xi, lam_std, r, err);
+		ret = solve_global(w, o, ws, xi, lam_std, r, err, &prog);
 		break;
 	}
 out:
+	lp_thread_progress(NULL, NULL);
 	r->seconds = elapsed(&t0);
 	free(xi);
 	sample_ws_free(ws);

@@ -113,6 +113,13 @@ void lp_thread_done(void);
  * second (src/lp.c, "Interruption").  NULL: never.  Also clears the
  * thread's interrupted mark. */
 void lp_thread_stop_flag(const atomic_int *flag);
+/* Progress: fn(ctx, incumbent, bound) is called on this thread every
+ * half second during a long simplex of lp_solve (both NAN), and about
+ * once a second during lp_solve_mip (the incumbent's objective, NAN
+ * before one is found, and the best bound of the open nodes).  fn must
+ * not call this module.  NULL: never. */
+typedef void (*lp_progress_fn)(void *ctx, double incumbent, double bound);
+void lp_thread_progress(lp_progress_fn fn, void *ctx);
 /* Did an lp_solve of this thread return LP_STOPPED since the flag was
  * set?  The sample it belonged to is incomplete: discard it. */
 int lp_thread_interrupted(void);

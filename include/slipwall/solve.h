@@ -28,6 +28,14 @@ struct solve_opts {
 	enum solve_method method;
 	double time_limit;	/* global: seconds (default 60) */
 	struct sample_opts sample;
+	/* Progress, on the calling thread: about once a second during a
+	 * long LP, and during global's mixed-integer program with its
+	 * incumbent and best bound (user's units; NAN when there is none).
+	 * what: the step being solved ("the standard solution (LP-max)",
+	 * ...); seconds since solve_run began.  NULL: none. */
+	void (*progress)(void *ctx, const char *what, double seconds,
+			 double incumbent, double bound);
+	void *progress_ctx;
 };
 void solve_opts_default(struct solve_opts *o, enum solve_method m);
 /* "standard" -> SOLVE_STANDARD; -1 for an unknown name. */

@@ -4,7 +4,9 @@
  * are slow, with the samples in progress and the time left), the
  * percentiles of the accepted λ_min and their unit, the characteristic
  * value (5 % percentile) with its distribution-free 99 % interval, the
- * single-solution values, and the KS test against the wall's
+ * probability of collapse at the wall's design load (analysis.design_load:
+ * the share of accepted samples with λ_min at most it, with its exact
+ * binomial 99 % interval, as `run` prints it), the single-solution values, and the KS test against the wall's
  * experimental loads.
  *
  * Every line fits the pane: a line of numbers that does not fit with
@@ -22,6 +24,7 @@
 
 #include <curses.h>
 
+#include "collapse.h"
 #include "slipwall/stats.h"
 #include "tui/tui.h"
 
@@ -169,6 +172,23 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		tui_stats_nums(&p, "  99 %% interval [%s, %s]", 0, 2, v);
 	} else {
 		tui_stats_text(&p, "  99 % interval: needs 90 accepted");
+	}
+	if (wall->design_load > 0) {
+		struct collapse c;
+		collapse_at(ta->lam.x, ta->lam.n, wall->design_load,
+			    "design_load", &c);
+		/* k and n exactly: they are counts */
+		snprintf(line, sizeof line, "P(%s <= design %%s) %%s, %zu of %zu",
+			 lam, c.k, c.n);
+		v[0] = c.load;
+		v[1] = c.p;
+		tui_stats_nums(&p, line, 0, 2, v);
+		if (c.n > 0) {
+			v[0] = c.lo;
+			v[1] = c.hi;
+			tui_stats_nums(&p, "  99 %% interval [%s, %s] (binomial)",
+				       0, 2, v);
+		}
 	}
 
 	char sv[32], gv[32];
