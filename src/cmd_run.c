@@ -46,6 +46,7 @@
 #include "collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
+#include "slipwall/lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sample.h"
@@ -860,6 +861,13 @@ static int sample(struct run_setup *s, const struct source *src,
 		cli_errorf("slipwall run: %s", serr);
 		status = 1;
 	}
+	long oom = lp_memory_errors();
+	if (oom > 0)	/* each made a sample "numerical" (src/lp.c) */
+		cli_errorf("slipwall run: the LP solver ran out of memory %ld "
+			"time%s (GLPK's limit: %d MB per thread): the "
+			"samples it was solving were rejected as numerical; free "
+			"memory or use fewer --threads", oom, oom == 1 ? "" : "s",
+			lp_mem_limit());
 	if (t.accepted == 0 && t.samples > 0) {
 		cli_errorf("slipwall run: no sample was accepted: the "
 			"analysis failed (see the rejections above)");
