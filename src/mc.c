@@ -45,12 +45,17 @@
 #include "slipwall/mc.h"
 
 /* Estimate: seconds of one sample at 100 interfaces, and the power of
- * the interfaces.  Measured (one thread, loaded 2-core machine, workspace
- * set-up included): demo (66 interfaces) 0.14 s, Ferris & Tin-Loi
- * wall 1 (83) 0.12 s, wall 2 (141) 0.23 s, walls/large.yaml (2,956)
- * LARGE_MEASURED. */
-#define EST_SECONDS 0.15
-#define EST_POWER 2.0
+ * the interfaces.  Measured on 23 November 2026 (`run -n 20`, or -n 1
+ * for the large wall, one thread, elapsed time per sample with the
+ * workspace's set-up, a 2-core machine at a load average of about 10):
+ * demo (66 interfaces) 0.14 s, Ferris & Tin-Loi wall 1 (83) 0.12 s,
+ * wall 2 (141) 0.23 s, walls/large.yaml (2,956) 382 s.  The line through
+ * wall 2 and the large wall in log-log: power 2.44, 0.099 s at 100.
+ * The small walls are above it (fixed costs), where nothing is said
+ * anyway (under a second); an idle machine is two or three times
+ * faster. */
+#define EST_SECONDS 0.1
+#define EST_POWER 2.4
 
 struct slot {
 	int full;

@@ -342,8 +342,8 @@ static void test_streams(void)
 
 /* The a-priori estimate of a sample's time (mc_sample_seconds): it
  * grows with the interfaces, says "under a second" of the demo wall and
- * minutes of walls/large.yaml (measured: 0.14 s and LARGE_MEASURED, on
- * one loaded core; the range here is a factor of several either side),
+ * minutes of walls/large.yaml (measured: 0.14 s and 382 s, on one
+ * loaded core; the range here is a factor of several either side),
  * and mc_about writes it in the unit that fits. */
 static void test_estimate(const struct wall *demo)
 {
