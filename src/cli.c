@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "slipwall/lp.h"
 #include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 
@@ -250,6 +251,10 @@ int cli_threads(const char *cmd, const struct wall *w, int requested,
 		t = k;
 	}
 	*threads = t;
+	/* and GLPK's allocator, on each of them, that half shared out: it
+	 * runs out inside its own accounting (src/lp.c, "Out of memory"),
+	 * which fails a sample, before the kernel kills the process */
+	lp_mem_limit_set(0.5 * mem / (double)t / 1048576.0);
 	return 0;
 }
 

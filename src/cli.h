@@ -88,7 +88,9 @@ double cli_worker_bytes(const struct wall *w);
  * at cli_worker_bytes each (the machine's memory, or the address-space
  * limit when lower).  A default is cut down to fit; an explicit request
  * that does not fit is a usage error: returns 2 after printing it, with
- * the count that fits.  Else 0. */
+ * the count that fits.  Else 0.  It also sets the limit of GLPK's
+ * allocator on each worker (lp_mem_limit_set): the half of the memory
+ * above shared out between the *threads workers. */
 int cli_threads(const char *cmd, const struct wall *w, int requested,
 		int def, long n, int *threads);
 

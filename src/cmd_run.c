@@ -46,6 +46,7 @@
 #include "collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
+#include "slipwall/lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sample.h"
@@ -352,7 +353,7 @@ struct progress_ci {
 };
 
 static void progress(const struct tally *t, struct progress_ci *pc, long n,
-		     double elapsed)
+		     double elapsed, double est)
 {
 	double rate = elapsed > 0 ? (double)t->samples / elapsed : 0;
 	char left[32], p05s[96] = "";
@@ -372,10 +373,18 @@ static void progress(const struct tally *t, struct progress_ci *pc, long n,
 	/* slow samples (a large wall): seconds per sample, and before the
 	 * first one how long it has been running */
 	char speed[64];
-	if (t->samples == 0 && elapsed >= 1) {
+	if (t->samples == 0 && (elapsed >= 1 || est >= 1)) {
+		/* est: mc_sample_seconds, a rough a-priori time, said from
+		 * the first line on a wall whose samples will be slow */
+		char about[64] = "", a[32];
+		if (est >= 1) {
+			mc_about(a, sizeof a, est);
+			snprintf(about, sizeof about, "  (estimate: %s a "
+				 "sample)", a);
+		}
 		fmt_duration(speed, sizeof speed, elapsed);
 		fprintf(stderr, "\r0/%ld  first samples running for %s, "
-			"left > %s\033[K", n, speed, speed);
+			"left > %s%s\033[K", n, speed, speed, about);
 		fflush(stderr);
 		return;
 	}
@@ -779,7 +788,7 @@ static int sample(struct run_setup *s, const struct source *src,
 	tally_init(&t, s->w);
 	mc_item_init(&it, s->w);
 	enum stop_reason stop = STOP_NONE;
-	double last_draw = 0;
+	double last_draw = 0, est = mc_sample_seconds(s->w);
 	enum sw_status wst = SW_OK;
 	char werr[SW_ERRLEN] = "", err[SW_ERRLEN], serr[SW_ERRLEN] = "";
 	for (;;) {
@@ -805,7 +814,7 @@ static int sample(struct run_setup *s, const struct source *src,
 		}
 		if (tty && now() - last_draw >= 0.1) {
 			last_draw = now();
-			progress(&t, &pci, cfg->n, last_draw - t0);
+			progress(&t, &pci, cfg->n, last_draw - t0, est);
 		}
 	}
 	double elapsed = now() - t0;
@@ -860,6 +869,13 @@ static int sample(struct run_setup *s, const struct source *src,
 		cli_errorf("slipwall run: %s", serr);
 		status = 1;
 	}
+	long oom = lp_memory_errors();
+	if (oom > 0)	/* each made a sample "numerical" (src/lp.c) */
+		cli_errorf("slipwall run: the LP solver ran out of memory %ld "
+			"time%s (GLPK's limit: %d MB per thread): the "
+			"samples it was solving were rejected as numerical; free "
+			"memory or use fewer --threads", oom, oom == 1 ? "" : "s",
+			lp_mem_limit());
 	if (t.accepted == 0 && t.samples > 0) {
 		cli_errorf("slipwall run: no sample was accepted: the "
 			"analysis failed (see the rejections above)");

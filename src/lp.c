@@ -8,6 +8,21 @@
  * generation number; a problem built in an older generation is dead and
  * is never touched again by GLPK calls.
  *
+ * Out of memory.  GLPK's allocator reports a failed malloc, or a total
+ * above glp_mem_limit, by the same error path.  So it is not only the
+ * solves that run under a jump target: every entry point here whose
+ * GLPK calls allocate (lp_new, lp_set_col, lp_set_row, the basis
+ * resets, lp_set_binary) sets one too (GUARD below) and recovers the
+ * same way: the thread's problems are dead, the setters on a dead
+ * problem do nothing, and its next lp_solve returns LP_ERROR - the
+ * sample is "numerical", and sample.c's rebuild either succeeds or
+ * leaves dead problems again (each sample then fails the same way; the
+ * run goes on and says why: lp_memory_errors).  Each thread's GLPK
+ * environment gets the limit of lp_mem_limit_set (or the test variable
+ * SLIPWALL_GLPK_MEM_MB), again after every recovery, so that GLPK runs
+ * out inside its own accounting before the kernel's overcommit kills
+ * the process.
+ *
  * Fault injection (lp_fault_set, or SLIPWALL_LP_FAULT in the environment)
  * makes every n-th lp_solve of a thread fail, to test that a failed LP
  * costs one sample and nothing else (tests/test_faults.c,
@@ -87,6 +102,7 @@ static _Thread_local const atomic_int *tl_stop;	/* lp_thread_stop_flag */
 static _Thread_local int tl_in_simplex;	/* inside lp_solve's simplex */
 static _Thread_local int tl_interrupted;
 static _Thread_local int tl_it_lim;	/* lp_thread_iteration_limit */
+static _Thread_local int tl_out_of_memory;	/* GLPK said so (term_hook) */
 
 static int stop_requested(void)
 {
@@ -145,6 +161,10 @@ static int term_hook(void *info, const char *s)
 		longjmp(tl_jump, 2);	/* see "Interruption" above */
 	if (tl_in_simplex)
 		progress(NAN, NAN);	/* every half second of a long solve */
+	/* GLPK's allocator's words (env/alloc.c); the error's last line is
+	 * "Error detected in file ...", so the mark is kept apart */
+	if (strstr(s, "memory allocation") || strstr(s, "no memory available"))
+		tl_out_of_memory = 1;
 	size_t n = strlen(s);
 	if (n >= sizeof tl_message)
 		n = sizeof tl_message - 1;
@@ -162,11 +182,53 @@ static void error_hook(void *info)
 	(void)info;
 	if (tl_in_call)
 		longjmp(tl_jump, 1);
-	/* An error outside lp_solve (a bad argument to a setter) is a bug in
-	 * this program: say so and stop, as GLPK would have. */
+	/* An error outside any guarded call (a bad argument to an unguarded
+	 * setter) is a bug in this program: say so and stop, as GLPK would
+	 * have. */
 	fprintf(stderr, "slipwall: GLPK error outside a solve: %s\n",
 		tl_message);
 	abort();
+}
+
+/* Out of memory (see the top): the limit in MB for every thread's
+ * environment (0: none), set before the threads start; and how many
+ * GLPK errors were memory errors, over all threads. */
+static pthread_once_t mem_once = PTHREAD_ONCE_INIT;
+static int mem_limit_mb;
+static atomic_long mem_errors;
+
+static void mem_from_env(void)
+{
+	const char *s = getenv("SLIPWALL_GLPK_MEM_MB");	/* for tests */
+	char *end;
+	if (!s || !*s)
+		return;
+	long n = strtol(s, &end, 10);
+	if (*end || n <= 0 || n > INT_MAX) {
+		fprintf(stderr, "slipwall: SLIPWALL_GLPK_MEM_MB must be a "
+			"number of megabytes >= 1\n");
+		return;
+	}
+	mem_limit_mb = (int)n;
+}
+
+void lp_mem_limit_set(double mb)
+{
+	pthread_once(&mem_once, mem_from_env);
+	if (getenv("SLIPWALL_GLPK_MEM_MB"))
+		return;		/* the test's limit wins */
+	mem_limit_mb = !(mb >= 1) ? 1 : mb >= INT_MAX ? INT_MAX : (int)mb;
+}
+
+int lp_mem_limit(void)
+{
+	pthread_once(&mem_once, mem_from_env);
+	return mem_limit_mb;
+}
+
+long lp_memory_errors(void)
+{
+	return atomic_load(&mem_errors);
 }
 
 static void hook(void)
@@ -176,8 +238,42 @@ static void hook(void)
 	glp_term_out(GLP_ON);
 	glp_term_hook(term_hook, NULL);
 	glp_error_hook(error_hook, NULL);
+	int mb = lp_mem_limit();
+	if (mb > 0)
+		glp_mem_limit(mb);
 	tl_hooked = 1;
 }
+
+/* After a hook's longjmp: GLPK's environment is mid-call, the only way
+ * back is to free it; every problem of the thread is dead. */
+static void recover(void)
+{
+	tl_in_call = 0;
+	tl_in_simplex = 0;
+	if (tl_out_of_memory)
+		atomic_fetch_add(&mem_errors, 1);
+	tl_out_of_memory = 0;
+	glp_free_env();
+	tl_hooked = 0;
+	tl_generation++;
+	hook();
+}
+
+/* Run `body` (GLPK calls that may allocate) on a live problem under a
+ * jump target: a GLPK error there kills the thread's problems (see the
+ * top) instead of aborting. */
+#define GUARD(p, body)                                                   \
+	do {                                                             \
+		if (!alive(p))                                           \
+			return;                                          \
+		if (setjmp(tl_jump)) {                                   \
+			recover();                                       \
+			return;                                          \
+		}                                                        \
+		tl_in_call = 1;                                          \
+		body;                                                    \
+		tl_in_call = 0;                                          \
+	} while (0)
 
 static int alive(const struct lp *p)
 {
@@ -188,10 +284,19 @@ struct lp *lp_new(int nrows, int ncols)
 {
 	hook();
 	struct lp *p = sw_xcalloc(1, sizeof *p);
-	p->P = glp_create_prob();
-	p->generation = tl_generation;
 	p->nrows = nrows;
 	p->ncols = ncols;
+	int n = (nrows > ncols ? nrows : ncols) + 1;
+	p->ind = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+	p->val = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	if (setjmp(tl_jump)) {	/* out of memory: a dead problem (top) */
+		recover();
+		p->P = NULL;
+		return p;
+	}
+	tl_in_call = 1;
+	p->generation = tl_generation;
+	p->P = glp_create_prob();
 	if (nrows > 0)
 		glp_add_rows(p->P, nrows);
 	if (ncols > 0)
@@ -200,9 +305,7 @@ struct lp *lp_new(int nrows, int ncols)
 		glp_set_row_bnds(p->P, i, GLP_FX, 0, 0);
 	for (int j = 1; j <= ncols; j++)
 		glp_set_col_bnds(p->P, j, GLP_FR, 0, 0);
-	int n = (nrows > ncols ? nrows : ncols) + 1;
-	p->ind = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
-	p->val = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	tl_in_call = 0;
 	return p;
 }
 
@@ -226,12 +329,16 @@ void lp_free(struct lp *p)
 void lp_set_maximize(struct lp *p, int maximize)
 {
 	p->held = 0;
+	if (!alive(p))	/* dead after an error (top): the next solve says so */
+		return;
 	glp_set_obj_dir(p->P, maximize ? GLP_MAX : GLP_MIN);
 }
 
 void lp_set_obj(struct lp *p, int col, double c)
 {
 	p->held = 0;
+	if (!alive(p))
+		return;
 	glp_set_obj_coef(p->P, col + 1, c);
 }
 
@@ -249,12 +356,16 @@ static int bound_type(double lo, double hi)
 
 void lp_set_col_bounds(struct lp *p, int col, double lo, double hi)
 {
+	if (!alive(p))
+		return;
 	glp_set_col_bnds(p->P, col + 1, bound_type(lo, hi),
 			 isfinite(lo) ? lo : 0, isfinite(hi) ? hi : 0);
 }
 
 void lp_set_row_bounds(struct lp *p, int row, double lo, double hi)
 {
+	if (!alive(p))
+		return;
 	glp_set_row_bnds(p->P, row + 1, bound_type(lo, hi),
 			 isfinite(lo) ? lo : 0, isfinite(hi) ? hi : 0);
 }
@@ -267,7 +378,7 @@ void lp_set_col(struct lp *p, int col, int n, const int *rows,
 		p->ind[i + 1] = rows[i] + 1;
 		p->val[i + 1] = vals[i];
 	}
-	glp_set_mat_col(p->P, col + 1, n, p->ind, p->val);
+	GUARD(p, glp_set_mat_col(p->P, col + 1, n, p->ind, p->val));
 }
 
 void lp_set_row(struct lp *p, int row, int n, const int *cols,
@@ -278,19 +389,19 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 		p->ind[i + 1] = cols[i] + 1;
 		p->val[i + 1] = vals[i];
 	}
-	glp_set_mat_row(p->P, row + 1, n, p->ind, p->val);
+	GUARD(p, glp_set_mat_row(p->P, row + 1, n, p->ind, p->val));
 }
 
 void lp_reset_basis(struct lp *p)
 {
 	p->held = 0;
-	glp_std_basis(p->P);
+	GUARD(p, glp_std_basis(p->P));
 }
 
 void lp_crash_basis(struct lp *p)
 {
 	p->held = 0;
-	glp_adv_basis(p->P, 0);
+	GUARD(p, glp_adv_basis(p->P, 0));
 }
 
 static enum lp_status map_status(glp_prob *P)
@@ -444,12 +555,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	if (jumped) {
 		/* a hook jumped here (an error, or a stop request): GLPK's
 		 * environment is mid-solve, the only way back is to free it */
-		tl_in_call = 0;
-		tl_in_simplex = 0;
-		glp_free_env();
-		tl_hooked = 0;
-		tl_generation++;
-		hook();
+		recover();
 		if (jumped == 2) {
 			tl_interrupted = 1;
 			return LP_STOPPED;
@@ -733,7 +839,7 @@ const char *lp_last_message(void)
 
 void lp_set_binary(struct lp *p, int col)
 {
-	glp_set_col_kind(p->P, col + 1, GLP_BV);
+	GUARD(p, glp_set_col_kind(p->P, col + 1, GLP_BV));
 }
 
 enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
@@ -741,11 +847,7 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	if (!alive(p))
 		return LP_MIP_FAILED;
 	if (setjmp(tl_jump)) {
-		tl_in_call = 0;
-		glp_free_env();
-		tl_hooked = 0;
-		tl_generation++;
-		hook();
+		recover();
 		return LP_MIP_FAILED;
 	}
 	tl_in_call = 1;

@@ -18,6 +18,15 @@
  * 64 bits, so two samples of one run never share a stream (GSL's
  * mt19937, used before, kept 32 bits of that seed: a million samples
  * held about 116 identical pairs).
+ *
+ * Estimate (mc_sample_seconds).  A sample's time grows with the wall
+ * faster than linearly: the LPs have rows and columns in proportion to
+ * the interfaces, and on the large wall their pivots too (docs/
+ * performance.md: about 600 pivots a sample on Ferris & Tin-Loi wall 1,
+ * 43,000 on walls/large.yaml).  EST_SECONDS and EST_POWER are fitted to
+ * `slipwall run WALL -n N --threads 1`'s elapsed time per sample on
+ * this project's (loaded, shared) build machine: see the constants.
+ * It is a guide to tell seconds from minutes, not a promise.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -26,6 +35,7 @@
 #include <signal.h>
 #include <stdatomic.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -33,6 +43,19 @@
 
 #include "slipwall/lp.h"
 #include "slipwall/mc.h"
+
+/* Estimate: seconds of one sample at 100 interfaces, and the power of
+ * the interfaces.  Measured on 23 November 2026 (`run -n 20`, or -n 1
+ * for the large wall, one thread, elapsed time per sample with the
+ * workspace's set-up, a 2-core machine at a load average of about 10):
+ * demo (66 interfaces) 0.14 s, Ferris & Tin-Loi wall 1 (83) 0.12 s,
+ * wall 2 (141) 0.23 s, walls/large.yaml (2,956) 382 s.  The line through
+ * wall 2 and the large wall in log-log: power 2.44, 0.099 s at 100.
+ * The small walls are above it (fixed costs), where nothing is said
+ * anyway (under a second); an idle machine is two or three times
+ * faster. */
+#define EST_SECONDS 0.1
+#define EST_POWER 2.4
 
 struct slot {
 	int full;
@@ -474,4 +497,22 @@ void mc_free(struct mc *m)
 	pthread_cond_destroy(&m->cv_space);
 	pthread_cond_destroy(&m->cv_ready);
 	free(m);
+}
+
+double mc_sample_seconds(const struct wall *w)
+{
+	double n = w->nifaces > 1 ? (double)w->nifaces : 1;
+	return EST_SECONDS * pow(n / 100.0, EST_POWER);
+}
+
+void mc_about(char *buf, size_t len, double s)
+{
+	if (!(s >= 1))
+		snprintf(buf, len, "under a second");
+	else if (s < 59.5)
+		snprintf(buf, len, "about %.0f s", s);
+	else if (s < 5970)	/* under 99.5 min */
+		snprintf(buf, len, "about %.0f min", s / 60);
+	else
+		snprintf(buf, len, "about %.0f h", s / 3600);
 }

@@ -6,9 +6,11 @@
 # lambda (N, load factor), the title's numbers, a saved path whole;
 # NO_COLOR gives no colour escapes; a left click selects a block, a right
 # click moves the load; on a large wall (minutes a sample), within 10 s
-# of opening, the samples in progress with their age and an estimate of
-# the time left, and standard/gilbert "computing... N s"; and `slipwall
-# run`'s progress line says the first samples are running and how long.
+# of opening, the a-priori estimate of a sample's time before any sample
+# finished ("first    about N min a sample"), the samples in progress
+# with their age and an estimate of the time left, and standard/gilbert
+# "computing... N s"; and `slipwall run`'s progress line says the first
+# samples are running, how long, and the a-priori estimate.
 #
 # Usage (from the source root): bash tests/cli_tui_screen.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -163,6 +165,13 @@ if wait_for big 'working  [0-9]+ samples?, oldest [0-9]+ s' 10 && wait_for big '
 else
 	not_ok "large wall: samples in progress, their age, the time left, within 10 s" "$(screen big)"
 fi
+# the a-priori estimate (mc_sample_seconds), while no sample has finished
+if wait_for big 'first +about [0-9]+ (s|min|h)( a sample| \(estimate\))' 10 &&
+   screen_has big 'samples +0 / '; then
+	ok "large wall: the first sample's estimate on screen before any sample finished"
+else
+	not_ok "large wall: the first sample's estimate on screen before any sample finished" "$(screen big)"
+fi
 age() {
 	screen big | sed -n 's/.*working .*oldest \([0-9][0-9]*\) s.*/\1/p'
 }
@@ -194,6 +203,11 @@ if wait_for rp '^0/4  first samples running for 0:0[1-9], left > 0:0[1-9]' 10; t
 	ok "slipwall run on the large wall: the first samples running, their time, left > it"
 else
 	not_ok "slipwall run on the large wall: the first samples running" "$(screen rp)"
+fi
+if screen_has rp '^0/4  first samples running .*\(estimate: about [0-9]+ (s|min|h) a sample\)'; then
+	ok "slipwall run on the large wall: the first progress line has the estimate"
+else
+	not_ok "slipwall run on the large wall: the first progress line has the estimate" "$(screen rp)"
 fi
 kill -INT "$(cat "$tmp/rp.pid")" 2>/dev/null
 

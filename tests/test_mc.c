@@ -340,6 +340,49 @@ static void test_streams(void)
 	wall_free(one);
 }
 
+/* The a-priori estimate of a sample's time (mc_sample_seconds): it
+ * grows with the interfaces, says "under a second" of the demo wall and
+ * minutes of walls/large.yaml (measured: 0.14 s and 382 s, on one
+ * loaded core; the range here is a factor of several either side),
+ * and mc_about writes it in the unit that fits. */
+static void test_estimate(const struct wall *demo)
+{
+	struct wall fake = *demo;
+	int mono = 1;
+	double prev = 0;
+	for (int k = 1; k <= 100000; k = k < 10 ? k + 1 : k * 3 / 2) {
+		fake.nifaces = k;
+		double e = mc_sample_seconds(&fake);
+		if (!(e > prev) || !isfinite(e))
+			mono = 0;
+		prev = e;
+	}
+	tap_ok(mono, "the estimate increases with the interfaces, finite, > 0");
+	char err[SW_ERRLEN], buf[64];
+	struct wall *big;
+	double d = mc_sample_seconds(demo);
+	tap_ok(d > 0.01 && d < 1, "demo wall (%d interfaces): %g s, under a "
+	       "second", demo->nifaces, d);
+	if (wallfile_load(SRCDIR "/walls/large.yaml", &big, err) != SW_OK) {
+		tap_ok(0, "walls/large.yaml: %s", err);
+		return;
+	}
+	double l = mc_sample_seconds(big);
+	tap_ok(l >= 60 && l <= 3600, "walls/large.yaml (%d interfaces): %g s, "
+	       "minutes", big->nifaces, l);
+	wall_free(big);
+	mc_about(buf, sizeof buf, 0.2);
+	tap_ok(!strcmp(buf, "under a second"), "0.2 s: '%s'", buf);
+	mc_about(buf, sizeof buf, 42.3);
+	tap_ok(!strcmp(buf, "about 42 s"), "42.3 s: '%s'", buf);
+	mc_about(buf, sizeof buf, 299);
+	tap_ok(!strcmp(buf, "about 5 min"), "299 s: '%s'", buf);
+	mc_about(buf, sizeof buf, 7300);
+	tap_ok(!strcmp(buf, "about 2 h"), "7300 s: '%s'", buf);
+	mc_about(buf, sizeof buf, NAN);
+	tap_ok(!strcmp(buf, "under a second"), "NaN: '%s'", buf);
+}
+
 int main(void)
 {
 	char err[SW_ERRLEN];
@@ -353,6 +396,7 @@ int main(void)
 	test_share(w);
 	test_depth(w);
 	test_streams();
+	test_estimate(w);
 	wall_free(w);
 	return tap_done();
 }

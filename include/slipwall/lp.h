@@ -139,6 +139,19 @@ void lp_fault_set(long every, enum lp_status as);
  * GLPK's own GLP_EITLIM, provoked for real rather than injected. */
 void lp_thread_iteration_limit(int limit);
 
+/* Memory: the limit of GLPK's allocator on each thread, in MB (GLPK's
+ * glp_mem_limit; at least 1), for the threads' environments created
+ * from now on; call it before the threads start.  The environment
+ * variable SLIPWALL_GLPK_MEM_MB (for tests) overrides it.  Running out
+ * (of the limit or of malloc) inside any call of this module is a GLPK
+ * error: the thread's problems die and the next lp_solve returns
+ * LP_ERROR (src/lp.c, "Out of memory").  lp_mem_limit: the limit in
+ * force (0: none); lp_memory_errors: how many GLPK errors, over all
+ * threads since start, were out of memory. */
+void lp_mem_limit_set(double mb);
+int lp_mem_limit(void);
+long lp_memory_errors(void);
+
 /* Mixed-integer: mark a column binary; solve with branch and cut. */
 void lp_set_binary(struct lp *p, int col);
 enum lp_mip_status { LP_MIP_OPTIMAL, LP_MIP_FEASIBLE, LP_MIP_NOFEASIBLE,

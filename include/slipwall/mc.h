@@ -102,6 +102,16 @@ struct mc_progress {
 };
 void mc_progress(struct mc *m, struct mc_progress *p);
 
+/* A rough a-priori time of one sample of w on one core, in seconds,
+ * before any sample has run (to say, on opening a large wall, that its
+ * first sample will be slow): a power law in the number of interfaces,
+ * fitted to measured times (src/mc.c, "Estimate").  Rough: within a
+ * factor of about three on a loaded machine; increasing in the
+ * interfaces.  mc_about writes it for people: "under a second",
+ * "about 40 s", "about 5 min", "about 2 h". */
+double mc_sample_seconds(const struct wall *w);
+void mc_about(char *buf, size_t len, double seconds);
+
 /* Ask the workers to stop: each abandons the sample it is computing
  * (within about a second, even inside a long LP: lp_thread_stop_flag)
  * and takes no other.  Samples already finished in order can still be

@@ -25,6 +25,7 @@
 #include <curses.h>
 
 #include "collapse.h"
+#include "slipwall/mc.h"
 #include "slipwall/stats.h"
 #include "tui/tui.h"
 
@@ -100,6 +101,17 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		tui_stats_text(&p, line);
 	} else {
 		tui_stats_text(&p, "speed    none finished yet");
+	}
+	/* a wall whose first sample will be slow says so from the start,
+	 * with the a-priori estimate (rough: src/mc.c, "Estimate") */
+	double est = mc_sample_seconds(wall);
+	if (ta->samples == 0 && est >= 1) {
+		mc_about(a, sizeof a, est);
+		snprintf(line, sizeof line, "first    %s a sample (a wall of %d "
+			 "interfaces; rough)", a, wall->nifaces);
+		if (tui_cols(line) > w)
+			snprintf(line, sizeof line, "first    %s (estimate)", a);
+		tui_stats_text(&p, line);
 	}
 	if (pg.busy > 0 && pg.oldest >= 1) {
 		long left = t->run.target - ta->samples;
