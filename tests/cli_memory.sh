@@ -20,6 +20,15 @@ bin=$(realpath "$bin")
 cd "$(dirname "$0")/.." || exit 1
 
 . tests/tap.sh
+
+# Under the sanitizer job (scripts/ci-sanitize.sh), LeakSanitizer finds
+# one 13,240-byte block that GLPK itself allocates (libglpk.so.40, an
+# internal function without a symbol) and does not free when it runs
+# out of memory and its environment is freed for the recovery: GLPK's,
+# not slipwall's, and only on this path.  The suppression is scoped to
+# this test's own runs; every other test keeps full leak checking of
+# GLPK's allocations.
+export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$PWD/tests/lsan-glpk-oom.supp:print_suppressions=0"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
