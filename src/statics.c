@@ -17,7 +17,6 @@ void statics_init(struct statics *s, const struct wall *w)
 	s->ncols = 3 * w->nifaces;
 	s->F = w->mean_weight;
 	s->L = w->mean_size;
-	/* mean reference live force per loaded block */
 	double ref = 0;
 	int nloaded = 0;
 	for (int l = 0; l < w->nloads; l++) {
@@ -29,41 +28,47 @@ void statics_init(struct statics *s, const struct wall *w)
 			nloaded += w->nfree;
 		}
 	}
-	s->S = ref > 0 ? s->F / (ref / nloaded) : 1;
+	/* the mean reference live force per loaded block: every force is
+	 * divided by it before a lever multiplies it, so that a moment is
+	 * finite whenever the forces are (a load of 1e308 N at a lever of
+	 * 2 m overflows; 2 at 2 does not) */
+	double unit = ref > 0 ? ref / nloaded : s->F;
+	s->S = s->F / unit;
 	s->fL = sw_xcalloc((size_t)s->nrows + 1, sizeof(double));
 	s->fD = sw_xcalloc((size_t)s->nrows + 1, sizeof(double));
 	s->q = sw_xcalloc(4 * (size_t)w->nifaces + 1, sizeof(double));
 	s->xi = sw_xcalloc(2 * (size_t)w->nifaces + 1, sizeof(double));
 
-	/* f_L at lambda_scaled = 1 is S times the reference load, over F */
+	/* f_L at lambda_scaled = 1 is S times the reference load, over F,
+	 * that is the reference load over `unit` */
 	for (int l = 0; l < w->nloads; l++) {
 		const struct wall_load *ld = &w->loads[l];
 		for (int k = 0; k < w->nblocks; k++) {
 			const struct wall_block *b = &w->blocks[k];
-			double fx, fy, px, py;
+			double f, px, py;
 			if (b->fixed)
 				continue;
 			if (ld->kind == LOAD_POINT) {
 				if (ld->block != k)
 					continue;
-				fx = ld->magnitude * ld->dir[0];
-				fy = ld->magnitude * ld->dir[1];
+				f = ld->magnitude / unit;
 				px = ld->at[0];
 				py = ld->at[1];
 			} else {
-				fx = ld->magnitude * b->weight * ld->dir[0];
-				fy = ld->magnitude * b->weight * ld->dir[1];
+				/* finite: wall_finish checked the magnitude
+				 * times the whole wall's weight */
+				f = ld->magnitude * b->weight / unit;
 				px = b->cx;
 				py = b->cy;
 			}
-			/* the moment with its lever over L, times S / F: the
-			 * products S * m and F * L overflow on a wall whose
+			double fx = f * ld->dir[0], fy = f * ld->dir[1];
+			/* the lever over L: F * L overflows on a wall whose
 			 * weights and sizes are large (1e290 N and 1e20 m) */
 			double m = (px - b->cx) / s->L * fy -
 				   (py - b->cy) / s->L * fx;
-			s->fL[3 * b->eq] += s->S * fx / s->F;
-			s->fL[3 * b->eq + 1] += s->S * fy / s->F;
-			s->fL[3 * b->eq + 2] += s->S / s->F * m;
+			s->fL[3 * b->eq] += fx;
+			s->fL[3 * b->eq + 1] += fy;
+			s->fL[3 * b->eq + 2] += m;
 		}
 	}
 	for (int k = 0; k < w->nblocks; k++) {

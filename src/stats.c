@@ -156,6 +156,26 @@ int stats_quantile_ci_ranks(size_t n, double p, double conf, size_t *lo,
 
 /* ---- summary ---------------------------------------------------------- */
 
+/* The sample standard deviation about `mean`.  GSL's, unless the values
+ * are near either end of the doubles (a wall in odd units: loads of
+ * 1e-306 or 1e200), where the squared deviations underflow to 0 or
+ * overflow: there the deviations are squared scaled by the largest
+ * |x|. */
+static double sd_m(const double *x, size_t n, double mean)
+{
+	double sc = 0;
+	for (size_t i = 0; i < n; i++)
+		sc = fmax(sc, fabs(x[i]));
+	if (!(sc > 0) || (sc > 1e-100 && sc < 1e100))
+		return gsl_stats_sd_m(x, 1, n, mean);
+	double q = 0;
+	for (size_t i = 0; i < n; i++) {
+		double d = x[i] / sc - mean / sc;
+		q += d * d;
+	}
+	return sc * sqrt(q / (double)(n - 1));
+}
+
 void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 {
 	s->n = n;
@@ -174,17 +194,7 @@ void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 	s->p95 = stats_quantile_sorted(v, n, 0.95);
 	s->mean = gsl_stats_mean(v, 1, n);
 	if (n >= 2)
-		s->std = gsl_stats_sd_m(v, 1, n, s->mean);
-	if (n >= 2 && !isfinite(s->std)) {
-		/* loads near the top of the doubles (a wall in odd units):
-		 * the squares overflow, so square them scaled */
-		double sc = fmax(fabs(v[0]), fabs(v[n - 1])), q = 0;
-		for (size_t i = 0; i < n; i++) {
-			double d = v[i] / sc - s->mean / sc;
-			q += d * d;
-		}
-		s->std = sc * sqrt(q / (double)(n - 1));
-	}
+		s->std = sd_m(v, n, s->mean);
 	size_t lo, hi;
 	if (stats_quantile_ci_ranks(n, 0.05, STATS_P05_CONF, &lo, &hi) == 0) {
 		s->has_ci = 1;
@@ -206,7 +216,7 @@ double stats_fd_width(const double *sorted, size_t n)
 	if (iqr > 0)
 		return 2 * iqr / cbrt_n;
 	/* Scott (1979): 3.49 sd n^(-1/3). */
-	double sd = gsl_stats_sd(sorted, 1, n);
+	double sd = sd_m(sorted, n, gsl_stats_mean(sorted, 1, n));
 	if (sd > 0 && isfinite(sd))
 		return 3.49 * sd / cbrt_n;
 	return 1;
@@ -270,7 +280,7 @@ void stats_hist_free(struct stats_hist *h)
  * (a zero IQR uses sd, a zero sd uses |x_1|, then 1). */
 static double silverman_sorted(const double *v, size_t n)
 {
-	double sd = n >= 2 ? gsl_stats_sd(v, 1, n) : 0;
+	double sd = n >= 2 ? sd_m(v, n, gsl_stats_mean(v, 1, n)) : 0;
 	double iqr = stats_quantile_sorted(v, n, 0.75) -
 		     stats_quantile_sorted(v, n, 0.25);
 	double a = fmin(sd, iqr / 1.34);
@@ -352,7 +362,7 @@ void stats_kde(const double *x, size_t n, double bw, int reflect_at_zero,
 void stats_normal_fit(const double *x, size_t n, double *mu, double *sigma)
 {
 	*mu = n ? gsl_stats_mean(x, 1, n) : NAN;
-	*sigma = n >= 2 ? gsl_stats_sd_m(x, 1, n, *mu) : NAN;
+	*sigma = n >= 2 ? sd_m(x, n, *mu) : NAN;
 }
 
 /* ---- two-sample Kolmogorov-Smirnov ------------------------------------ */

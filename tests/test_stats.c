@@ -159,6 +159,14 @@ static void test_summary(void)
 	tap_near(sb.std, 1e306 * 29.011491975882016, 1e-12,
 		 "summary sd of 1e306 x (1..100) is 1e306 x sqrt(n(n+1)/12)");
 	tap_near(sb.mean, 1e306 * 50.5, 1e-13, "... and the mean is finite");
+	/* ... and near the bottom (a load of 1.5e308 N on blocks of kN:
+	 * load factors of 1e-306, whose squared deviations underflow to 0) */
+	double tiny[100];
+	for (int i = 0; i < 100; i++)
+		tiny[i] = 1e-306 * x[i];
+	stats_summarise(tiny, 100, &sb);
+	tap_near(sb.std / 1e-306, 29.011491975882016, 1e-12,
+		 "summary sd of 1e-306 x (1..100) is 1e-306 x sqrt(n(n+1)/12)");
 
 	stats_summarise(x, 89, &s);
 	tap_ok(!s.has_ci && isnan(s.p05_lo) && isnan(s.p05_hi),
