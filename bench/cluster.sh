@@ -41,7 +41,7 @@
 # The load average is printed before and after every group of runs:
 # other work on the machine shows in it, and in the figures.  Set
 # CLUSTER_MERGE=0 to skip the second part.  As root, mpirun's consent is
-# given in the environment (as in tests/cli_mpi.sh).
+# given in the environment (as in tests/cli/mpi.sh).
 set -u
 # --probe OUT CMD...: run CMD; unless this is a rank > 0 of an MPI job,
 # write the CPU time (ns) of CMD's main thread, read every 20 ms until it

@@ -25,10 +25,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "slipwall/lp.h"
+#include "lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/sample.h"
-#include "slipwall/statics.h"
+#include "statics.h"
 #include "slipwall/wallfile.h"
 
 /* Walls with more blocks are only loaded and assembled, not solved:

@@ -34,7 +34,7 @@ if ! command -v clang >/dev/null 2>&1 ||
 	apt-get install -y -qq clang libclang-rt-dev >/dev/null
 fi
 # the library is instrumented for coverage (fuzzer-no-link); layouts are
-# limited to 400 blocks here (src/layout.c) to keep executions fast
+# limited to 400 blocks here (src/lib/layout.c) to keep executions fast
 reconf=
 [ -f "$dir/build.ninja" ] && reconf=--reconfigure
 CC=clang meson setup $reconf "$dir" -Dfuzz=true -Db_sanitize=address,undefined \

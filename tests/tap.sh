@@ -1,4 +1,4 @@
-# tap.sh - the TAP helpers of the command-line tests (tests/cli_*.sh),
+# tap.sh - the TAP helpers of the command-line tests (tests/cli/*.sh),
 # sourced after the script has changed to the source root:
 #   . tests/tap.sh
 # ok TEXT; not_ok TEXT [DETAIL...] (each detail line becomes a TAP

@@ -19,6 +19,8 @@
 #include <limits.h>
 #include <stddef.h>
 
+#include <limits.h>
+
 #include "slipwall/status.h"
 
 struct history_row {

@@ -9,7 +9,7 @@
  * into a reorder window; the consumer (one thread: the `run` command, or
  * the workbench's UI thread) takes them out strictly in index order with
  * mc_pop().  A pool may compute a share of the indices only (first,
- * first + stride, ...: one MPI rank's, src/cluster.c); "in order" is
+ * first + stride, ...: one MPI rank's, src/cli/cluster.c); "in order" is
  * then the order of that share.  Workers wait when they are more than
  * the window ahead of the consumer, so memory stays bounded.
  *
@@ -105,7 +105,7 @@ void mc_progress(struct mc *m, struct mc_progress *p);
 /* A rough a-priori time of one sample of w on one core, in seconds,
  * before any sample has run (to say, on opening a large wall, that its
  * first sample will be slow): a power law in the number of interfaces,
- * fitted to measured times (src/mc.c, "Estimate").  Rough: within a
+ * fitted to measured times (src/lib/mc.c, "Estimate").  Rough: within a
  * factor of about three on a loaded machine; increasing in the
  * interfaces.  mc_about writes it for people: "under a second",
  * "about 40 s", "about 5 min", "about 2 h". */
@@ -134,5 +134,16 @@ void mc_counters(const struct mc *m, struct mc_counters *c);
 /* Wait until every worker has exited: after mc_pop returned -1 (or
  * after mc_stop), so that mc_counters covers every worker. */
 void mc_wait(struct mc *m);
+
+/* Number of online processors (>= 1): the default thread count. */
+int mc_ncpu(void);
+
+/* The limit of the LP solver's allocator on each worker thread, in MiB
+ * (0: none; the batch commands share half the memory out between the
+ * workers, cli_threads), and how many LPs, over all threads since start,
+ * ran out of memory (each fails its sample, not the process). */
+void mc_worker_memory_set(double mb);
+int mc_worker_memory(void);
+long mc_memory_errors(void);
 
 #endif

@@ -50,7 +50,7 @@ struct solve_result {
 	int iterations, converged;
 	double lambda_onset;		/* LP-min after the onset check */
 	/* global: lambda is the onset load of the program's collapse
-	 * pattern, found by exact LPs (src/solve.c says why) */
+	 * pattern, found by exact LPs (src/lib/solve.c says why) */
 	double lower_bound;		/* the program's bound on the minimum */
 	int mip_optimal;		/* the program proved its own optimum */
 	int proven;			/* optimal, bounds derived, and lambda

@@ -64,4 +64,7 @@ struct sw_whole {
 enum sw_status sw_whole_open(struct sw_whole *w, const char *path, char *err);
 enum sw_status sw_whole_close(struct sw_whole *w, char *err);
 
+/* The program's version ("0.1.0"), from meson.build. */
+const char *sw_version(void);
+
 #endif

@@ -47,4 +47,9 @@ void text_put(FILE *f, const char *s);
 /* Length of the valid UTF-8 sequence at s (1..4), 0 if there is none. */
 int text_utf8_len(const unsigned char *s);
 
+/* Parse a whole number in [lo, hi] / a finite double: the whole of s,
+ * decimal; 0 on success, -1 (and *out untouched) otherwise. */
+int text_parse_long(const char *s, long lo, long hi, long *out);
+int text_parse_double(const char *s, double *out);
+
 #endif

@@ -35,10 +35,10 @@
 
 #include <curses.h>
 
-#include "cli.h"
 #include "slipwall/text.h"
 #include "slipwall/wallfile.h"
-#include "tui/tui.h"
+#include "tui.h"
+#include "workbench.h"
 
 /* Set by the signal handler, read by the loop. */
 static volatile sig_atomic_t tui_signalled;
@@ -294,8 +294,6 @@ int tui_main(const char *path)
 	struct wall *w;
 
 	memset(t, 0, sizeof *t);
-	if (!path)
-		path = cli_demo_wall();
 	if (wallfile_load(path, &w, err) != SW_OK) {
 		fprintf(stderr, "%s\n", err);
 		return 2;
@@ -308,7 +306,7 @@ int tui_main(const char *path)
 	}
 	setlocale(LC_ALL, "");
 	t->utf8 = !strcmp(nl_langinfo(CODESET), "UTF-8");
-	t->threads = cli_ncpu();
+	t->threads = mc_ncpu();
 	if (tui_signals()) {
 		fprintf(stderr, "slipwall: cannot install signal handlers\n");
 		wall_free(w);

@@ -14,7 +14,7 @@
  * its message on the message line; the current wall stays.
  *
  * tui_edit_apply() also pushes the wall it replaces on the undo stack
- * (src/undo.c): u and U switch back and forth the same way, as new runs
+ * (src/lib/undo.c): u and U switch back and forth the same way, as new runs
  * of the same seed.  No key changes the wall without a prompt or a way
  * back.
  *
@@ -29,10 +29,10 @@
 
 #include <curses.h>
 
-#include "cli.h"
+#include "slipwall/text.h"
 #include "slipwall/geom.h"
 #include "slipwall/layout.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 #define TUI_STEP_MU 0.05
 #define TUI_STEP_DEPTH 0.05
@@ -364,7 +364,7 @@ static void tui_edit_courses_typed(struct tui *t, const char *text)
 {
 	long n;
 	struct wall_layout lay = t->w->layout;
-	if (cli_parse_long(text, 1, 100000, &n)) {
+	if (text_parse_long(text, 1, 100000, &n)) {
 		tui_message(t, 1, "courses: a whole number from 1 to 100000");
 		return;
 	}
@@ -400,7 +400,7 @@ static void tui_edit_block_typed(struct tui *t, const char *text)
 static void tui_edit_target_typed(struct tui *t, const char *text)
 {
 	long n;
-	if (cli_parse_long(text, 1, 1000000000L, &n)) {
+	if (text_parse_long(text, 1, 1000000000L, &n)) {
 		tui_message(t, 1, "sample target: a whole number from 1 to 1e9");
 		return;
 	}

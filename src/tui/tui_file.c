@@ -28,7 +28,7 @@
 #include "slipwall/stats.h"
 #include "slipwall/report.h"
 #include "slipwall/wallfile.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 /* The wall's short name: file name without directory and .yaml. */
 static void tui_file_stem(const struct wall *w, char *out, size_t len)
@@ -290,7 +290,7 @@ static void tui_file_report_to(struct tui *t, const char *dir)
 	in.sol = sol;
 	in.nsol = 2;
 	in.run.wall_path = t->w->path ? t->w->path : "(edited wall)";
-	in.run.version = SLIPWALL_VERSION;
+	in.run.version = sw_version();
 	in.run.samples_file = t->run.csv;
 	in.run.seed_known = 1;
 	in.run.seed = t->run.cfg.seed;

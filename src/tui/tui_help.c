@@ -6,7 +6,7 @@
  */
 #include <curses.h>
 
-#include "tui/tui.h"
+#include "tui.h"
 
 static const char *const tui_help_lines[] = {
 	"slipwall workbench: keys",

@@ -24,7 +24,7 @@
 #include <curses.h>
 
 #include "slipwall/stats.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 struct tui_mark {
 	double v;

@@ -20,7 +20,7 @@
 #include <curses.h>
 
 #include "slipwall/stats.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 #define TUI_HISTORY_OLD 200	/* rows of earlier sessions read */
 

@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "slipwall/runlog.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 /* Replay chunks: at most this many samples (the table is built on the
  * UI thread, a few microseconds a row) and this many doubles (16 MB). */

@@ -3,10 +3,9 @@
  * wall on screen, computed once per wall on a one-shot thread so that the
  * UI never waits for an LP.
  *
- * The thread works on its own copy of the wall and owns its GLPK
- * environment: solve_run() builds its LPs through lp_new() (whose hooks
- * keep GLPK's text off the screen), and lp_thread_done() runs before the
- * thread ends.  It blocks every signal, like the sampler's workers.
+ * The thread works on its own copy of the wall; solve_run() keeps the LP
+ * solver's text off the screen and frees its environment of the thread
+ * when it returns.  It blocks every signal, like the sampler's workers.
  *
  * Ownership: the UI either collects the result (tui_solve_poll) and later
  * abandons the job, or abandons it early (a new wall, quit).  Whichever
@@ -19,9 +18,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "slipwall/lp.h"
 #include "slipwall/solve.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 struct tui_solve {
 	pthread_mutex_t mu;
@@ -62,7 +60,6 @@ static void *tui_solve_thread(void *arg)
 	double std = 0, gil = 0;
 	int has_std = tui_solve_one(s->w, SOLVE_STANDARD, &std);
 	int has_gil = tui_solve_one(s->w, SOLVE_GILBERT, &gil);
-	lp_thread_done();
 
 	pthread_mutex_lock(&s->mu);
 	s->has_std = has_std;

@@ -24,10 +24,10 @@
 
 #include <curses.h>
 
-#include "collapse.h"
+#include "slipwall/collapse.h"
 #include "slipwall/mc.h"
 #include "slipwall/stats.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 static void tui_stats_num(char *buf, size_t len, double v, int prec)
 {
@@ -103,7 +103,7 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		tui_stats_text(&p, "speed    none finished yet");
 	}
 	/* a wall whose first sample will be slow says so from the start,
-	 * with the a-priori estimate (rough: src/mc.c, "Estimate") */
+	 * with the a-priori estimate (rough: src/lib/mc.c, "Estimate") */
 	double est = mc_sample_seconds(wall);
 	if (ta->samples == 0 && est >= 1) {
 		mc_about(a, sizeof a, est);

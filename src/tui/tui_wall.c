@@ -26,7 +26,7 @@
 #include <curses.h>
 
 #include "slipwall/geom.h"
-#include "tui/tui.h"
+#include "tui.h"
 
 enum { CU = 1, CD = 2, CL = 4, CR = 8 };
 

@@ -1,0 +1,372 @@
+/* cli.c - helpers shared by the batch commands; see cli.h. */
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "slipwall/mc.h"
+#include "slipwall/text.h"
+#include "slipwall/wallfile.h"
+
+int cli_load_wall(const char *path, struct wall **w)
+{
+	char err[SW_ERRLEN];
+	enum sw_status st = wallfile_load(path, w, err);
+	if (st != SW_OK) {
+		cli_errorf("%s", err);
+		return sw_status_exit(st);
+	}
+	return 0;
+}
+
+const char *cli_demo_wall(void)
+{
+	static char path[PATH_MAX];
+	char exe[PATH_MAX];
+	ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (n > 0) {
+		exe[n] = 0;
+		char *slash = strrchr(exe, '/');
+		if (slash)
+			*slash = 0;
+		/* running from the build tree: use the source tree's walls */
+		if (!strcmp(exe, SLIPWALL_BUILDDIR)) {
+			snprintf(path, sizeof path, "%s/walls/demo.yaml",
+				 SLIPWALL_SRCDIR);
+			if (access(path, R_OK) == 0)
+				return path;
+		}
+	}
+	snprintf(path, sizeof path, "%s/walls/demo.yaml", SLIPWALL_DATADIR);
+	return path;
+}
+
+/* The cleaned copies cli_text returned last: a ring, so that one printf
+ * can take several; the copies are freed as the ring turns (and the
+ * last ones at exit, by the system). */
+static char *text_ring[8];
+static int text_next;
+
+const char *cli_text(const char *s)
+{
+	if (!s || text_is_clean(s))
+		return s;
+	free(text_ring[text_next]);
+	char *c = text_ring[text_next] = text_clean(s);
+	text_next = (text_next + 1) % 8;
+	return c;
+}
+
+/* vprintf into a malloc'd string, cleaned for printing. */
+static char *clean_vformat(const char *fmt, va_list ap)
+{
+	char *raw = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&raw, &len);
+	if (!f)
+		return text_clean(fmt);
+	vfprintf(f, fmt, ap);
+	if (fclose(f) != 0 || !raw) {
+		free(raw);
+		return text_clean(fmt);
+	}
+	char *c = text_clean(raw);
+	free(raw);
+	return c;
+}
+
+void cli_errorf(const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	char *s = clean_vformat(fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "%s\n", s);
+	free(s);
+}
+
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	char *s = clean_vformat(fmt, ap);
+	va_end(ap);
+	fprintf(stderr, "slipwall %s: %s\nTry 'slipwall %s --help'.\n", cmd, s,
+		cmd);
+	free(s);
+	return 2;
+}
+
+int cli_parse_seed(const char *s, unsigned long *out)
+{
+	/* digits only: strtoull would take "-1" as 2^64-1, and " 5" */
+	if (!*s || strspn(s, "0123456789") != strlen(s))
+		return -1;
+	char *end;
+	errno = 0;
+	unsigned long long v = strtoull(s, &end, 10);
+	if (errno || *end || v > WALL_SEED_MAX)
+		return -1;
+	*out = (unsigned long)v;
+	return 0;
+}
+
+int cli_parse_time_limit(const char *s, double *out)
+{
+	double v;
+	if (text_parse_double(s, &v) || !(v > 0) || v > CLI_TIME_LIMIT_MAX)
+		return -1;
+	*out = v;
+	return 0;
+}
+
+const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
+			  int *missing)
+{
+	const char *a = argv[*i];
+	size_t len = strlen(name);
+	if (strncmp(a, name, len))
+		return NULL;
+	if (a[len] == '=')
+		return a + len + 1;
+	if (a[len])
+		return NULL;
+	if (*i + 1 >= argc) {
+		*missing = 1;
+		return NULL;
+	}
+	return argv[++*i];
+}
+
+int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
+			int *missing, long *n, int *n_set, unsigned long *seed,
+			int *seed_set, int *threads, double *depth)
+{
+	const char *v;
+	long l;
+	if ((v = cli_opt_value(argc, argv, i, "-n", missing))) {
+		if (text_parse_long(v, 1, 1000000000L, n))
+			return cli_usage_error(cmd, "-n: '%s' is not a "
+					       "sample count (1 to 10^9)", v);
+		*n_set = 1;
+	} else if ((v = cli_opt_value(argc, argv, i, "--seed", missing))) {
+		if (cli_parse_seed(v, seed))
+			return cli_usage_error(cmd, "--seed: '%s' is not a "
+					       "whole number from 0 to %llu "
+					       "(2^64-1)", v, WALL_SEED_MAX);
+		*seed_set = 1;
+	} else if ((v = cli_opt_value(argc, argv, i, "--threads", missing))) {
+		if (text_parse_long(v, 1, 1024, &l))
+			return cli_usage_error(cmd, "--threads: '%s' is not "
+					       "a thread count (1 to 1024)", v);
+		*threads = (int)l;
+	} else if (depth &&
+		   (v = cli_opt_value(argc, argv, i, "--depth", missing))) {
+		if (text_parse_double(v, depth) || *depth < 0 || *depth > 0.5)
+			return cli_usage_error(cmd, "--depth: '%s' is not a "
+					       "depth between 0 and 0.5", v);
+	} else {
+		return 0;
+	}
+	return 1;
+}
+
+double cli_worker_bytes(const struct wall *w)
+{
+	return 1048576.0 + 16384.0 * (double)w->nifaces +
+	       4096.0 * (double)w->nblocks;
+}
+
+/* Bytes the process may use: the machine's memory, or RLIMIT_AS. */
+static double memory_bytes(void)
+{
+	long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+	double m = pages > 0 && size > 0 ? (double)pages * (double)size :
+		   INFINITY;
+	struct rlimit rl;
+	if (getrlimit(RLIMIT_AS, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+	    (double)rl.rlim_cur < m)
+		m = (double)rl.rlim_cur;
+	return m;
+}
+
+int cli_threads(const char *cmd, const struct wall *w, int requested,
+		int def, long n, int *threads)
+{
+	int t = requested > 0 ? requested : def;
+	if (t < 1)
+		t = 1;
+	if (n > 0 && t > n)
+		t = (int)n;
+	double per = cli_worker_bytes(w), mem = memory_bytes();
+	/* half the memory for the workers: the rest is the wall, the
+	 * samples in flight, the tally and everything else */
+	double fit = floor(0.5 * mem / per);
+	if ((double)t > fit) {
+		int k = fit >= 1 ? (int)fit : 1;
+		if (requested > 0 && requested > k)
+			return cli_usage_error(cmd, "--threads %d: each worker "
+					       "needs about %.0f MB for this wall "
+					       "(%d interfaces), %.1f GB in all: "
+					       "use at most %d (half of the %.1f "
+					       "GB of memory)", requested,
+					       per / 1048576.0, w->nifaces,
+					       (double)t * per / 1e9, k,
+					       mem / 1e9);
+		t = k;
+	}
+	*threads = t;
+	/* and GLPK's allocator, on each of them, that half shared out: it
+	 * runs out inside its own accounting (src/lib/lp.c, "Out of memory"),
+	 * which fails a sample, before the kernel kills the process */
+	mc_worker_memory_set(0.5 * mem / (double)t / 1048576.0);
+	return 0;
+}
+
+/* Bounds of a file of test loads: a line, and the whole file (the wall
+ * loader's 16 MiB; a million loads fit in a tenth of it). */
+#define TESTS_LINE_MAX 4096
+#define TESTS_FILE_MAX ((size_t)16 << 20)
+
+/* A load as people write it: decimal digits, a point, an exponent -
+ * not strtod's hexadecimal, infinity or NaN. */
+static int decimal_number(const char *p, const char *end)
+{
+	int digits = 0;
+	for (const char *q = p; q < end; q++) {
+		if (isdigit((unsigned char)*q))
+			digits = 1;
+		else if (!strchr("+-.eE", *q))
+			return 0;
+	}
+	return digits;
+}
+
+enum sw_status cli_read_tests(const char *path, double **out, long *nout,
+			      char *err)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return sw_fail(err, SW_EINPUT, "%s: cannot open: %s", path,
+			       strerror(errno));
+	char *line = NULL;
+	size_t cap = 0, len, total = 0;
+	long lineno = 0, n = 0, xcap = 0;
+	double *x = NULL;
+	enum sw_status st = SW_OK;
+	enum text_line got = TEXT_LINE_EOF;
+	while (st == SW_OK && (got = text_getline(f, &line, &cap,
+						  TESTS_LINE_MAX, &len)) > 0) {
+		lineno++;
+		total += len + 1;
+		if (total > TESTS_FILE_MAX) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:1: more than %zu "
+				     "MiB: too large for a file of test loads",
+				     path, lineno, TESTS_FILE_MAX >> 20);
+			break;
+		}
+		char *hash = strchr(line, '#');
+		if (hash)
+			*hash = 0;
+		char *p = line;
+		while (isspace((unsigned char)*p))
+			p++;
+		if (!*p)
+			continue;
+		int col = (int)(p - line) + 1;
+		char *end;
+		errno = 0;
+		double v = strtod(p, &end);
+		if (end == p || errno == ERANGE || !isfinite(v) ||
+		    !decimal_number(p, end) ||
+		    (*end && !isspace((unsigned char)*end))) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a load must be "
+				     "a number, in decimal", path, lineno, col);
+			break;
+		}
+		if (v < 0) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
+				     "must be >= 0", path, lineno, col);
+			break;
+		}
+		char *q = end;
+		while (isspace((unsigned char)*q))
+			q++;
+		if (*q) {
+			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: one load per "
+				     "line (a '#' starts a comment)", path,
+				     lineno, (int)(q - line) + 1);
+			break;
+		}
+		if (n == xcap) {
+			xcap = xcap ? 2 * xcap : 64;
+			x = sw_xrealloc(x, sizeof(double) * (size_t)xcap);
+		}
+		x[n++] = v;
+	}
+	if (st == SW_OK && got == TEXT_LINE_NUL)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:%zu: a NUL byte in a text "
+			     "file", path, lineno + 1, len + 1);
+	else if (st == SW_OK && got == TEXT_LINE_LONG)
+		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: a line longer than %d "
+			     "bytes: not a file of test loads", path, lineno + 1,
+			     TESTS_LINE_MAX);
+	else if (st == SW_OK && got == TEXT_LINE_ERROR)
+		st = sw_fail(err, SW_EINPUT, "%s: cannot read: %s", path,
+			     strerror(errno));
+	free(line);
+	fclose(f);
+	if (st != SW_OK) {
+		free(x);
+		return st;
+	}
+	*out = x;
+	*nout = n;
+	return SW_OK;
+}
+
+int cli_tests_synthetic(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	if (!f)
+		return 0;
+	char line[512];
+	int yes = 0;
+	while (!yes && fgets(line, sizeof line, f)) {
+		char *hash = strchr(line, '#');
+		if (!hash)
+			continue;
+		for (char *p = hash; *p; p++)
+			*p = (char)tolower((unsigned char)*p);
+		yes = strstr(hash, "synthetic") != NULL;
+	}
+	fclose(f);
+	return yes;
+}
+
+void cli_shell_arg(FILE *f, const char *s)
+{
+	int plain = *s != 0;
+	for (const char *p = s; *p; p++)
+		if (!isalnum((unsigned char)*p) && !strchr("/._-+=,:", *p))
+			plain = 0;
+	if (plain) {
+		fprintf(f, " %s", s);
+		return;
+	}
+	fputs(" '", f);
+	for (const char *p = s; *p; p++) {
+		if (*p == '\'')
+			fputs("'\\''", f);
+		else
+			fputc(*p, f);
+	}
+	fputc('\'', f);
+}

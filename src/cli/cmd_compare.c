@@ -1,0 +1,625 @@
+/*
+ * cmd_compare.c - `slipwall compare`: the model's collapse loads against
+ * experimental ones (docs/run.md; the statistics in docs/statistics.md).
+ *
+ * The experimental loads come from the wall's `tests:` key or from a
+ * file of one load per line; the model's from a samples file of `run` or
+ * from a fresh Monte Carlo run (no file written).  The comparison is the
+ * two-sample Kolmogorov-Smirnov test (stats_ks2, x = model, y = tests,
+ * exact p-values) and the paper's Table 1: the characteristic value
+ * (p05) of each with its distribution-free 99 % interval.
+ *
+ * --fit-depth calibrates the one free parameter of the contact model,
+ * the imperfection depth d: a run per d on a grid over [0, 0.5], then a
+ * finer grid around the best, all with the same seed.  mc_positions
+ * draws the same uniforms for every d and scales them by d (common
+ * random numbers), so the profile of the KS distance against d is
+ * smooth rather than noisy.  The best d has the least KS distance (ties:
+ * the larger two-sided p-value, then the smaller d).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "slipwall/collapse.h"
+#include "override.h"
+#include "slipwall/json.h"
+#include "slipwall/mc.h"
+#include "slipwall/runlog.h"
+#include "slipwall/stats.h"
+
+#define CMD "compare"
+#define GRID_STEP 0.05		/* first pass: 0, 0.05, ..., 0.5 */
+#define FINE_STEP 0.01		/* second pass: +-0.04 around the best */
+#define FINE_HALF 4
+
+struct compare_args {
+	const char *wall, *tests, *samples;
+	long n;
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;
+	double depth;		/* < 0: the wall's */
+	int fit_depth;
+	int json;
+	struct overrides ov;	/* --friction, --set, ... */
+};
+
+/* One model run (a depth of the profile, or the only one). */
+struct model {
+	double depth;
+	long samples, accepted;
+	double *lam;		/* accepted lambda_min, n = accepted */
+	struct stats_summary s;
+	struct stats_ks ks;
+	int ks_ok;
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall compare WALL.yaml [--tests FILE] [--samples FILE.csv]\n"
+		"                        [-n N] [--seed S] [--threads T] [--depth D]\n"
+		"                        [--fit-depth] [--json] [--friction MU|BED,HEAD]\n"
+		"                        [--load-at X,Y] [--load-direction DX,DY]\n"
+		"                        [--set KEY=VALUE]...\n"
+		"\n"
+		"The model's collapse loads against experimental ones: two-sample\n"
+		"Kolmogorov-Smirnov test (exact p-values) and the characteristic\n"
+		"values (p05) with their 99 %% intervals, side by side.\n"
+		"\n"
+		"  --tests FILE        experimental loads, one per line, '#' comments\n"
+		"                      (default: the wall's tests: key)\n"
+		"  --samples FILE.csv  the model's loads from a samples file of 'run'\n"
+		"                      (default: run the Monte Carlo analysis now)\n"
+		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                      change the wall as for 'run'\n"
+		"  --fit-depth         find the depth d in [0, 0.5] whose loads match\n"
+		"                      the tests best (least KS distance)\n"
+		"  --json              print the result as JSON\n");
+}
+
+static int parse_args(int argc, char **argv, struct compare_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0, sr;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if (!strcmp(s, "--json")) {
+			a->json = 1;
+		} else if (!strcmp(s, "--fit-depth")) {
+			a->fit_depth = 1;
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
+			if (sr == 2)
+				return 2;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--tests: empty file name");
+			a->tests = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall compare WALL.yaml)");
+	if (a->samples && (a->fit_depth || a->n_set || a->seed_set ||
+			   a->threads || a->depth >= 0))
+		return cli_usage_error(CMD, "--samples takes the model's loads "
+				       "from a file: --fit-depth, -n, --seed, "
+				       "--threads and --depth do not apply");
+	if (a->fit_depth && a->depth >= 0)
+		return cli_usage_error(CMD, "--fit-depth searches the depth: "
+				       "--depth does not apply");
+	return 0;
+}
+
+/* ---- the model's loads -------------------------------------------------- */
+
+/* Run the pool to the end and keep the accepted loads (no file). */
+static enum sw_status run_model(const struct mc_config *cfg, struct model *md,
+				char *err)
+{
+	struct mc *m = mc_start(cfg, err);
+	if (!m)
+		return SW_EIO;
+	struct mc_item it;
+	mc_item_init(&it, cfg->w);
+	md->lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
+	md->samples = md->accepted = 0;
+	while (mc_pop(m, &it, -1) > 0) {
+		md->samples++;
+		if (it.status == SAMPLE_ACCEPTED)
+			md->lam[md->accepted++] = it.lambda_min;
+	}
+	mc_item_free(&it);
+	mc_free(m);
+	return SW_OK;
+}
+
+/* Statistics of a model run and its KS test against the tests. */
+static void analyse(struct model *md, const double *tests, long ntests)
+{
+	stats_summarise(md->lam, (size_t)md->accepted, &md->s);
+	md->ks_ok = md->accepted > 0 &&
+		    stats_ks2(md->lam, (size_t)md->accepted, tests,
+			      (size_t)ntests, &md->ks) == 0;
+}
+
+static int better(const struct model *a, const struct model *b)
+{
+	if (!a->ks_ok)
+		return 0;
+	if (!b->ks_ok)
+		return 1;
+	if (a->ks.d != b->ks.d)
+		return a->ks.d < b->ks.d;
+	if (a->ks.p_two_sided != b->ks.p_two_sided)
+		return a->ks.p_two_sided > b->ks.p_two_sided;
+	return a->depth < b->depth;
+}
+
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
+}
+
+static int cmp_depth(const void *x, const void *y)
+{
+	const struct model *a = x, *b = y;
+	return (a->depth > b->depth) - (a->depth < b->depth);
+}
+
+/* The depth profile: returns the profile (sorted by depth) in *prof,
+ * its length, and the index of the best run. */
+static enum sw_status fit_depth(struct mc_config *cfg, const double *tests,
+				long ntests, struct model **prof, int *nprof,
+				int *best, int verbose, char *err)
+{
+	int cap = 32, n = 0;
+	struct model *p = sw_xcalloc((size_t)cap, sizeof *p);
+	int coarse = (int)lround(0.5 / GRID_STEP);
+	int b = -1;
+	for (int pass = 0; pass < 2; pass++) {
+		double lo = 0, step = GRID_STEP;
+		int count = coarse + 1;
+		if (pass == 1) {
+			if (b < 0)
+				break;
+			lo = p[b].depth - FINE_HALF * FINE_STEP;
+			step = FINE_STEP;
+			count = 2 * FINE_HALF + 1;
+		}
+		for (int k = 0; k < count; k++) {
+			/* on the 0.01 lattice exactly, so points are shared */
+			double d = round((lo + k * step) * 100) / 100;
+			if (d < 0 || d > 0.5)
+				continue;
+			int seen = 0;
+			for (int i = 0; i < n; i++)
+				seen |= fabs(p[i].depth - d) < 1e-9;
+			if (seen)
+				continue;
+			if (n == cap) {
+				cap *= 2;
+				p = sw_xrealloc(p, sizeof *p * (size_t)cap);
+			}
+			struct model *md = &p[n];
+			memset(md, 0, sizeof *md);
+			md->depth = d;
+			cfg->depth = d;
+			enum sw_status st = run_model(cfg, md, err);
+			if (st != SW_OK) {
+				for (int i = 0; i <= n; i++)
+					free(p[i].lam);
+				free(p);
+				return st;
+			}
+			analyse(md, tests, ntests);
+			if (verbose) {
+				fprintf(stderr, "\rfit-depth: d = %.2f done (%d)\033[K",
+					d, n + 1);
+				fflush(stderr);
+			}
+			n++;
+			if (b < 0 || better(md, &p[b]))
+				b = n - 1;
+		}
+	}
+	if (verbose)
+		fprintf(stderr, "\r\033[K");
+	double bd = b >= 0 ? p[b].depth : NAN;
+	qsort(p, (size_t)n, sizeof *p, cmp_depth);
+	*best = -1;
+	for (int i = 0; i < n; i++)
+		if (p[i].depth == bd)
+			*best = i;
+	*prof = p;
+	*nprof = n;
+	return SW_OK;
+}
+
+/* ---- output ------------------------------------------------------------- */
+
+static void fmt_ci(char *buf, size_t len, const struct stats_summary *s)
+{
+	if (s->has_ci)
+		snprintf(buf, len, "[%.6g, %.6g]", s->p05_lo, s->p05_hi);
+	else if (s->n > 0)
+		snprintf(buf, len, "none (n < 90)");
+	else
+		snprintf(buf, len, "-");
+}
+
+static void print_table(const struct model *md, const struct stats_summary *ts,
+			long ntests)
+{
+	const struct stats_summary *ms = &md->s;
+	char a[64], b[64];
+	printf("%-24s %-26s %s\n", "", "model", "tests");
+	snprintf(a, sizeof a, "%ld", md->accepted);
+	printf("%-24s %-26s %ld\n", "values", a, ntests);
+	printf("%-24s %-26.6g %.6g\n", "min", ms->min, ts->min);
+	printf("%-24s %-26.6g %.6g\n", "p05 (characteristic)", ms->p05, ts->p05);
+	fmt_ci(a, sizeof a, ms);
+	fmt_ci(b, sizeof b, ts);
+	printf("%-24s %-26s %s\n", "  99 % interval", a, b);
+	printf("%-24s %-26.6g %.6g\n", "p50", ms->p50, ts->p50);
+	printf("%-24s %-26.6g %.6g\n", "p95", ms->p95, ts->p95);
+	printf("%-24s %-26.6g %.6g\n", "max", ms->max, ts->max);
+	printf("%-24s %-26.6g %.6g\n", "mean", ms->mean, ts->mean);
+	printf("%-24s %-26.6g %.6g\n", "std", ms->std, ts->std);
+	if (!ms->has_ci || !ts->has_ci)
+		printf("(no interval: needs at least 90 values)\n");
+}
+
+static void print_ks(const struct model *md)
+{
+	if (!md->ks_ok) {
+		printf("\nno Kolmogorov-Smirnov test: the model has no accepted "
+		       "sample\n");
+		return;
+	}
+	const struct stats_ks *k = &md->ks;
+	printf("\nKolmogorov-Smirnov, two samples (x = model, y = tests), %s "
+	       "p-values:\n", k->exact ? "exact" : "asymptotic");
+	printf("  D  = %.6g   (D+ = %.6g, D- = %.6g)\n", k->d, k->d_plus,
+	       k->d_minus);
+	printf("  p two-sided  %-12.6g H1: the distributions differ\n",
+	       k->p_two_sided);
+	printf("  p greater    %-12.6g H1: model CDF above the tests' "
+	       "(model < tests)\n", k->p_greater);
+	printf("  p less       %-12.6g H1: model CDF below the tests' "
+	       "(model > tests)\n", k->p_less);
+}
+
+static void json_summary(struct json *j, const struct stats_summary *s)
+{
+	json_key(j, "lambda");
+	json_object_begin(j);
+	json_key(j, "min");
+	json_double(j, s->min);
+	json_key(j, "p05");
+	json_double(j, s->p05);
+	json_key(j, "p50");
+	json_double(j, s->p50);
+	json_key(j, "p95");
+	json_double(j, s->p95);
+	json_key(j, "max");
+	json_double(j, s->max);
+	json_key(j, "mean");
+	json_double(j, s->mean);
+	json_key(j, "std");
+	json_double(j, s->std);
+	json_object_end(j);
+	json_key(j, "p05_ci99");
+	if (s->has_ci) {
+		json_array_begin(j);
+		json_double(j, s->p05_lo);
+		json_double(j, s->p05_hi);
+		json_array_end(j);
+	} else {
+		json_null(j);
+	}
+}
+
+static void json_ks(struct json *j, const struct model *md)
+{
+	if (!md->ks_ok) {
+		json_null(j);
+		return;
+	}
+	json_object_begin(j);
+	json_key(j, "statistic");
+	json_double(j, md->ks.d);
+	json_key(j, "d_plus");
+	json_double(j, md->ks.d_plus);
+	json_key(j, "d_minus");
+	json_double(j, md->ks.d_minus);
+	json_key(j, "p_two_sided");
+	json_double(j, md->ks.p_two_sided);
+	json_key(j, "p_less");
+	json_double(j, md->ks.p_less);
+	json_key(j, "p_greater");
+	json_double(j, md->ks.p_greater);
+	json_key(j, "exact");
+	json_bool(j, md->ks.exact);
+	json_object_end(j);
+}
+
+/* ---- the command -------------------------------------------------------- */
+
+int cmd_compare(int argc, char **argv)
+{
+	struct compare_args a;
+	int rc = parse_args(argc, argv, &a);
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
+		return rc < 0 ? 0 : rc;
+	}
+
+	char err[SW_ERRLEN];
+	int status = 0;
+	double *tests = NULL;
+	long ntests = 0;
+	struct model *prof = NULL, one;
+	int nprof = 0, best = -1;
+	memset(&one, 0, sizeof one);
+
+	if (a.tests) {
+		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
+			cli_errorf("%s", err);
+			status = 2;
+			goto out;
+		}
+	} else if (w->ntests > 0) {
+		ntests = w->ntests;
+		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
+		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
+	}
+	if (ntests == 0) {
+		/* w->tests is NULL when the file has no tests: key, an
+		 * empty array when its list of loads is empty */
+		status = cli_usage_error(CMD, "no experimental loads: %s%s%s",
+					 a.tests ? a.tests : a.wall,
+					 a.tests ? " holds no load" :
+					 w->tests ? ": its tests: loads list "
+					 "is empty" : " has no tests: key",
+					 a.tests ? "" : "; give --tests FILE");
+		goto out;
+	}
+	if (a.fit_depth && w->anywhere) {
+		status = cli_usage_error(CMD, "--fit-depth: %s draws its contact "
+					 "points anywhere (contacts.positions): "
+					 "there is no depth to fit", a.wall);
+		goto out;
+	}
+	if (a.depth >= 0 && w->anywhere) {
+		status = cli_usage_error(CMD, "--depth: %s draws its contact "
+					 "points anywhere: there is no depth",
+					 a.wall);
+		goto out;
+	}
+
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	if (a.n_set)
+		cfg.n = a.n;
+	if (a.seed_set)
+		cfg.seed = a.seed;
+	cfg.depth = a.depth;
+	if (cfg.n < 1) {
+		status = cli_usage_error(CMD, "no samples to compute (-n)");
+		goto out;
+	}
+	if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
+				  &cfg.threads))) {
+		goto out;
+	}
+
+	struct model *md = &one;
+	if (a.samples) {
+		long n;
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, w, &one.lam, &n, warn, err) !=
+		    SW_OK) {
+			cli_errorf("%s", err);
+			status = 2;
+			goto out;
+		}
+		if (warn[0])
+			cli_errorf("%s", warn);
+		one.samples = one.accepted = n;
+		one.depth = NAN;
+		analyse(&one, tests, ntests);
+	} else if (a.fit_depth) {
+		if (fit_depth(&cfg, tests, ntests, &prof, &nprof, &best,
+			      isatty(STDERR_FILENO), err) != SW_OK) {
+			cli_errorf("slipwall compare: %s", err);
+			status = 1;
+			goto out;
+		}
+		if (best < 0) {
+			cli_errorf("slipwall compare: no depth gave an "
+				"accepted sample: the analysis failed");
+			status = 1;
+			goto out;
+		}
+		md = &prof[best];
+	} else {
+		if (run_model(&cfg, &one, err) != SW_OK) {
+			cli_errorf("slipwall compare: %s", err);
+			status = 1;
+			goto out;
+		}
+		one.depth = cfg.depth < 0 ? w->depth : cfg.depth;
+		analyse(&one, tests, ntests);
+	}
+
+	struct stats_summary ts;
+	stats_summarise(tests, (size_t)ntests, &ts);
+
+	if (a.json) {
+		struct json j;
+		json_init(&j, stdout, 1);
+		json_object_begin(&j);
+		json_key(&j, "wall");
+		json_string(&j, a.wall);
+		override_json(&a.ov, &j);
+		json_key(&j, "model");
+		json_object_begin(&j);
+		json_key(&j, "source");
+		json_string(&j, a.samples ? a.samples : "run");
+		if (!a.samples) {
+			json_key(&j, "seed");
+			json_uint(&j, cfg.seed);
+			json_key(&j, "depth");
+			if (w->anywhere)
+				json_null(&j);
+			else
+				json_double(&j, md->depth);
+			json_key(&j, "samples");
+			json_int(&j, md->samples);
+		}
+		json_key(&j, "accepted");
+		json_int(&j, md->accepted);
+		json_summary(&j, &md->s);
+		json_object_end(&j);
+		json_key(&j, "tests");
+		json_object_begin(&j);
+		json_key(&j, "source");
+		json_string(&j, a.tests ? a.tests : "wall");
+		json_key(&j, "synthetic");
+		json_bool(&j, a.tests && cli_tests_synthetic(a.tests));
+		json_key(&j, "n");
+		json_int(&j, ntests);
+		json_summary(&j, &ts);
+		json_object_end(&j);
+		json_key(&j, "ks");
+		json_ks(&j, md);
+		if (a.fit_depth) {
+			json_key(&j, "fit_depth");
+			json_object_begin(&j);
+			json_key(&j, "best_depth");
+			json_double(&j, md->depth);
+			json_key(&j, "profile");
+			json_array_begin(&j);
+			for (int i = 0; i < nprof; i++) {
+				json_object_begin(&j);
+				json_key(&j, "depth");
+				json_double(&j, prof[i].depth);
+				json_key(&j, "samples");
+				json_int(&j, prof[i].samples);
+				json_key(&j, "accepted");
+				json_int(&j, prof[i].accepted);
+				json_key(&j, "p05");
+				json_double(&j, prof[i].s.p05);
+				json_key(&j, "ks_statistic");
+				json_double(&j, prof[i].ks_ok ? prof[i].ks.d : NAN);
+				json_key(&j, "p_two_sided");
+				json_double(&j, prof[i].ks_ok ?
+					    prof[i].ks.p_two_sided : NAN);
+				json_object_end(&j);
+			}
+			json_array_end(&j);
+			json_object_end(&j);
+		}
+		json_object_end(&j);
+		json_end(&j);
+	} else {
+		printf("%s  [%s]\n", cli_text(w->name ? w->name : a.wall),
+		       cli_text(a.wall));
+		if (a.ov.n > 0) {
+			char d[1024];
+			override_describe(&a.ov, d, sizeof d);
+			printf("overrides: %s\n", cli_text(d));
+		}
+		if (a.samples)
+			printf("model: %ld accepted loads from %s\n", md->accepted,
+			       cli_text(a.samples));
+		else
+			printf("model: %ld of %ld samples accepted (seed %lu, %s "
+			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
+			       a.fit_depth ? "best depth" : "depth", md->depth);
+		printf("tests: %ld loads from %s%s\nloads: %s\n\n", ntests,
+		       a.tests ? cli_text(a.tests) : "the wall's tests: key",
+		       a.tests && cli_tests_synthetic(a.tests) ?
+		       " (SYNTHETIC: not measurements, the file says so)" : "",
+		       w->nloads && w->loads[0].kind == LOAD_BODY
+			       ? "load factor (a body load: lambda times each block's weight)"
+			       : "N (lambda times the point load's reference magnitude)");
+		if (a.fit_depth) {
+			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
+			       "p05", "KS D", "p two-sided");
+			for (int i = 0; i < nprof; i++) {
+				const struct model *p = &prof[i];
+				printf("%-7.2f %5.1f %%    %-12.6g %-10.4g %-11.4g%s\n",
+				       p->depth, p->samples ? 100.0 *
+				       (double)p->accepted / (double)p->samples : 0.0,
+				       p->s.p05, p->ks_ok ? p->ks.d : NAN,
+				       p->ks_ok ? p->ks.p_two_sided : NAN,
+				       i == best ? "  <- best" : "");
+			}
+			printf("best depth %.2f: KS distance %.4g, p = %.4g "
+			       "(two-sided)\n\n", md->depth, md->ks.d,
+			       md->ks.p_two_sided);
+		}
+		print_table(md, &ts, ntests);
+		if (w->design_load > 0 && md->accepted > 0) {
+			double *sl = sw_xmalloc(sizeof(double) *
+						(size_t)md->accepted);
+			memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
+			qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
+			struct collapse cp;
+			collapse_at(sl, (size_t)md->accepted, w->design_load,
+				    "design_load", &cp);
+			free(sl);
+			collapse_print(stdout, "\nmodel: ", &cp);
+		}
+		print_ks(md);
+	}
+	if (md->accepted == 0) {
+		cli_errorf("slipwall compare: no model sample was accepted: "
+			"the analysis failed");
+		status = 1;
+	}
+out:
+	for (int i = 0; i < nprof; i++)
+		free(prof[i].lam);
+	free(prof);
+	free(one.lam);
+	free(tests);
+	wall_free(w);
+	override_free(&a.ov);
+	return status;
+}

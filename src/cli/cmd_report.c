@@ -1,0 +1,584 @@
+/*
+ * cmd_report.c - `slipwall report`: the paper's figures and a summary of
+ * a run, written into a directory (docs/report.md is the user's page).
+ *
+ * The model's loads come from a fresh Monte Carlo run (mc.c, like `run`)
+ * or from a samples file of `run --samples`.  A samples file keeps the
+ * loads and the contact positions but not the mechanisms, so for Fig. 6
+ * the file's positions are replayed through the pool (`run --positions`
+ * does the same); the figures use the file's loads, and the summary says
+ * whether the replay reproduced them.  The experimental loads come from
+ * --tests FILE (one per line, '#' comments) or the wall's `tests:` key.
+ * The single-solution values of Fig. 10 are computed here on this thread
+ * (solve_run): standard and gilbert always, global only for walls of at
+ * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
+ * Then report_write() (report.c) draws everything.
+ *
+ * SIGINT, SIGTERM and SIGHUP stop the command at once wherever it is
+ * (the pool is stopped, report_write is cancelled between two files),
+ * and the report directory is then as it was: report_write writes into
+ * a directory beside it and puts it in place only when everything is
+ * written.  The exit status is 1, "interrupted", as for `run`.
+ */
+#include <ctype.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "summary.h"
+#include "slipwall/collapse.h"
+#include "override.h"
+#include "slipwall/mc.h"
+#include "slipwall/report.h"
+#include "slipwall/runlog.h"
+#include "slipwall/solve.h"
+#include "slipwall/tally.h"
+
+#define CMD "report"
+#define GLOBAL_MAX_BLOCKS 12	/* the mixed-integer program beyond is slow */
+#define GLOBAL_TIME 10.0	/* default --time-limit, s */
+
+struct report_args {
+	const char *wall, *samples, *tests, *out;
+	long n;
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;
+	double depth;		/* < 0: the wall's */
+	double time_limit;
+	struct overrides ov;	/* --friction, --set, ... */
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall report WALL.yaml --out DIR [--samples FILE.csv]\n"
+		"                       [--tests FILE] [-n N] [--seed S] [--threads T]\n"
+		"                       [--depth D] [--time-limit S]\n"
+		"\n"
+		"Figures (SVG, PDF and PNG) and a Markdown summary of a Monte Carlo\n"
+		"run: the paper's Figs. 6, 8, 9 and 10, the convergence of p05 and\n"
+		"Table 1, written into DIR (created if missing).\n"
+		"\n"
+		"  --out DIR           where to write (required)\n"
+		"  --samples FILE.csv  the loads of a samples file of 'run' (its\n"
+		"                      contact positions are replayed for the mechanisms)\n"
+		"  --tests FILE        experimental loads, one per line, '#' comments\n"
+		"                      (default: the wall's tests: key)\n"
+		"  -n N, --seed S, --threads T, --depth D   as for 'run'\n"
+		"  --friction, --load-at, --load-direction, --set KEY=VALUE\n"
+		"                       change the wall as for 'run'; the report\n"
+		"                       lists them, its command line repeats them\n"
+		"  --time-limit S      for the global method (walls of at most %d\n"
+		"                      blocks), default %g s\n", GLOBAL_MAX_BLOCKS,
+		GLOBAL_TIME);
+}
+
+static int parse_args(int argc, char **argv, struct report_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	a->time_limit = GLOBAL_TIME;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0, sr;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
+			if (sr == 2)
+				return 2;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
+					  &missing))) {
+			if (cli_parse_time_limit(v, &a->time_limit))
+				return cli_usage_error(CMD, "--time-limit: '%s' is "
+						       "not a number of seconds "
+						       "> 0 and <= %g", v,
+						       CLI_TIME_LIMIT_MAX);
+		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--tests: empty file name");
+			a->tests = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--out", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--out: empty directory name");
+			a->out = v;
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall report "
+				       "WALL.yaml --out DIR)");
+	if (!a->out)
+		return cli_usage_error(CMD, "where to? (--out DIR)");
+	if (a->samples && (a->n_set || a->seed_set || a->depth >= 0))
+		return cli_usage_error(CMD, "--samples takes the loads from a "
+				       "file: -n, --seed and --depth do not apply");
+	return 0;
+}
+
+
+/* ---- signals ----------------------------------------------------------- */
+
+/* The signal that arrived and the pool to stop: globals because a
+ * signal handler has no other way to reach them. */
+static volatile sig_atomic_t report_signal;
+static struct mc *volatile report_pool;
+
+static void on_signal(int sig)
+{
+	report_signal = sig;
+	struct mc *m = report_pool;
+	if (m)
+		mc_stop(m);
+}
+
+static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* Catch the three (a signal ignored at start stays ignored); old gets
+ * the handlers to put back. */
+static void signals_catch(struct sigaction old[3])
+{
+	struct sigaction sa;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART;
+	for (int k = 0; k < 3; k++) {
+		sigaction(catch_sigs[k], NULL, &old[k]);
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &sa, NULL);
+	}
+}
+
+static void signals_restore(const struct sigaction old[3])
+{
+	for (int k = 0; k < 3; k++)
+		if (old[k].sa_handler != SIG_IGN)
+			sigaction(catch_sigs[k], &old[k], NULL);
+}
+
+/* Run the pool to the end: the tally and, in sample order, the accepted
+ * loads (when lam is not NULL).  SW_EINTR when a signal stopped it. */
+static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
+			       double **lam, long *nlam, char *err)
+{
+	struct mc *m = mc_start(cfg, err);
+	if (!m)
+		return SW_EANALYSIS;
+	report_pool = m;
+	if (report_signal)
+		mc_stop(m);
+	int tty = isatty(STDERR_FILENO);
+	struct mc_item it;
+	mc_item_init(&it, cfg->w);
+	if (lam) {
+		*lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
+		*nlam = 0;
+	}
+	int got;
+	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
+		if (got > 0) {
+			tally_add(t, &it);
+			if (lam && it.status == SAMPLE_ACCEPTED)
+				(*lam)[(*nlam)++] = it.lambda_min;
+		}
+		if (tty) {
+			fprintf(stderr, "\rreport: %ld/%ld samples\033[K",
+				t->samples, cfg->n);
+			fflush(stderr);
+		}
+	}
+	if (tty)
+		fprintf(stderr, "\r\033[K");
+	report_pool = NULL;
+	mc_item_free(&it);
+	mc_free(m);
+	if (report_signal)
+		return sw_fail(err, SW_EINTR, "interrupted (%s): no report "
+			       "written", strsignal(report_signal));
+	return SW_OK;
+}
+
+/* The single-solution values (this thread's GLPK): standard and
+ * gilbert from the summary beside a samples file when it has them (sf
+ * not NULL), else computed; each step said on stderr as it starts and
+ * ends, since on a large wall one takes minutes. */
+static void single_solutions(const struct wall *w, double tlim,
+			     const struct summary_file *sf,
+			     struct report_solution *sol, int *nsol)
+{
+	static const enum solve_method ms[3] = {SOLVE_STANDARD, SOLVE_GILBERT,
+						SOLVE_GLOBAL};
+	*nsol = 0;
+	for (int i = 0; i < 3; i++) {
+		struct report_solution *s = &sol[(*nsol)++];
+		memset(s, 0, sizeof *s);
+		s->method = solve_method_name(ms[i]);
+		s->lambda = NAN;
+		if (ms[i] == SOLVE_GLOBAL && w->nfree > GLOBAL_MAX_BLOCKS) {
+			snprintf(s->note, sizeof s->note, "not run: %d blocks "
+				 "(the mixed-integer program runs for walls of at "
+				 "most %d)", w->nfree, GLOBAL_MAX_BLOCKS);
+			continue;
+		}
+		int has = !sf ? 0 : ms[i] == SOLVE_STANDARD ? sf->has_standard :
+			  ms[i] == SOLVE_GILBERT ? sf->has_gilbert : 0;
+		if (has) {
+			s->ran = s->found = 1;
+			s->lambda = ms[i] == SOLVE_STANDARD ? sf->standard :
+				    sf->gilbert;
+			snprintf(s->note, sizeof s->note, "from %.120s",
+				 sf->path);
+			fprintf(stderr, "report: %s: %.6g, from %s (not "
+				"recomputed)\n", s->method, s->lambda, sf->path);
+			continue;
+		}
+		struct solve_opts o;
+		struct solve_result r;
+		char err[SW_ERRLEN];
+		solve_opts_default(&o, ms[i]);
+		o.time_limit = tlim;
+		s->ran = 1;
+		fprintf(stderr, "report: %s: computing the single solution "
+			"(%d blocks)%s...\n", s->method, w->nfree,
+			ms[i] == SOLVE_GLOBAL ? ", within --time-limit" : "");
+		struct timespec t0, t1;
+		clock_gettime(CLOCK_MONOTONIC, &t0);
+		enum sw_status sst = solve_run(w, &o, &r, err);
+		clock_gettime(CLOCK_MONOTONIC, &t1);
+		fprintf(stderr, "report: %s: %s (%.1f s)\n", s->method,
+			sst != SW_OK ? "failed" : isfinite(r.lambda) ? "done" :
+			"no load", (double)(t1.tv_sec - t0.tv_sec) +
+			1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+		if (sst != SW_OK) {
+			snprintf(s->note, sizeof s->note, "%.159s", err);
+		} else if (r.status == SAMPLE_ACCEPTED ||
+			   (ms[i] == SOLVE_GILBERT && isfinite(r.lambda))) {
+			s->found = isfinite(r.lambda);
+			s->lambda = r.lambda;
+			if (ms[i] == SOLVE_GILBERT)
+				snprintf(s->note, sizeof s->note, "%s after %d "
+					 "iterations%s", r.converged ? "converged" :
+					 "NOT converged", r.iterations,
+					 r.status == SAMPLE_ACCEPTED ? "" :
+					 "; no onset-of-collapse mechanism");
+			else if (ms[i] == SOLVE_GLOBAL)
+				snprintf(s->note, sizeof s->note, "%s (%.1f s)",
+					 r.proven ? "optimal, proven" :
+					 "best found within the time limit, not "
+					 "proven", r.seconds);
+			else
+				snprintf(s->note, sizeof s->note, "associative: "
+					 "an upper value");
+		} else {
+			snprintf(s->note, sizeof s->note, "%s",
+				 sample_status_text(r.status));
+		}
+		solve_result_free(&r);
+	}
+}
+
+static int cmp_load(const void *x, const void *y)
+{
+	double a = *(const double *)x, b = *(const double *)y;
+	return (a > b) - (a < b);
+}
+
+/* The command that reproduces the report, malloc'd: the paths are the
+ * user's, of any length. */
+static char *command_line(const struct report_args *a,
+			  const struct mc_config *cfg)
+{
+	char *buf = NULL;
+	size_t len = 0;
+	FILE *f = open_memstream(&buf, &len);
+	if (!f)
+		return sw_xstrdup("slipwall report");
+	fputs("slipwall report", f);
+	cli_shell_arg(f, a->wall);
+	if (a->samples) {
+		fputs(" --samples", f);
+		cli_shell_arg(f, a->samples);
+	} else {
+		fprintf(f, " -n %ld --seed %lu", cfg->n, cfg->seed);
+		if (a->depth >= 0)
+			fprintf(f, " --depth %.17g", a->depth);
+	}
+	override_args(&a->ov, f);
+	if (a->tests) {
+		fputs(" --tests", f);
+		cli_shell_arg(f, a->tests);
+	}
+	fputs(" --out", f);
+	cli_shell_arg(f, a->out);
+	if (fclose(f) != 0 || !buf) {
+		free(buf);
+		return sw_xstrdup("slipwall report");
+	}
+	return buf;
+}
+
+static int report_main(int argc, char **argv)
+{
+	struct report_args a;
+	int rc = parse_args(argc, argv, &a);
+	struct wall *w = NULL;
+	if (!rc)
+		rc = override_load(CMD, a.wall, &a.ov, &w);
+	if (rc) {
+		override_free(&a.ov);
+		return rc < 0 ? 0 : rc;
+	}
+
+	char err[SW_ERRLEN], note[2048] = "";
+	int status = 0;
+	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
+	char *cmdline = NULL, *tsrc = NULL;
+	long ntests = 0, nlam = 0;
+	struct tally t;
+	tally_init(&t, w);
+
+	if (a.depth >= 0 && w->anywhere) {
+		status = cli_usage_error(CMD, "--depth: %s draws its contact "
+					 "points anywhere: there is no depth",
+					 a.wall);
+		goto out;
+	}
+	if (a.tests) {
+		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
+			cli_errorf("%s", err);
+			status = 2;
+			goto out;
+		}
+	} else if (w->ntests > 0) {
+		ntests = w->ntests;
+		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
+		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
+	}
+
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	if (a.samples) {
+		long rows;
+		char warn[SW_ERRLEN];
+		if (runlog_read_loads(a.samples, w, &lam, &nlam, NULL, err) !=
+		    SW_OK ||
+		    runlog_read_positions(a.samples, w, &xi, &rows, warn,
+					  err) != SW_OK) {
+			cli_errorf("%s", err);
+			status = 2;
+			goto out;
+		}
+		if (warn[0])
+			cli_errorf("%s", warn);
+		if (rows < 1) {
+			cli_errorf("%s: no samples", a.samples);
+			status = 2;
+			goto out;
+		}
+		cfg.positions = xi;
+		cfg.n = rows;
+		if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
+		long nrep = 0;
+		fprintf(stderr, "report: %ld loads from %s; replaying their "
+			"contact positions to recover the mechanisms (the file "
+			"holds none)...\n", nlam, cli_text(a.samples));
+		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
+		if (pst != SW_OK) {
+			cli_errorf("slipwall report: %s", err);
+			status = sw_status_exit(pst);
+			goto out;
+		}
+		long differ = nrep != nlam;
+		for (long i = 0; i < nrep && i < nlam; i++)
+			differ += replay[i] != lam[i];
+		if (differ)
+			snprintf(note, sizeof note, "**Warning:** replaying the "
+				 "contact positions of `%s` on this wall did not "
+				 "give the file's loads (%ld accepted, the file has "
+				 "%ld; %ld differences): the mechanisms and counts "
+				 "are those of the replay, the plotted loads those "
+				 "of the file. Was the wall changed?", a.samples,
+				 nrep, nlam, differ);
+		else
+			snprintf(note, sizeof note, "The loads are those of `%s`; "
+				 "its contact positions were replayed to recover "
+				 "the mechanisms, and gave the same loads.",
+				 a.samples);
+	} else {
+		cfg.n = a.n_set ? a.n : w->samples;
+		if (a.seed_set)
+			cfg.seed = a.seed;
+		cfg.depth = a.depth;
+		if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
+					  &cfg.threads)))
+			goto out;
+		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
+		if (pst != SW_OK) {
+			cli_errorf("slipwall report: %s", err);
+			status = sw_status_exit(pst);
+			goto out;
+		}
+	}
+	if (nlam == 0) {
+		cli_errorf("slipwall report: no accepted sample (%ld "
+			"computed): nothing to plot", t.samples);
+		status = 1;
+		goto out;
+	}
+
+	/* with a samples file, what its JSON summary holds (the workbench
+	 * saves X.json beside X.csv): standard and gilbert of the same wall
+	 * file, unless the wall is changed here */
+	struct summary_file sfile, *sf = NULL;
+	if (a.samples && summary_beside(a.samples, &sfile) == 0) {
+		struct stat s1, s2;
+		int same = sfile.wall[0] && stat(sfile.wall, &s1) == 0 &&
+			   stat(a.wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
+			   s1.st_ino == s2.st_ino;
+		if (!same)
+			fprintf(stderr, "report: %s is the summary of %s, not of "
+				"%s: its single solutions are not reused\n",
+				sfile.path, sfile.wall[0] ? sfile.wall : "?",
+				a.wall);
+		else if (a.ov.n > 0)
+			fprintf(stderr, "report: the wall is changed here "
+				"(--friction, --set, ...): %s's single solutions "
+				"are not reused\n", sfile.path);
+		else
+			sf = &sfile;
+	}
+	struct report_solution sol[3];
+	int nsol;
+	single_solutions(w, a.time_limit, sf, sol, &nsol);
+
+	cmdline = command_line(&a, &cfg);
+	if (a.tests) {
+		const char *syn = cli_tests_synthetic(a.tests) ?
+			" (**synthetic**: not measurements, the file says so)" : "";
+		size_t len = strlen(a.tests) + strlen(syn) + 3;
+		tsrc = sw_xmalloc(len);
+		snprintf(tsrc, len, "`%s`%s", a.tests, syn);
+	} else {
+		tsrc = sw_xstrdup("the wall's tests: key");
+	}
+	if (w->design_load > 0) {
+		/* the probability of collapse at the design load */
+		double *sl = sw_xmalloc(sizeof(double) * (size_t)nlam);
+		memcpy(sl, lam, sizeof(double) * (size_t)nlam);
+		qsort(sl, (size_t)nlam, sizeof(double), cmp_load);
+		struct collapse cp;
+		collapse_at(sl, (size_t)nlam, w->design_load, "design_load", &cp);
+		free(sl);
+		size_t u = strlen(note);
+		snprintf(note + u, sizeof note - u, "%sDesign load %.6g "
+			 "(analysis.design_load): P(λ_min ≤ %.6g) = %.4g (%zu of "
+			 "%zu accepted samples), 99 %% interval [%.4g, %.4g] (exact "
+			 "binomial); see the fragility figure.", u ? " " : "",
+			 cp.load, cp.load, cp.p, cp.k, cp.n, cp.lo, cp.hi);
+	}
+	if (a.ov.n > 0) {
+		/* the overrides in the summary, after the replay's note */
+		char d[1024];
+		size_t u = strlen(note);
+		override_describe(&a.ov, d, sizeof d);
+		snprintf(note + u, sizeof note - u, "%sThe wall file's values "
+			 "were changed for this report: %s.", u ? " " : "", d);
+	}
+	struct report_input in = {
+		.w = w,
+		.lam = lam,
+		.nlam = nlam,
+		.mech = &t,
+		.tests = tests,
+		.ntests = ntests,
+		.sol = sol,
+		.nsol = nsol,
+		.run = {
+			.wall_path = a.wall,
+			.version = sw_version(),
+			.command = cmdline,
+			.samples_file = a.samples,
+			.tests_source = tsrc,
+			.seed_known = !a.samples,
+			.seed = cfg.seed,
+			.requested = a.samples ? 0 : cfg.n,
+			.threads = cfg.threads,
+			.depth = a.samples ? NAN : a.depth >= 0 ? a.depth : w->depth,
+			.anywhere = w->anywhere,
+			.has_counts = 1,
+			.samples = t.samples,
+			.accepted = t.accepted,
+			.note = *note ? note : NULL,
+		},
+	};
+	memcpy(in.run.rejected, t.rejected, sizeof t.rejected);
+	struct report_opts ro;
+	report_opts_default(&ro);
+	ro.cancel = &report_signal;
+	if (report_write(&in, a.out, &ro, err) != SW_OK) {
+		cli_errorf("slipwall report: %s", err);
+		status = 1;
+		goto out;
+	}
+	printf("%s/report.md: %ld accepted loads of %ld samples, %ld tests, "
+	       "%d mechanisms\n", cli_text(a.out), nlam, t.samples, ntests,
+	       t.nmech);
+	if (!ntests)
+		printf("no experimental loads: the figures show the model "
+		       "alone\n");
+	else if (a.tests && cli_tests_synthetic(a.tests))
+		printf("the experimental loads of %s are synthetic (not "
+		       "measurements, the file says so)\n", a.tests);
+out:
+	report_cleanup();
+	free(cmdline);
+	free(tsrc);
+	tally_free(&t);
+	free(lam);
+	free(replay);
+	free(xi);
+	free(tests);
+	wall_free(w);
+	override_free(&a.ov);
+	return status;
+}
+
+int cmd_report(int argc, char **argv)
+{
+	struct sigaction old[3];
+	report_signal = 0;
+	signals_catch(old);
+	int rc = report_main(argc, argv);
+	signals_restore(old);
+	return rc;
+}

@@ -1,0 +1,946 @@
+/*
+ * cmd_run.c - `slipwall run`: the Monte Carlo analysis from the command
+ * line (SPEC sections 2 and 4; docs/run.md is the user's page).
+ *
+ * The worker pool (mc.c) computes the samples; this thread pops them in
+ * index order, writes each one's row to the samples file (runlog.c: one
+ * write(2) per row), feeds the tally (tally.c) and, when stderr is a
+ * terminal, redraws a progress line at most ten times a second.  At the
+ * end it prints the summary, for people or as JSON.
+ *
+ * Stopping: SIGINT, SIGTERM and SIGHUP arrive on this thread (mc_start
+ * blocks them in the workers).  The handler only records the signal and
+ * calls mc_stop(), which is async-signal-safe (a signal ignored when the
+ * program starts, as under nohup, stays ignored); the handler is one-shot
+ * (SA_RESETHAND), so a second Ctrl-C kills at once - the samples file
+ * still holds complete rows only.  After a stop the loop keeps popping:
+ * every sample finished in order is written and counted, then the
+ * summary of what was done is printed and the exit status is 1
+ * ("interrupted", SW_EINTR): the run did not do what was asked.
+ *
+ * --until-ci W stops at the first sample count at which the 99 %
+ * interval of p05 is narrower than W times p05.  Samples the pool
+ * finished beyond that point are discarded, so the result does not
+ * depend on the thread count or the timing.  Finding the interval's
+ * ranks costs O(n) (stats_quantile_ci_ranks), so the test is made after
+ * every accepted sample up to 1000 of them, then after every
+ * ceil(n/1000)-th: a stop at most 0.1 % late, at a constant cost per
+ * sample.  The progress line refreshes its interval at most once a
+ * second beyond 20000 accepted samples, for the same reason.
+ *
+ * Under mpirun (an MPI build, docs/cluster.md) every rank sets up the
+ * same run and computes its share of the samples (cluster.c); rank 0
+ * reads the merged stream instead of its own pool - the `struct source`
+ * below - and does all of the above; the other ranks only send.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "cluster.h"
+#include "slipwall/collapse.h"
+#include "override.h"
+#include "slipwall/json.h"
+#include "slipwall/mc.h"
+#include "slipwall/runlog.h"
+#include "slipwall/sample.h"
+#include "slipwall/stats.h"
+#include "slipwall/tally.h"
+
+#define CMD "run"
+#define TOP_MECHANISMS 8	/* in the summary for people */
+
+struct run_args {
+	const char *wall;
+	const char *samples;	/* --samples: the CSV to write */
+	const char *positions;	/* --positions: a CSV to replay */
+	long n;			/* 0: the wall's analysis.samples */
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;		/* 0: the number of CPUs */
+	double depth;		/* < 0: the wall's */
+	double until_ci;	/* 0: off */
+	int json;
+	int slp;		/* --slp: enum sample_slp */
+	struct overrides ov;	/* --friction, --set, ... */
+	double at;		/* --at LOAD; < 0: none */
+};
+
+enum stop_reason {
+	STOP_NONE, STOP_SIGNAL, STOP_UNTIL_CI, STOP_WRITE, STOP_LOST
+};
+
+/* ---- where the samples come from ------------------------------------- */
+
+/* The samples in index order: this process's pool (mc.c), or on rank 0
+ * of an MPI job the merged stream of every rank's pool (cluster.c).
+ * stop() is async-signal-safe (the signal handler calls it); status()
+ * says, after pop() returned -1, whether another rank cut the stream
+ * short: SW_EINTR (a signal there) or SW_EIO (a rank lost), with a
+ * message. */
+struct source {
+	void *ctx;
+	int (*pop)(void *ctx, struct mc_item *it, int wait_ms);
+	void (*stop)(void *ctx, int sig);
+	enum sw_status (*status)(void *ctx, char *err);
+};
+
+static int pool_pop(void *m, struct mc_item *it, int wait_ms)
+{
+	return mc_pop(m, it, wait_ms);
+}
+
+static void pool_stop(void *m, int sig)
+{
+	(void)sig;
+	mc_stop(m);
+}
+
+static enum sw_status pool_status(void *m, char *err)
+{
+	(void)m;
+	(void)err;
+	return SW_OK;
+}
+
+static int job_pop(void *c, struct mc_item *it, int wait_ms)
+{
+	return cluster_pop(c, it, wait_ms);
+}
+
+static void job_stop(void *c, int sig)
+{
+	cluster_stop(c, sig);
+}
+
+static enum sw_status job_status(void *c, char *err)
+{
+	return cluster_status(c, err);
+}
+
+/* ---- signals ----------------------------------------------------------- */
+
+/* The source and the signal that stopped it.  Globals because a signal
+ * handler has no other way to reach them; set before the handlers are
+ * installed, cleared after they are removed. */
+static const struct source *volatile run_src;
+static volatile sig_atomic_t run_signal;
+
+static void on_signal(int sig)
+{
+	run_signal = sig;
+	if (run_src)
+		run_src->stop(run_src->ctx, sig);
+}
+
+static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+
+/* The handlers that were there before. */
+struct caught {
+	struct sigaction old[3];
+	int on[3];
+};
+
+static void signals_catch(const struct source *src, struct caught *c)
+{
+	struct sigaction sa;
+	run_signal = 0;
+	run_src = src;
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_signal;
+	sigemptyset(&sa.sa_mask);
+	sa.sa_flags = SA_RESTART | SA_RESETHAND;
+	/* a signal ignored at start stays ignored (nohup, a background job
+	 * of a shell without job control) */
+	for (int k = 0; k < 3; k++) {
+		sigaction(catch_sigs[k], NULL, &c->old[k]);
+		c->on[k] = c->old[k].sa_handler != SIG_IGN;
+		if (c->on[k])
+			sigaction(catch_sigs[k], &sa, NULL);
+	}
+}
+
+static void signals_restore(struct caught *c)
+{
+	for (int k = 0; k < 3; k++)
+		if (c->on[k])
+			sigaction(catch_sigs[k], &c->old[k], NULL);
+	run_src = NULL;
+}
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
+		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
+		"                    [--depth D] [--until-ci W] [--at LOAD] [--json]\n"
+		"                    [--friction MU|BED,HEAD] [--load-at X,Y]\n"
+		"                    [--load-direction DX,DY] [--set KEY=VALUE]...\n"
+		"                    [--slp plain]\n"
+		"\n"
+		"Monte Carlo analysis (docs/method.md): N samples of the collapse\n"
+		"load with random contact points, their statistics and mechanisms.\n"
+		"\n"
+		"  -n N                 samples (default: the wall's analysis.samples)\n"
+		"  --seed S             random seed (default: the wall's analysis.seed)\n"
+		"  --threads T          worker threads (default: the number of CPUs);\n"
+		"                       the results do not depend on it\n"
+		"  --samples FILE.csv   write one row per sample, as it is computed\n"
+		"  --positions FILE.csv replay the contact positions of a samples file\n"
+		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
+		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
+		"                       of the bed and head joints\n"
+		"  --load-at X,Y        where the wall's live load acts\n"
+		"  --load-direction DX,DY   its direction\n"
+		"  --set KEY=VALUE      any key of the wall file (material.unit_weight=\n"
+		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
+		"                       each override changes the wall as editing its\n"
+		"                       file would, and the summary lists them\n"
+		"  --at LOAD            the probability of collapse at LOAD,\n"
+		"                       P(lambda_min <= LOAD) among the accepted samples,\n"
+		"                       with its exact 99 %% interval (a wall's\n"
+		"                       analysis.design_load is always reported)\n"
+		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
+		"                       than W times p05 (at most N samples)\n"
+		"  --slp plain          the SLP's plain iteration, without the\n"
+		"                       acceleration that is the default (the same\n"
+		"                       fixed point, for comparison)\n"
+		"  --json               print the summary as JSON\n"
+		"\n"
+		"Ctrl-C stops cleanly: the summary of the samples done, exit status 1.\n");
+}
+
+/* "--opt VALUE" or "--opt=VALUE": the value, advancing *i; NULL if this
+ * is not the option.  *missing is set when the value is absent. */
+static int parse_args(int argc, char **argv, struct run_args *a)
+{
+	memset(a, 0, sizeof *a);
+	a->depth = -1;
+	a->slp = SAMPLE_SLP_ANDERSON;
+	a->at = -1;
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0, sr;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if (!strcmp(s, "--json")) {
+			a->json = 1;
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     &a->depth))) {
+			if (sr == 2)
+				return 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
+			if (sr == 2)
+				return 2;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--samples: empty file name");
+			a->samples = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--positions", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--positions: empty file name");
+			a->positions = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--slp", &missing))) {
+			if (!strcmp(v, "plain"))
+				a->slp = SAMPLE_SLP_PLAIN;
+			else if (!strcmp(v, "anderson"))
+				a->slp = SAMPLE_SLP_ANDERSON;
+			else
+				return cli_usage_error(CMD, "--slp: '%s' is not "
+						       "plain or anderson", v);
+		} else if ((v = cli_opt_value(argc, argv, &i, "--at", &missing))) {
+			if (text_parse_double(v, &a->at) || a->at < 0)
+				return cli_usage_error(CMD, "--at: '%s' is not a "
+						       "load >= 0", v);
+		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
+			if (text_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
+				return cli_usage_error(CMD, "--until-ci: '%s' is not "
+						       "a relative width > 0", v);
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall run WALL.yaml)");
+	if (a->positions && (a->seed_set || a->depth >= 0))
+		return cli_usage_error(CMD, "--positions replays the contact "
+				       "positions of a file: --seed and --depth "
+				       "do not apply");
+	return 0;
+}
+
+/* ---- the 99 % interval of p05, incrementally ------------------------- */
+
+/* The ranks of the interval depend on n only; they are found again only
+ * when the number of accepted samples changed. */
+struct ci_state {
+	size_t n;		/* accepted count the ranks belong to */
+	int ok;
+	size_t lo, hi;
+};
+
+static int p05_interval(const struct tally *t, struct ci_state *c,
+			double *p05, double *lo, double *hi)
+{
+	size_t n = t->lam.n;
+	if (n != c->n) {
+		c->n = n;
+		c->ok = stats_quantile_ci_ranks(n, 0.05, 0.99, &c->lo,
+						&c->hi) == 0;
+	}
+	*p05 = stats_quantile_sorted(t->lam.x, n, 0.05);
+	if (!c->ok) {
+		*lo = *hi = NAN;
+		return 0;
+	}
+	*lo = t->lam.x[c->lo - 1];
+	*hi = t->lam.x[c->hi - 1];
+	return 1;
+}
+
+/* Is the --until-ci test due after the n-th accepted sample? */
+static int ci_due(size_t n)
+{
+	return n <= 1000 || n % ((n + 999) / 1000) == 0;
+}
+
+/* ---- the progress line ------------------------------------------------ */
+
+static void fmt_duration(char *buf, size_t len, double s)
+{
+	if (!isfinite(s) || s < 0) {
+		snprintf(buf, len, "?");
+		return;
+	}
+	long t = (long)(s + 0.5);
+	if (t >= 3600)
+		snprintf(buf, len, "%ld:%02ld:%02ld", t / 3600, t / 60 % 60, t % 60);
+	else
+		snprintf(buf, len, "%ld:%02ld", t / 60, t % 60);
+}
+
+/* What the progress line shows of the interval, refreshed sparingly. */
+struct progress_ci {
+	struct ci_state ci;
+	double when;		/* elapsed time of the last refresh */
+	int has;
+	double p05, lo, hi;
+};
+
+static void progress(const struct tally *t, struct progress_ci *pc, long n,
+		     double elapsed, double est)
+{
+	double rate = elapsed > 0 ? (double)t->samples / elapsed : 0;
+	char left[32], p05s[96] = "";
+	fmt_duration(left, sizeof left, rate > 0 ? (double)(n - t->samples) /
+		     rate : NAN);
+	if (t->lam.n > 0 && (t->lam.n <= 20000 || elapsed - pc->when >= 1)) {
+		pc->has = p05_interval(t, &pc->ci, &pc->p05, &pc->lo, &pc->hi);
+		pc->when = elapsed;
+	}
+	if (t->lam.n > 0) {
+		if (pc->has)
+			snprintf(p05s, sizeof p05s, "  p05 %.4g [%.4g, %.4g]",
+				 pc->p05, pc->lo, pc->hi);
+		else
+			snprintf(p05s, sizeof p05s, "  p05 %.4g", pc->p05);
+	}
+	/* slow samples (a large wall): seconds per sample, and before the
+	 * first one how long it has been running */
+	char speed[64];
+	if (t->samples == 0 && (elapsed >= 1 || est >= 1)) {
+		/* est: mc_sample_seconds, a rough a-priori time, said from
+		 * the first line on a wall whose samples will be slow */
+		char about[64] = "", a[32];
+		if (est >= 1) {
+			mc_about(a, sizeof a, est);
+			snprintf(about, sizeof about, "  (estimate: %s a "
+				 "sample)", a);
+		}
+		fmt_duration(speed, sizeof speed, elapsed);
+		fprintf(stderr, "\r0/%ld  first samples running for %s, "
+			"left > %s%s\033[K", n, speed, speed, about);
+		fflush(stderr);
+		return;
+	}
+	if (rate > 0 && rate < 1)
+		snprintf(speed, sizeof speed, "%.3g s/sample", 1 / rate);
+	else
+		snprintf(speed, sizeof speed, "%.1f/s", rate);
+	fprintf(stderr, "\r%ld/%ld  accepted %ld  rejected %ld  %s%s  "
+		"left %s\033[K", t->samples, n, t->accepted,
+		t->samples - t->accepted, speed, p05s, left);
+	fflush(stderr);
+}
+
+/* ---- the summary -------------------------------------------------------- */
+
+/* The moving joints of a mechanism, 1-based as in the samples file:
+ * "3s 7s 12h", cut short with "..." to fit len. */
+static void fmt_joints(char *buf, size_t len, const char *joint)
+{
+	size_t used = 0;
+	int any = 0;
+	buf[0] = 0;
+	for (int k = 0; joint[k]; k++) {
+		if (joint[k] == JOINT_CLOSED)
+			continue;
+		char tmp[32];
+		int n = snprintf(tmp, sizeof tmp, "%s%d%c", any ? " " : "",
+				 k + 1, joint[k]);
+		if (used + (size_t)n + 4 >= len) {
+			snprintf(buf + used, len - used, " ...");
+			return;
+		}
+		memcpy(buf + used, tmp, (size_t)n + 1);
+		used += (size_t)n;
+		any = 1;
+	}
+	if (!any)
+		snprintf(buf, len, "(no joint moves)");
+}
+
+struct run_info {
+	const struct run_args *a;
+	const struct wall *w;
+	const struct mc_config *cfg;
+	long requested;
+	enum stop_reason stop;
+	double elapsed;
+	int ranks;		/* of an MPI job; 0: no job */
+};
+
+static double depth_used(const struct run_info *r)
+{
+	return r->cfg->depth < 0 ? r->w->depth : r->cfg->depth;
+}
+
+static const char *stop_name(enum stop_reason s)
+{
+	switch (s) {
+	case STOP_SIGNAL:
+		return "interrupted";
+	case STOP_UNTIL_CI:
+		return "until_ci";
+	case STOP_WRITE:
+		return "write_error";
+	case STOP_LOST:
+		return "rank_lost";
+	default:
+		return "complete";
+	}
+}
+
+static void print_text(const struct run_info *r, const struct tally *t)
+{
+	struct stats_summary s;
+	tally_summary(t, &s);
+	const struct wall *w = r->w;
+
+	if (w->name)
+		printf("%s  [%s]\n", cli_text(w->name), cli_text(r->a->wall));
+	else
+		printf("%s\n", cli_text(r->a->wall));
+	printf("samples      %ld of %ld (", t->samples, r->requested);
+	if (r->a->positions)
+		printf("positions of %s", cli_text(r->a->positions));
+	else if (w->anywhere)
+		printf("seed %lu, positions anywhere", r->cfg->seed);
+	else
+		printf("seed %lu, depth %g", r->cfg->seed, depth_used(r));
+	if (r->ranks)
+		printf(", %d rank%s x", r->ranks, r->ranks > 1 ? "s" : "");
+	printf("%s%d thread%s)\n", r->ranks ? " " : ", ", r->cfg->threads,
+	       r->cfg->threads > 1 ? "s" : "");
+	if (r->a->ov.n > 0) {
+		char d[1024];
+		override_describe(&r->a->ov, d, sizeof d);
+		printf("overrides    %s\n", d);
+	}
+	printf("accepted     %ld (%.1f %%)\n", t->accepted,
+	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
+	printf("rejected     %ld\n", t->samples - t->accepted);
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++)
+		if (k != SAMPLE_ACCEPTED && t->rejected[k])
+			printf("  %-40s %ld\n", sample_status_text(k),
+			       t->rejected[k]);
+	if (s.n > 0) {
+		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
+		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
+		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
+		printf("             in %s\n", w->nloads &&
+		       w->loads[0].kind == LOAD_BODY
+			       ? "load factor (a body load: lambda times each block's weight)"
+			       : "N (lambda times the point load's reference magnitude)");
+		if (s.has_ci)
+			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
+			       "(characteristic value)\n", s.p05, s.p05_lo,
+			       s.p05_hi);
+		else
+			printf("p05          %.6g, no interval: needs at least "
+			       "90 accepted samples\n", s.p05);
+	}
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_print(stdout, "collapse     ", &c);
+	}
+	if (w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, w->design_load, "design_load",
+			    &c);
+		collapse_print(stdout, "collapse     ", &c);
+	}
+	if (t->samples > 0)
+		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",
+		       (double)t->iterations / (double)t->samples,
+		       (double)t->lps / (double)t->samples);
+	printf("speed        %.1f samples/s (%.2f s)\n",
+	       r->elapsed > 0 ? (double)t->samples / r->elapsed : 0.0,
+	       r->elapsed);
+	if (t->nmech > 0) {
+		int idx[TOP_MECHANISMS];
+		int nt = tally_top(t, idx, TOP_MECHANISMS);
+		printf("mechanisms   %d distinct; %s:\n", t->nmech,
+		       t->nmech > nt ? "the most frequent" : "by frequency");
+		for (int i = 0; i < nt; i++) {
+			const struct tally_mech *m = &t->mech[idx[i]];
+			char j[72];
+			fmt_joints(j, sizeof j, m->joint);
+			printf("  %7ld %5.1f %%  lambda %.4g..%.4g  joints %s\n",
+			       m->count, 100.0 * (double)m->count /
+			       (double)t->accepted, m->lam_lo, m->lam_hi, j);
+		}
+		printf("             (joint k as in the samples file's xa_k: "
+		       "s slides, h hinges,\n"
+		       "              H hinges and slides, o opens)\n");
+	}
+	if (r->a->samples)
+		printf("samples file %s\n", cli_text(r->a->samples));
+}
+
+static void print_json(const struct run_info *r, const struct tally *t)
+{
+	struct stats_summary s;
+	tally_summary(t, &s);
+	struct json j;
+	json_init(&j, stdout, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, r->a->wall);
+	json_key(&j, "name");
+	if (r->w->name)
+		json_string(&j, r->w->name);
+	else
+		json_null(&j);
+	json_key(&j, "positions");
+	json_string(&j, r->a->positions ? "replay" :
+		    r->w->anywhere ? "anywhere" : "depth");
+	json_key(&j, "seed");
+	json_uint(&j, r->cfg->seed);
+	json_key(&j, "depth");
+	if (r->a->positions || r->w->anywhere)
+		json_null(&j);
+	else
+		json_double(&j, depth_used(r));
+	override_json(&r->a->ov, &j);
+	json_key(&j, "threads");
+	json_int(&j, r->cfg->threads);
+	if (r->ranks) {
+		json_key(&j, "ranks");
+		json_int(&j, r->ranks);
+	}
+	json_key(&j, "requested");
+	json_int(&j, r->requested);
+	json_key(&j, "stopped");
+	json_string(&j, stop_name(r->stop));
+	tally_json(t, &j);
+	json_key(&j, "design_load");
+	if (r->w->design_load > 0)
+		json_double(&j, r->w->design_load);
+	else
+		json_null(&j);
+	json_key(&j, "collapse_probability");
+	json_array_begin(&j);
+	struct collapse c;
+	if (r->a->at >= 0) {
+		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
+		collapse_json(&j, &c);
+	}
+	if (r->w->design_load > 0) {
+		collapse_at(t->lam.x, t->lam.n, r->w->design_load,
+			    "design_load", &c);
+		collapse_json(&j, &c);
+	}
+	json_array_end(&j);
+	json_key(&j, "iterations_per_sample");
+	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
+	json_key(&j, "lps_per_sample");
+	json_double(&j, t->samples ? (double)t->lps / (double)t->samples : NAN);
+	json_key(&j, "mechanisms");
+	json_array_begin(&j);
+	int *idx = sw_xmalloc(sizeof(int) * ((size_t)t->nmech + 1));
+	int nt = tally_top(t, idx, t->nmech);
+	for (int i = 0; i < nt; i++) {
+		const struct tally_mech *m = &t->mech[idx[i]];
+		json_object_begin(&j);
+		json_key(&j, "joints");
+		json_string(&j, m->joint);
+		json_key(&j, "count");
+		json_int(&j, m->count);
+		json_key(&j, "lambda_lo");
+		json_double(&j, m->lam_lo);
+		json_key(&j, "lambda_hi");
+		json_double(&j, m->lam_hi);
+		json_object_end(&j);
+	}
+	free(idx);
+	json_array_end(&j);
+	json_key(&j, "samples_file");
+	if (r->a->samples)
+		json_string(&j, r->a->samples);
+	else
+		json_null(&j);
+	/* where every LP started (SLIPWALL_LP_START): not the results,
+	 * which are the same from every start, but their cost */
+	json_key(&j, "lp_start");
+	json_string(&j, sample_start_name(sample_start()));
+	/* timing: the only fields that change from run to run */
+	json_key(&j, "elapsed_seconds");
+	json_double(&j, r->elapsed);
+	json_key(&j, "samples_per_second");
+	json_double(&j, r->elapsed > 0 ? (double)t->samples / r->elapsed : NAN);
+	json_object_end(&j);
+	json_end(&j);
+}
+
+/* ---- the command -------------------------------------------------------- */
+
+/* Everything `run` sets up before it samples. */
+struct run_setup {
+	struct run_args a;
+	struct wall *w;
+	struct mc_config cfg;
+	double *replay;		/* --positions */
+	struct runlog *log;	/* --samples, rank 0 only */
+};
+
+static void setup_free(struct run_setup *s)
+{
+	char err[SW_ERRLEN];
+	runlog_close(s->log, err);
+	free(s->replay);
+	wall_free(s->w);
+	override_free(&s->a.ov);
+	memset(s, 0, sizeof *s);
+}
+
+/* On ranks > 0 of a job, the set-up's messages (a usage error, an
+ * error in the wall file) go to a temporary file instead of stderr:
+ * every rank reads the same options and files, so rank 0's messages
+ * say it once.  A rank that fails where rank 0 did not (its own copy of
+ * a file) prints its messages after all (held_release). */
+struct held {
+	int saved;		/* stderr, or -1: nothing held */
+	FILE *tmp;
+};
+
+static void held_start(struct held *h, const struct cluster *cl)
+{
+	h->saved = -1;
+	h->tmp = NULL;
+	if (cluster_rank(cl) == 0 || !(h->tmp = tmpfile()))
+		return;
+	fflush(stderr);
+	h->saved = dup(STDERR_FILENO);
+	if (h->saved < 0 || dup2(fileno(h->tmp), STDERR_FILENO) < 0) {
+		if (h->saved >= 0)
+			close(h->saved);
+		h->saved = -1;
+	}
+}
+
+/* Give stderr back; print what was held when show is set. */
+static void held_release(struct held *h, int show)
+{
+	if (h->saved >= 0) {
+		fflush(stderr);
+		dup2(h->saved, STDERR_FILENO);
+		close(h->saved);
+		if (show) {
+			char buf[4096];
+			size_t n;
+			rewind(h->tmp);
+			while ((n = fread(buf, 1, sizeof buf, h->tmp)) > 0)
+				fwrite(buf, 1, n, stderr);
+			fflush(stderr);
+		}
+	}
+	if (h->tmp)
+		fclose(h->tmp);
+	h->saved = -1;
+	h->tmp = NULL;
+}
+
+/* Parse the options, load the wall and fill the config (every rank of a
+ * job does the same); the samples file is created by rank 0 only.
+ * Returns 0, -1 when there is nothing to do (--help) or the exit
+ * status, with a message printed. */
+static int setup(int argc, char **argv, const struct cluster *cl,
+		 struct run_setup *s)
+{
+	struct run_args *a = &s->a;
+	memset(s, 0, sizeof *s);
+	int rc = parse_args(argc, argv, a);
+	if (rc)
+		return rc;
+	if ((rc = override_load(CMD, a->wall, &a->ov, &s->w)))
+		return rc;
+	struct wall *w = s->w;
+	if (a->depth >= 0 && w->anywhere)
+		return cli_usage_error(CMD, "--depth: %s draws its contact "
+				       "points anywhere (contacts.positions), "
+				       "there is no depth", a->wall);
+
+	char err[SW_ERRLEN];
+	struct mc_config *cfg = &s->cfg;
+	mc_config_default(cfg, w);
+	cfg->opts.slp = (enum sample_slp)a->slp;
+	if (a->positions) {
+		long rows;
+		char warn[SW_ERRLEN];
+		if (runlog_read_positions(a->positions, w, &s->replay, &rows,
+					  warn, err) != SW_OK) {
+			cli_errorf("%s", err);
+			return 2;
+		}
+		if (warn[0])
+			cli_errorf("%s", warn);
+		if (a->n_set && a->n > rows)
+			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
+					       "samples", a->n, a->positions, rows);
+		cfg->positions = s->replay;
+		cfg->n = a->n_set ? a->n : rows;
+	} else {
+		cfg->n = a->n_set ? a->n : w->samples;
+	}
+	if (cfg->n < 1)
+		return cli_usage_error(CMD, "no samples to compute (-n)");
+	if (a->seed_set)
+		cfg->seed = a->seed;
+	cfg->depth = a->depth;
+	if ((rc = cli_threads(CMD, w, a->threads, cl ? cluster_threads(cl) :
+			      mc_ncpu(), cfg->n, &cfg->threads)))
+		return rc;
+
+	if (a->samples && cluster_rank(cl) == 0) {
+		const char *keep[] = {a->wall, a->positions, NULL};
+		enum sw_status st = runlog_create(&s->log, a->samples, w, keep,
+						  err);
+		if (st != SW_OK) {
+			cli_errorf("slipwall run: %s", err);
+			return sw_status_exit(st);
+		}
+	}
+	return 0;
+}
+
+/* Rank 0 (or the only process): take the samples in order, write and
+ * count them, print the summary.  Returns the exit status. */
+static int sample(struct run_setup *s, const struct source *src,
+		  const struct cluster *cl, double t0)
+{
+	const struct run_args *a = &s->a;
+	const struct mc_config *cfg = &s->cfg;
+	struct runlog *log = s->log;
+	struct caught caught;
+	signals_catch(src, &caught);
+
+	int tty = isatty(STDERR_FILENO);
+	struct tally t;
+	struct mc_item it;
+	struct ci_state ci = {0};
+	struct progress_ci pci = {0};
+	tally_init(&t, s->w);
+	mc_item_init(&it, s->w);
+	enum stop_reason stop = STOP_NONE;
+	double last_draw = 0, est = mc_sample_seconds(s->w);
+	enum sw_status wst = SW_OK;
+	char werr[SW_ERRLEN] = "", err[SW_ERRLEN], serr[SW_ERRLEN] = "";
+	for (;;) {
+		int got = src->pop(src->ctx, &it, tty ? 100 : -1);
+		if (got < 0)
+			break;
+		if (got > 0 && stop != STOP_UNTIL_CI && stop != STOP_WRITE) {
+			if (log && (wst = runlog_write(log, &it, werr)) != SW_OK) {
+				/* the row is lost: count nothing more */
+				stop = STOP_WRITE;
+				src->stop(src->ctx, 0);
+				continue;
+			}
+			tally_add(&t, &it);
+			double p05, lo, hi;
+			if (a->until_ci > 0 && it.status == SAMPLE_ACCEPTED &&
+			    ci_due(t.lam.n) &&
+			    p05_interval(&t, &ci, &p05, &lo, &hi) && p05 > 0 &&
+			    hi - lo < a->until_ci * p05) {
+				stop = STOP_UNTIL_CI;
+				src->stop(src->ctx, 0);
+			}
+		}
+		if (tty && now() - last_draw >= 0.1) {
+			last_draw = now();
+			progress(&t, &pci, cfg->n, last_draw - t0, est);
+		}
+	}
+	double elapsed = now() - t0;
+	if (tty)
+		fprintf(stderr, "\r\033[K");
+	int sig = run_signal;
+	signals_restore(&caught);
+	mc_item_free(&it);
+
+	/* why: the signal here, or what another rank says */
+	char why[SW_ERRLEN] = "";
+	enum sw_status sst = src->status(src->ctx, serr);
+	if (sig && stop == STOP_NONE) {
+		stop = STOP_SIGNAL;
+		snprintf(why, sizeof why, "%s", strsignal(sig));
+	} else if (sst == SW_EINTR && stop == STOP_NONE) {
+		stop = STOP_SIGNAL;
+		snprintf(why, sizeof why, "%s", serr);
+	} else if (sst != SW_OK && sst != SW_EINTR && stop == STOP_NONE) {
+		stop = STOP_LOST;
+	}
+
+	enum sw_status cst = runlog_close(log, err);
+	s->log = NULL;
+
+	struct run_info info = {a, s->w, cfg, cfg->n, stop, elapsed,
+				cl ? cluster_size(cl) : 0};
+	if (a->json)
+		print_json(&info, &t);
+	else
+		print_text(&info, &t);
+	fflush(stdout);
+
+	int status = 0;
+	if (stop == STOP_WRITE) {
+		cli_errorf("slipwall run: %s", werr);
+		status = 1;
+	} else if (cst != SW_OK) {
+		cli_errorf("slipwall run: %s", err);
+		status = 1;
+	}
+	if (stop == STOP_SIGNAL) {
+		cli_errorf("slipwall run: interrupted (%s) after %ld of %ld "
+			"samples", why, t.samples, cfg->n);
+		status = sw_status_exit(SW_EINTR);
+	}
+	if (stop == STOP_LOST) {
+		cli_errorf("slipwall run: %s: stopped after %ld of %ld "
+			"samples", serr, t.samples, cfg->n);
+		status = 1;
+	} else if (sst != SW_OK && sst != SW_EINTR) {
+		cli_errorf("slipwall run: %s", serr);
+		status = 1;
+	}
+	long oom = mc_memory_errors();
+	if (oom > 0)	/* each made a sample "numerical" (src/lib/lp.c) */
+		cli_errorf("slipwall run: the LP solver ran out of memory %ld "
+			"time%s (GLPK's limit: %d MB per thread): the "
+			"samples it was solving were rejected as numerical; free "
+			"memory or use fewer --threads", oom, oom == 1 ? "" : "s",
+			mc_worker_memory());
+	if (t.accepted == 0 && t.samples > 0) {
+		cli_errorf("slipwall run: no sample was accepted: the "
+			"analysis failed (see the rejections above)");
+		status = 1;
+	}
+	tally_free(&t);
+	return status;
+}
+
+/* A rank > 0 of a job: compute and send.  Rank 0 reports a signal. */
+static int serve(struct cluster *cl, const struct source *src)
+{
+	char err[SW_ERRLEN];
+	struct caught caught;
+	signals_catch(src, &caught);
+	enum sw_status st = cluster_serve(cl, err);
+	signals_restore(&caught);
+	if (st != SW_OK && st != SW_EINTR)
+		cli_errorf("slipwall run: %s", err);
+	return sw_status_exit(st);
+}
+
+/* Set up, start the pool (this rank's share in a job), agree with the
+ * other ranks, then sample or serve. */
+static int run_job(struct cluster *cl, int argc, char **argv)
+{
+	struct run_setup s;
+	char err[SW_ERRLEN];
+	struct mc *pool = NULL;
+	struct held held;
+	held_start(&held, cl);
+	int rc = setup(argc, argv, cl, &s);
+	double t0 = now();
+	if (rc == 0 && cl && cluster_open(cl, &s.cfg, err) != SW_OK) {
+		cli_errorf("slipwall run: %s", err);
+		rc = 1;
+	} else if (rc == 0 && !cl && !(pool = mc_start(&s.cfg, err))) {
+		cli_errorf("slipwall run: %s", err);
+		rc = 1;
+	}
+	int root_rc;
+	int mine = rc;
+	rc = cluster_agree(cl, rc, rc == 0 ? &s.cfg : NULL, &root_rc);
+	held_release(&held, mine > 0 && root_rc <= 0);
+	if (rc == 0) {
+		struct source src = {pool, pool_pop, pool_stop, pool_status};
+		if (cl)
+			src = (struct source){cl, job_pop, job_stop, job_status};
+		rc = cluster_rank(cl) > 0 ? serve(cl, &src) :
+		     sample(&s, &src, cl, t0);
+	}
+	mc_free(pool);
+	cluster_close(cl);	/* its workers read the wall */
+	setup_free(&s);
+	return rc < 0 ? 0 : rc;
+}
+
+int cmd_run(int argc, char **argv)
+{
+	struct cluster *cl;
+	char err[SW_ERRLEN];
+	enum sw_status st = cluster_start(&cl, err);
+	if (st != SW_OK) {
+		if (err[0])	/* (empty: another process says it) */
+			cli_errorf("slipwall run: %s", err);
+		return sw_status_exit(st);
+	}
+	return cluster_end(cl, run_job(cl, argc, argv));
+}

@@ -1,0 +1,577 @@
+/*
+ * cmd_sweep.c - `slipwall sweep`: one Monte Carlo run per value of one
+ * parameter, and how the collapse load moves with it (docs/run.md,
+ * "Sweeps").
+ *
+ *   --friction A:B:STEP        material.friction = A, A + STEP, ..., B
+ *   --depth A:B:STEP           the imperfection depth (as run --depth)
+ *   --load-at X1,Y1:X2,Y2:N    the live load at N points from (X1, Y1) to
+ *                              (X2, Y2)
+ *
+ * Every value is a run of the wall as `run` would make it with that one
+ * override (override.c; --depth as run's --depth), with the same seed
+ * and sample count: the contact positions of sample i are drawn from
+ * (seed, i) alone (sample_positions), so every value sees the same
+ * draws - common random numbers - and the curve moves with the
+ * parameter, not with the noise.  Other overrides (--set ..., a
+ * --friction without ':') apply to every value.
+ *
+ * Output: a table (value, accepted, p05 and its 99 % interval, p50, p95,
+ * mechanisms), or --json; --csv FILE writes the table's rows; --out DIR
+ * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "override.h"
+#include "slipwall/json.h"
+#include "slipwall/mc.h"
+#include "slipwall/report.h"
+#include "slipwall/stats.h"
+#include "slipwall/tally.h"
+
+#define CMD "sweep"
+#define MAX_VALUES 1000
+
+enum sweep_param { SW_NONE, SW_FRICTION, SW_DEPTH, SW_LOAD_AT };
+
+struct sweep_args {
+	const char *wall, *csv, *out;
+	long n;
+	int n_set;
+	unsigned long seed;
+	int seed_set;
+	int threads;
+	int json;
+	enum sweep_param param;
+	const char *range;	/* as given */
+	double *val;		/* the values (friction, depth; load-at: t) */
+	double (*at)[2];	/* load-at: the points */
+	int nval;
+	struct overrides ov;	/* fixed for every value */
+};
+
+static void usage(FILE *f)
+{
+	fprintf(f,
+		"usage: slipwall sweep WALL.yaml (--friction A:B:STEP | --depth A:B:STEP |\n"
+		"                     --load-at X1,Y1:X2,Y2:N) [-n N] [--seed S]\n"
+		"                     [--threads T] [--csv FILE] [--json] [--out DIR]\n"
+		"                     [--set KEY=VALUE]... (and run's other overrides)\n"
+		"\n"
+		"One Monte Carlo run per value of one parameter, all with the same\n"
+		"seed: sample i has the same contact draws at every value (common\n"
+		"random numbers), so the curve shows the parameter's effect.\n"
+		"\n"
+		"  --friction A:B:STEP     friction of every joint from A to B\n"
+		"  --depth A:B:STEP        imperfection depth from A to B (0..0.5)\n"
+		"  --load-at X1,Y1:X2,Y2:N the live load at N points along a line\n"
+		"  -n N                    samples per value (default: the wall's)\n"
+		"  --seed S, --threads T   as for 'run'\n"
+		"  --csv FILE              the table as CSV\n"
+		"  --json                  the table as JSON\n"
+		"  --out DIR               sweep.svg, sweep.pdf, sweep.png: p05 with its\n"
+		"                          99 %% interval, p50 and p95 against the value\n"
+		"  --friction MU, --load-at X,Y, --load-direction DX,DY, --set KEY=VALUE\n"
+		"                          change the wall for every value, as for 'run'\n"
+		"\n"
+		"The table: value, accepted samples, p05 and its 99 %% interval, p50,\n"
+		"p95, and the number of distinct mechanisms.\n");
+}
+
+/* "a:b:c" into its three fields (in buf, len bytes); 0 on success. */
+static int split3(const char *s, char *buf, size_t len, char **f)
+{
+	if (strlen(s) >= len)
+		return -1;
+	strcpy(buf, s);
+	char *c1 = strchr(buf, ':'), *c2 = c1 ? strchr(c1 + 1, ':') : NULL;
+	if (!c1 || !c2 || strchr(c2 + 1, ':'))
+		return -1;
+	*c1 = *c2 = 0;
+	f[0] = buf;
+	f[1] = c1 + 1;
+	f[2] = c2 + 1;
+	return 0;
+}
+
+/* A:B:STEP into the values A, A + STEP, ... up to B (B included when
+ * it is within STEP/1000 of a step). */
+static int parse_steps(const char *s, double lo_ok, double hi_ok,
+		       double **out, int *nout)
+{
+	char buf[256], *f[3];
+	double a, b, step;
+	if (split3(s, buf, sizeof buf, f) || text_parse_double(f[0], &a) ||
+	    text_parse_double(f[1], &b) ||
+	    text_parse_double(f[2], &step) || !(step > 0) || b < a ||
+	    a < lo_ok || b > hi_ok)
+		return -1;
+	double count = floor((b - a) / step + 1e-3) + 1;
+	if (count > MAX_VALUES)
+		return -1;
+	int n = (int)count;
+	*out = sw_xmalloc(sizeof(double) * (size_t)n);
+	for (int i = 0; i < n; i++) {
+		/* 12 digits: 0.4 + 2 * 0.1 is the 0.6 that `run --friction
+		 * 0.6` reads, not 0.6000000000000001 */
+		char t[32];
+		double v = a + step * i;
+		snprintf(t, sizeof t, "%.12g", v > b ? b : v);
+		(*out)[i] = strtod(t, NULL);
+	}
+	*nout = n;
+	return 0;
+}
+
+/* X1,Y1:X2,Y2:N */
+static int parse_line(const char *s, struct sweep_args *a)
+{
+	char buf[256], *parts[3];
+	double p[4];
+	long n;
+	if (split3(s, buf, sizeof buf, parts))
+		return -1;
+	for (int k = 0; k < 2; k++) {
+		char *comma = strchr(parts[k], ',');
+		if (!comma)
+			return -1;
+		*comma = 0;
+		if (text_parse_double(parts[k], &p[2 * k]) ||
+		    text_parse_double(comma + 1, &p[2 * k + 1]))
+			return -1;
+	}
+	if (text_parse_long(parts[2], 2, MAX_VALUES, &n))
+		return -1;
+	a->nval = (int)n;
+	a->val = sw_xmalloc(sizeof(double) * (size_t)n);
+	a->at = sw_xmalloc(sizeof *a->at * (size_t)n);
+	double len = hypot(p[2] - p[0], p[3] - p[1]);
+	for (int i = 0; i < n; i++) {
+		double t = (double)i / (double)(n - 1);
+		a->at[i][0] = p[0] + t * (p[2] - p[0]);
+		a->at[i][1] = p[1] + t * (p[3] - p[1]);
+		a->val[i] = t * len;	/* distance from the first point */
+	}
+	return 0;
+}
+
+static int set_param(struct sweep_args *a, enum sweep_param p, const char *v)
+{
+	if (a->param != SW_NONE)
+		return cli_usage_error(CMD, "one parameter per sweep (%s and %s)",
+				       a->range, v);
+	a->param = p;
+	a->range = v;
+	int bad = p == SW_FRICTION ? parse_steps(v, 0, INFINITY, &a->val,
+						 &a->nval) :
+		  p == SW_DEPTH ? parse_steps(v, 0, 0.5, &a->val, &a->nval) :
+		  parse_line(v, a);
+	if (bad)
+		return cli_usage_error(CMD, "%s: '%s' is not %s",
+				       p == SW_FRICTION ? "--friction" :
+				       p == SW_DEPTH ? "--depth" : "--load-at", v,
+				       p == SW_FRICTION ? "A:B:STEP (0 <= A <= B, "
+				       "STEP > 0, at most 1000 values)" :
+				       p == SW_DEPTH ? "A:B:STEP (0 <= A <= B <= "
+				       "0.5, STEP > 0, at most 1000 values)" :
+				       "X1,Y1:X2,Y2:N (N from 2 to 1000)");
+	return 0;
+}
+
+static int parse_args(int argc, char **argv, struct sweep_args *a)
+{
+	memset(a, 0, sizeof *a);
+	for (int i = 1; i < argc; i++) {
+		const char *s = argv[i], *v;
+		int missing = 0, sr;
+		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
+			usage(stdout);
+			return -1;
+		} else if (!strcmp(s, "--json")) {
+			a->json = 1;
+		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
+						     &a->n, &a->n_set, &a->seed,
+						     &a->seed_set, &a->threads,
+						     NULL))) {
+			if (sr == 2)
+				return 2;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
+			if ((sr = set_param(a, SW_DEPTH, v)))
+				return sr;
+		} else if (((v = cli_opt_value(argc, argv, &i, "--friction",
+					       &missing)) ||
+			    (!missing && (v = cli_opt_value(argc, argv, &i,
+							    "--load-at",
+							    &missing)))) &&
+			   strchr(v, ':')) {
+			if ((sr = set_param(a, !strncmp(s, "--friction", 10) ?
+					    SW_FRICTION : SW_LOAD_AT, v)))
+				return sr;
+		} else if (v) {
+			/* a fixed --friction MU or --load-at X,Y: give it back
+			 * to the overrides */
+			i -= strchr(s, '=') ? 0 : 1;
+			if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						  &a->ov)) != 1)
+				return sr ? sr : 2;
+		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
+						 &a->ov))) {
+			if (sr == 2)
+				return 2;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--csv", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--csv: empty file name");
+			a->csv = v;
+		} else if ((v = cli_opt_value(argc, argv, &i, "--out", &missing))) {
+			if (!*v)
+				return cli_usage_error(CMD, "--out: empty directory name");
+			a->out = v;
+		} else if (missing) {
+			return cli_usage_error(CMD, "%s needs a value", s);
+		} else if (s[0] == '-' && s[1]) {
+			return cli_usage_error(CMD, "unknown option '%s'", s);
+		} else if (a->wall) {
+			return cli_usage_error(CMD, "one wall file only ('%s' and "
+					       "'%s')", a->wall, s);
+		} else {
+			a->wall = s;
+		}
+	}
+	if (!a->wall)
+		return cli_usage_error(CMD, "which wall? (slipwall sweep WALL.yaml "
+				       "--friction A:B:STEP)");
+	if (a->param == SW_NONE)
+		return cli_usage_error(CMD, "what to sweep? --friction A:B:STEP, "
+				       "--depth A:B:STEP or --load-at "
+				       "X1,Y1:X2,Y2:N");
+	return 0;
+}
+
+static void args_free(struct sweep_args *a)
+{
+	free(a->val);
+	free(a->at);
+	override_free(&a->ov);
+}
+
+/* ---- one value ---------------------------------------------------------- */
+
+struct point {
+	double value, at[2];
+	long samples, accepted;
+	struct stats_summary s;
+	int mechanisms;
+};
+
+/* The wall for value k: the fixed overrides and the value's own. */
+static int wall_for(const struct sweep_args *a, int k, struct wall **w)
+{
+	struct overrides ov = {0};
+	char arg[128];
+	int rc = 0;
+	for (int i = 0; i < a->ov.n && !rc; i++) {
+		char *argv[2] = {a->ov.o[i].option, a->ov.o[i].arg};
+		int j = 0, missing = 0;
+		if (override_option(CMD, 2, argv, &j, &missing, &ov) != 1)
+			rc = 2;
+	}
+	if (!rc && (a->param == SW_FRICTION || a->param == SW_LOAD_AT)) {
+		if (a->param == SW_FRICTION)
+			snprintf(arg, sizeof arg, "%.17g", a->val[k]);
+		else
+			snprintf(arg, sizeof arg, "%.17g,%.17g", a->at[k][0],
+				 a->at[k][1]);
+		char *argv[2] = {a->param == SW_FRICTION ? "--friction" :
+				 "--load-at", arg};
+		int j = 0, missing = 0;
+		if (override_option(CMD, 2, argv, &j, &missing, &ov) != 1)
+			rc = 2;
+	}
+	if (!rc)
+		rc = override_load(CMD, a->wall, &ov, w);
+	override_free(&ov);
+	return rc;
+}
+
+static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
+				int k, int nval, char *err)
+{
+	struct mc *m = mc_start(cfg, err);
+	if (!m)
+		return SW_EANALYSIS;
+	int tty = isatty(STDERR_FILENO);
+	struct tally t;
+	struct mc_item it;
+	tally_init(&t, cfg->w);
+	mc_item_init(&it, cfg->w);
+	int got;
+	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
+		if (got > 0)
+			tally_add(&t, &it);
+		if (tty) {
+			fprintf(stderr, "\rsweep: value %d of %d, %ld/%ld samples"
+				"\033[K", k + 1, nval, t.samples, cfg->n);
+			fflush(stderr);
+		}
+	}
+	mc_item_free(&it);
+	mc_free(m);
+	p->samples = t.samples;
+	p->accepted = t.accepted;
+	p->mechanisms = t.nmech;
+	tally_summary(&t, &p->s);
+	tally_free(&t);
+	return SW_OK;
+}
+
+/* ---- output --------------------------------------------------------------- */
+
+static const char *param_name(enum sweep_param p)
+{
+	return p == SW_FRICTION ? "friction" : p == SW_DEPTH ? "depth" :
+	       "load_at";
+}
+
+static void print_table(const struct sweep_args *a, const struct wall *w,
+			const struct point *pt, unsigned long seed, long n)
+{
+	printf("%s  [%s]\n", w->name ? w->name : a->wall, a->wall);
+	if (a->ov.n > 0) {
+		char d[1024];
+		override_describe(&a->ov, d, sizeof d);
+		printf("overrides: %s\n", d);
+	}
+	printf("sweep of %s %s: %d values, %ld samples each, seed %lu (the "
+	       "same contact draws at every value)\n\n", param_name(a->param),
+	       a->range, a->nval, n, seed);
+	if (a->param == SW_LOAD_AT)
+		printf("%-10s %-10s %-10s", "distance", "x", "y");
+	else
+		printf("%-10s", param_name(a->param));
+	printf(" %-9s %-11s %-25s %-11s %-11s %s\n", "accepted", "p05",
+	       "99 % interval of p05", "p50", "p95", "mechanisms");
+	for (int k = 0; k < a->nval; k++) {
+		const struct point *p = &pt[k];
+		char ci[64];
+		if (p->s.has_ci)
+			snprintf(ci, sizeof ci, "[%.5g, %.5g]", p->s.p05_lo,
+				 p->s.p05_hi);
+		else
+			snprintf(ci, sizeof ci, "- (n < 90)");
+		if (a->param == SW_LOAD_AT)
+			printf("%-10.4g %-10.4g %-10.4g", p->value, p->at[0],
+			       p->at[1]);
+		else
+			printf("%-10.4g", p->value);
+		printf(" %-9ld %-11.5g %-25s %-11.5g %-11.5g %d\n", p->accepted,
+		       p->s.p05, ci, p->s.p50, p->s.p95, p->mechanisms);
+	}
+}
+
+static void print_json(const struct sweep_args *a, const struct point *pt,
+		       unsigned long seed, long n)
+{
+	struct json j;
+	json_init(&j, stdout, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, a->wall);
+	json_key(&j, "parameter");
+	json_string(&j, param_name(a->param));
+	json_key(&j, "range");
+	json_string(&j, a->range);
+	override_json(&a->ov, &j);
+	json_key(&j, "seed");
+	json_int(&j, (long long)seed);
+	json_key(&j, "samples");
+	json_int(&j, n);
+	json_key(&j, "points");
+	json_array_begin(&j);
+	for (int k = 0; k < a->nval; k++) {
+		const struct point *p = &pt[k];
+		json_object_begin(&j);
+		json_key(&j, "value");
+		json_double(&j, p->value);
+		if (a->param == SW_LOAD_AT) {
+			json_key(&j, "at");
+			json_array_begin(&j);
+			json_double(&j, p->at[0]);
+			json_double(&j, p->at[1]);
+			json_array_end(&j);
+		}
+		json_key(&j, "samples");
+		json_int(&j, p->samples);
+		json_key(&j, "accepted");
+		json_int(&j, p->accepted);
+		json_key(&j, "p05");
+		json_double(&j, p->s.p05);
+		json_key(&j, "p05_ci99");
+		if (p->s.has_ci) {
+			json_array_begin(&j);
+			json_double(&j, p->s.p05_lo);
+			json_double(&j, p->s.p05_hi);
+			json_array_end(&j);
+		} else {
+			json_null(&j);
+		}
+		json_key(&j, "p50");
+		json_double(&j, p->s.p50);
+		json_key(&j, "p95");
+		json_double(&j, p->s.p95);
+		json_key(&j, "mechanisms");
+		json_int(&j, p->mechanisms);
+		json_object_end(&j);
+	}
+	json_array_end(&j);
+	json_object_end(&j);
+	json_end(&j);
+}
+
+static int write_csv(const struct sweep_args *a, const struct point *pt)
+{
+	FILE *f = fopen(a->csv, "w");
+	if (!f) {
+		fprintf(stderr, "slipwall sweep: %s: cannot write: %s\n", a->csv,
+			strerror(errno));
+		return 1;
+	}
+	fprintf(f, "%s,%ssamples,accepted,p05,p05_lo,p05_hi,p50,p95,"
+		"mechanisms\n", a->param == SW_LOAD_AT ? "distance" :
+		param_name(a->param), a->param == SW_LOAD_AT ? "x,y," : "");
+	for (int k = 0; k < a->nval; k++) {
+		const struct point *p = &pt[k];
+		fprintf(f, "%.17g,", p->value);
+		if (a->param == SW_LOAD_AT)
+			fprintf(f, "%.17g,%.17g,", p->at[0], p->at[1]);
+		fprintf(f, "%ld,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n",
+			p->samples, p->accepted, p->s.p05, p->s.p05_lo,
+			p->s.p05_hi, p->s.p50, p->s.p95, p->mechanisms);
+	}
+	if (fclose(f) != 0) {
+		fprintf(stderr, "slipwall sweep: %s: cannot write: %s\n", a->csv,
+			strerror(errno));
+		return 1;
+	}
+	return 0;
+}
+
+static int write_figure(const struct sweep_args *a, const struct wall *w,
+			const struct point *pt, unsigned long seed, long n)
+{
+	struct report_sweep_point *rp = sw_xmalloc(sizeof *rp *
+						   (size_t)a->nval);
+	for (int k = 0; k < a->nval; k++) {
+		rp[k] = (struct report_sweep_point){
+			pt[k].value, pt[k].accepted, pt[k].s.p05,
+			pt[k].s.has_ci ? pt[k].s.p05_lo : NAN,
+			pt[k].s.has_ci ? pt[k].s.p05_hi : NAN,
+			pt[k].s.p50, pt[k].s.p95};
+	}
+	char xlabel[160], cap[512];
+	if (a->param == SW_FRICTION)
+		snprintf(xlabel, sizeof xlabel, "friction coefficient μ");
+	else if (a->param == SW_DEPTH)
+		snprintf(xlabel, sizeof xlabel, "imperfection depth d");
+	else
+		snprintf(xlabel, sizeof xlabel, "load point: distance from "
+			 "(%g, %g) towards (%g, %g), m", pt[0].at[0],
+			 pt[0].at[1], pt[a->nval - 1].at[0],
+			 pt[a->nval - 1].at[1]);
+	snprintf(cap, sizeof cap, "%s: %ld samples per value, seed %lu, the "
+		 "same contact draws at every value.", w->name ? w->name :
+		 a->wall, n, seed);
+	struct report_sweep rs = {w, xlabel, cap, sw_version(), rp,
+				  a->nval};
+	char err[SW_ERRLEN];
+	enum sw_status st = report_write_sweep(&rs, a->out, NULL, err);
+	free(rp);
+	report_cleanup();
+	if (st != SW_OK) {
+		fprintf(stderr, "slipwall sweep: %s\n", err);
+		return 1;
+	}
+	if (!a->json)
+		printf("\n%s/sweep.svg, .pdf, .png: p05 with its 99 %% interval, "
+		       "p50 and p95 against the %s\n", a->out,
+		       param_name(a->param));
+	return 0;
+}
+
+/* ---- the command -------------------------------------------------------------- */
+
+int cmd_sweep(int argc, char **argv)
+{
+	struct sweep_args a;
+	int rc = parse_args(argc, argv, &a);
+	if (rc) {
+		args_free(&a);
+		return rc < 0 ? 0 : rc;
+	}
+	struct wall *base = NULL;
+	if ((rc = override_load(CMD, a.wall, &a.ov, &base))) {
+		args_free(&a);
+		return rc;
+	}
+	if (a.param == SW_DEPTH && base->anywhere) {
+		rc = cli_usage_error(CMD, "--depth: %s draws its contact points "
+				     "anywhere: there is no depth", a.wall);
+		goto out;
+	}
+	unsigned long seed = a.seed_set ? a.seed : base->seed;
+	long n = a.n_set ? a.n : base->samples;
+	struct point *pt = sw_xmalloc(sizeof *pt * (size_t)a.nval);
+	int failed = 0;
+	for (int k = 0; k < a.nval && !rc; k++) {
+		struct wall *w = NULL;
+		memset(&pt[k], 0, sizeof pt[k]);
+		pt[k].value = a.val[k];
+		if (a.at) {
+			pt[k].at[0] = a.at[k][0];
+			pt[k].at[1] = a.at[k][1];
+		}
+		if ((rc = wall_for(&a, k, &w)))
+			break;
+		struct mc_config cfg;
+		mc_config_default(&cfg, w);
+		cfg.n = n;
+		cfg.seed = seed;
+		cfg.threads = a.threads ? a.threads : mc_ncpu();
+		cfg.depth = a.param == SW_DEPTH ? a.val[k] : -1;
+		char err[SW_ERRLEN];
+		if (run_value(&cfg, &pt[k], k, a.nval, err) != SW_OK) {
+			fprintf(stderr, "slipwall sweep: %s\n", err);
+			rc = 1;
+		}
+		failed += pt[k].accepted == 0;
+		wall_free(w);
+	}
+	if (isatty(STDERR_FILENO))
+		fprintf(stderr, "\r\033[K");
+	if (!rc) {
+		if (a.json)
+			print_json(&a, pt, seed, n);
+		else
+			print_table(&a, base, pt, seed, n);
+		fflush(stdout);
+		if (a.csv)
+			rc = write_csv(&a, pt);
+		if (!rc && a.out)
+			rc = write_figure(&a, base, pt, seed, n);
+		if (!rc && failed) {
+			fprintf(stderr, "slipwall sweep: %d value%s gave no "
+				"accepted sample\n", failed, failed > 1 ? "s" : "");
+			rc = 1;
+		}
+	}
+	free(pt);
+out:
+	wall_free(base);
+	args_free(&a);
+	return rc;
+}

@@ -1,0 +1,262 @@
+/* override.c - changes to a wall file from the command line; see
+ * override.h. */
+#include <ctype.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "override.h"
+#include "slipwall/text.h"
+#include "slipwall/wallfile.h"
+
+static const struct {
+	const char *option;
+	enum override_kind kind;
+} options[] = {
+	{"--friction", OVR_FRICTION},
+	{"--load-at", OVR_LOAD_AT},
+	{"--load-direction", OVR_LOAD_DIR},
+	{"--set", OVR_SET},
+};
+
+static char *dup_printf(const char *fmt, ...)
+	__attribute__((format(printf, 1, 2)));
+
+static char *dup_printf(const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	int n = vsnprintf(NULL, 0, fmt, ap);
+	va_end(ap);
+	char *s = sw_xmalloc((size_t)n + 1);
+	va_start(ap, fmt);
+	vsnprintf(s, (size_t)n + 1, fmt, ap);
+	va_end(ap);
+	return s;
+}
+
+/* Split "a,b" into exactly n numbers (n <= 2); their texts in part[]
+ * (into buf).  0 on success. */
+static int split_numbers(const char *v, int n, char *buf, size_t len,
+			 char **part)
+{
+	if (strlen(v) >= len)
+		return -1;
+	strcpy(buf, v);
+	int k = 0;
+	char *s = buf;
+	for (;;) {
+		char *comma = strchr(s, ',');
+		if (comma)
+			*comma = 0;
+		double d;
+		if (k >= n || text_parse_double(s, &d))
+			return -1;
+		part[k++] = s;
+		if (!comma)
+			break;
+		s = comma + 1;
+	}
+	return k == n ? 0 : -1;
+}
+
+int override_option(const char *cmd, int argc, char **argv, int *i,
+		    int *missing, struct overrides *ov)
+{
+	const char *v = NULL;
+	size_t o;
+	for (o = 0; o < sizeof options / sizeof *options; o++)
+		if ((v = cli_opt_value(argc, argv, i, options[o].option,
+				       missing)) || *missing)
+			break;
+	if (!v)
+		return 0;
+	enum override_kind kind = options[o].kind;
+	const char *opt = options[o].option;
+	char buf[256], *part[2];
+	char *key = NULL, *value = NULL;
+	switch (kind) {
+	case OVR_FRICTION:
+		if (!split_numbers(v, 1, buf, sizeof buf, part)) {
+			value = dup_printf("%s", part[0]);
+		} else if (!split_numbers(v, 2, buf, sizeof buf, part)) {
+			value = dup_printf("{bed: %s, head: %s}", part[0],
+					   part[1]);
+		} else {
+			return cli_usage_error(cmd, "--friction: '%s' is neither "
+					       "MU nor BED,HEAD (numbers)", v);
+		}
+		key = dup_printf("material.friction");
+		break;
+	case OVR_LOAD_AT:
+	case OVR_LOAD_DIR:
+		if (split_numbers(v, 2, buf, sizeof buf, part))
+			return cli_usage_error(cmd, "%s: '%s' is not two numbers "
+					       "%s", opt, v, kind == OVR_LOAD_AT ?
+					       "X,Y" : "DX,DY");
+		value = dup_printf("[%s, %s]", part[0], part[1]);
+		break;
+	case OVR_SET: {
+		const char *eq = strchr(v, '=');
+		size_t kl = eq ? (size_t)(eq - v) : 0;
+		int good = eq && kl > 0 && eq[1] && v[0] != '.' &&
+			   v[kl - 1] != '.';
+		for (size_t k = 0; good && k < kl; k++)
+			if (!isalnum((unsigned char)v[k]) && v[k] != '_' &&
+			    !(v[k] == '.' && v[k + 1] != '.'))
+				good = 0;
+		if (!good)
+			return cli_usage_error(cmd, "--set: '%s' is not KEY=VALUE "
+					       "(KEY a dotted path such as "
+					       "material.unit_weight)", v);
+		key = dup_printf("%.*s", (int)kl, v);
+		value = dup_printf("%s", eq + 1);
+		break;
+	}
+	}
+	ov->o = sw_xrealloc(ov->o, sizeof *ov->o * (size_t)(ov->n + 1));
+	struct override *x = &ov->o[ov->n++];
+	x->kind = kind;
+	x->option = dup_printf("%s", opt);
+	x->arg = dup_printf("%s", v);
+	x->key = key;
+	x->value = value;
+	x->label = dup_printf("%s %s", opt, v);
+	return 1;
+}
+
+/* The keys of --load-at and --load-direction: the wall's only load. */
+static int resolve_loads(const char *cmd, const char *path,
+			 struct overrides *ov)
+{
+	int need = 0;
+	for (int k = 0; k < ov->n; k++)
+		need |= ov->o[k].kind == OVR_LOAD_AT ||
+			ov->o[k].kind == OVR_LOAD_DIR;
+	if (!need)
+		return 0;
+	struct wall *w;
+	int rc = cli_load_wall(path, &w);
+	if (rc)
+		return rc;
+	for (int k = 0; k < ov->n && !rc; k++) {
+		struct override *x = &ov->o[k];
+		if (x->kind != OVR_LOAD_AT && x->kind != OVR_LOAD_DIR)
+			continue;
+		if (w->nloads != 1) {
+			rc = cli_usage_error(cmd, "%s: %s has %d live loads; say "
+					     "which with --set loads.K.point.%s="
+					     "[X, Y] (K from 0)", x->option,
+					     path, w->nloads,
+					     x->kind == OVR_LOAD_AT ? "at" :
+					     "direction");
+		} else if (w->loads[0].kind == LOAD_BODY &&
+			   x->kind == OVR_LOAD_AT) {
+			rc = cli_usage_error(cmd, "--load-at: the load of %s is a "
+					     "body load, which acts at every "
+					     "block's centroid", path);
+		} else {
+			free(x->key);
+			x->key = dup_printf("loads.0.%s.%s",
+					    w->loads[0].kind == LOAD_BODY ?
+					    "body" : "point",
+					    x->kind == OVR_LOAD_AT ? "at" :
+					    "direction");
+		}
+	}
+	wall_free(w);
+	return rc;
+}
+
+int override_load(const char *cmd, const char *path, struct overrides *ov,
+		  struct wall **w)
+{
+	*w = NULL;
+	if (ov->n == 0)
+		return cli_load_wall(path, w);
+	int rc = resolve_loads(cmd, path, ov);
+	if (rc)
+		return rc;
+	struct wallfile_edit *e = sw_xmalloc(sizeof *e * (size_t)ov->n);
+	for (int k = 0; k < ov->n; k++)
+		e[k] = (struct wallfile_edit){ov->o[k].key, ov->o[k].value,
+					      ov->o[k].label};
+	char err[SW_ERRLEN];
+	enum sw_status st = wallfile_load_edited(path, e, ov->n, w, err);
+	free(e);
+	if (st != SW_OK) {
+		/* a check of the whole model ("FILE: message") may be about
+		 * an override: say which the wall had */
+		size_t pl = strlen(path);
+		int placed = !strncmp(err, path, pl) && err[pl] == ':' &&
+			     isdigit((unsigned char)err[pl + 1]);
+		if (!strncmp(err, path, pl) && err[pl] == ':' && !placed) {
+			char d[1024];
+			override_describe(ov, d, sizeof d);
+			fprintf(stderr, "%s\n  (in %s as changed by: %s)\n", err,
+				path, d);
+		} else {
+			fprintf(stderr, "%s\n", err);
+		}
+		return sw_status_exit(st);
+	}
+	return 0;
+}
+
+void override_json(const struct overrides *ov, struct json *j)
+{
+	json_key(j, "overrides");
+	json_array_begin(j);
+	for (int k = 0; k < ov->n; k++) {
+		const struct override *x = &ov->o[k];
+		json_object_begin(j);
+		json_key(j, "option");
+		json_string(j, x->option);
+		json_key(j, "value");
+		json_string(j, x->arg);
+		json_key(j, "key");
+		json_string(j, x->key);
+		json_key(j, "yaml");
+		json_string(j, x->value);
+		json_object_end(j);
+	}
+	json_array_end(j);
+}
+
+void override_describe(const struct overrides *ov, char *buf, size_t len)
+{
+	size_t u = 0;
+	buf[0] = 0;
+	for (int k = 0; k < ov->n && u < len; k++) {
+		const struct override *x = &ov->o[k];
+		int m = snprintf(buf + u, len - u, "%s%s = %s (%s)",
+				 k ? "; " : "", x->key, x->value, x->label);
+		if (m < 0)
+			break;
+		u += (size_t)m;
+	}
+}
+
+void override_args(const struct overrides *ov, FILE *f)
+{
+	for (int k = 0; k < ov->n; k++) {
+		cli_shell_arg(f, ov->o[k].option);
+		cli_shell_arg(f, ov->o[k].arg);
+	}
+}
+
+void override_free(struct overrides *ov)
+{
+	for (int k = 0; k < ov->n; k++) {
+		free(ov->o[k].option);
+		free(ov->o[k].arg);
+		free(ov->o[k].key);
+		free(ov->o[k].value);
+		free(ov->o[k].label);
+	}
+	free(ov->o);
+	ov->o = NULL;
+	ov->n = 0;
+}

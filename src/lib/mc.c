@@ -1,0 +1,539 @@
+/*
+ * mc.c - the worker pool and the in-order reorder window; see mc.h.
+ *
+ * Shared state is guarded by one mutex: the next index to hand out, the
+ * next index the consumer expects, and a ring of `window` slots in which
+ * sample i lives at i % window until it is popped.  Counters and slots
+ * are ordinals k within the pool's share (first + k * stride is the
+ * sample's index), so a pool that computes one MPI rank's share works
+ * exactly like one that computes every sample.  A worker never runs
+ * more than `window` samples ahead of the consumer, so a slot is free
+ * when its sample arrives.  The stop flag is a C11 atomic so that a
+ * signal handler may set it; waits are timed (100 ms) so that a stop is
+ * noticed without a signal-unsafe broadcast.
+ *
+ * Random streams: sample i of a run with seed s draws from its own
+ * xoshiro256** generator, whose 256-bit state splitmix64 expands from
+ * the sample's 64-bit seed mix(mix(s) ^ i).  Every step is a bijection of
+ * 64 bits, so two samples of one run never share a stream (GSL's
+ * mt19937, used before, kept 32 bits of that seed: a million samples
+ * held about 116 identical pairs).
+ *
+ * Estimate (mc_sample_seconds).  A sample's time grows with the wall
+ * faster than linearly: the LPs have rows and columns in proportion to
+ * the interfaces, and on the large wall their pivots too (docs/
+ * performance.md: about 600 pivots a sample on Ferris & Tin-Loi wall 1,
+ * 43,000 on walls/large.yaml).  EST_SECONDS and EST_POWER are fitted to
+ * `slipwall run WALL -n N --threads 1`'s elapsed time per sample on
+ * this project's (loaded, shared) build machine: see the constants.
+ * It is a guide to tell seconds from minutes, not a promise.
+ */
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "lp.h"
+#include "slipwall/mc.h"
+
+/* Estimate: seconds of one sample at 100 interfaces, and the power of
+ * the interfaces.  Measured on 23 November 2026 (`run -n 20`, or -n 1
+ * for the large wall, one thread, elapsed time per sample with the
+ * workspace's set-up, a 2-core machine at a load average of about 10):
+ * demo (66 interfaces) 0.14 s, Ferris & Tin-Loi wall 1 (83) 0.12 s,
+ * wall 2 (141) 0.23 s, walls/large.yaml (2,956) 382 s.  The line through
+ * wall 2 and the large wall in log-log: power 2.44, 0.099 s at 100.
+ * The small walls are above it (fixed costs), where nothing is said
+ * anyway (under a second); an idle machine is two or three times
+ * faster. */
+#define EST_SECONDS 0.1
+#define EST_POWER 2.4
+
+struct slot {
+	int full;
+	struct mc_item item;
+};
+
+struct mc {
+	struct mc_config cfg;
+	pthread_t *th;
+	int nth, started;
+	pthread_mutex_t mu;
+	pthread_cond_t cv_space, cv_ready;
+	long count;		/* samples in this pool's share */
+	long next_index, next_out, window;	/* ordinals in the share */
+	int running;
+	struct slot *ring;
+	atomic_int stop;
+	int pipe[2];
+	struct mc_counters counters;
+	/* per worker: when its current sample started (its workspace
+	 * setup counts in its first one), 0 when idle; for mc_progress */
+	double *since;
+	int nextid;
+};
+
+/* splitmix64's finaliser: a bijection of 64 bits */
+static uint64_t mix(uint64_t z)
+{
+	z += 0x9e3779b97f4a7c15ULL;
+	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	return z ^ (z >> 31);
+}
+
+void mc_rng_seed(struct mc_rng *r, unsigned long seed, unsigned long index)
+{
+	uint64_t x = mix(mix((uint64_t)seed) ^ (uint64_t)index);
+	/* splitmix64 expands the sample seed into the state: its outputs
+	 * mix(x), mix(x + g), ... (each a bijection of x, so the state is
+	 * never all zero) */
+	for (int k = 0; k < 4; k++) {
+		r->s[k] = mix(x);
+		x += 0x9e3779b97f4a7c15ULL;
+	}
+}
+
+static uint64_t rotl(uint64_t x, int k)
+{
+	return (x << k) | (x >> (64 - k));
+}
+
+uint64_t mc_rng_next(struct mc_rng *r)
+{
+	uint64_t *s = r->s;
+	uint64_t out = rotl(s[1] * 5, 7) * 9, t = s[1] << 17;
+	s[2] ^= s[0];
+	s[3] ^= s[1];
+	s[1] ^= s[2];
+	s[0] ^= s[3];
+	s[2] ^= t;
+	s[3] = rotl(s[3], 45);
+	return out;
+}
+
+double mc_rng_uniform(struct mc_rng *r)
+{
+	return (double)(mc_rng_next(r) >> 11) * 0x1.0p-53;
+}
+
+void mc_positions(const struct wall *w, unsigned long seed,
+		  unsigned long index, double depth, double *xi)
+{
+	struct mc_rng r;
+	mc_rng_seed(&r, seed, index);
+	if (depth < 0)
+		depth = w->depth;
+	for (int k = 0; k < w->nifaces; k++) {
+		/* two uniforms per interface, always drawn, so that the
+		 * positions are continuous in the depth (common random
+		 * numbers for --fit-depth) */
+		double u1 = mc_rng_uniform(&r), u2 = mc_rng_uniform(&r);
+		if (w->anywhere) {
+			xi[2 * k] = fmin(u1, u2);
+			xi[2 * k + 1] = fmax(u1, u2);
+		} else {
+			xi[2 * k] = depth * u1;
+			xi[2 * k + 1] = 1 - depth * u2;
+		}
+	}
+}
+
+void mc_config_default(struct mc_config *c, const struct wall *w)
+{
+	memset(c, 0, sizeof *c);
+	c->w = w;
+	c->seed = w->seed;
+	c->n = w->samples;
+	c->first = 0;
+	c->stride = 1;
+	c->threads = 1;
+	c->depth = -1;
+	sample_opts_default(&c->opts);
+}
+
+void mc_item_init(struct mc_item *it, const struct wall *w)
+{
+	memset(it, 0, sizeof *it);
+	it->xi = sw_xcalloc(2 * (size_t)w->nifaces + 1, sizeof(double));
+	it->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
+	it->vel = sw_xcalloc(3 * (size_t)w->nblocks + 1, sizeof(double));
+}
+
+void mc_item_free(struct mc_item *it)
+{
+	free(it->xi);
+	free(it->joint);
+	free(it->vel);
+	memset(it, 0, sizeof *it);
+}
+
+static void item_copy(struct mc_item *dst, const struct mc_item *src,
+		      const struct wall *w)
+{
+	double *xi = dst->xi, *vel = dst->vel;
+	char *joint = dst->joint;
+	*dst = *src;
+	dst->xi = xi;
+	dst->vel = vel;
+	dst->joint = joint;
+	memcpy(xi, src->xi, sizeof(double) * 2 * (size_t)w->nifaces);
+	memcpy(vel, src->vel, sizeof(double) * 3 * (size_t)w->nblocks);
+	memcpy(joint, src->joint, (size_t)w->nifaces + 1);
+}
+
+static void notify(struct mc *m)
+{
+	char b = 1;
+	/* non-blocking: a full pipe already says "look" */
+	ssize_t r = write(m->pipe[1], &b, 1);
+	(void)r;
+}
+
+static void deadline(struct timespec *ts, int ms)
+{
+	clock_gettime(CLOCK_REALTIME, ts);
+	ts->tv_sec += ms / 1000;
+	ts->tv_nsec += (long)(ms % 1000) * 1000000L;
+	if (ts->tv_nsec >= 1000000000L) {
+		ts->tv_sec++;
+		ts->tv_nsec -= 1000000000L;
+	}
+}
+
+static double now(void)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void *worker(void *arg)
+{
+	struct mc *m = arg;
+	const struct wall *w = m->cfg.w;
+	pthread_mutex_lock(&m->mu);
+	int id = m->nextid++;
+	m->since[id] = now();
+	pthread_mutex_unlock(&m->mu);
+	/* a stop reaches the LPs too: a sample in progress is abandoned
+	 * (on a large wall one LP can take minutes) */
+	lp_thread_stop_flag(&m->stop);
+	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_result r;
+	struct mc_item it;
+	sample_result_init(&r, w);
+	mc_item_init(&it, w);
+	size_t nxi = 2 * (size_t)w->nifaces;
+
+	for (;;) {
+		pthread_mutex_lock(&m->mu);
+		while (!atomic_load(&m->stop) && m->next_index < m->count &&
+		       m->next_index >= m->next_out + m->window) {
+			struct timespec ts;
+			deadline(&ts, 100);
+			pthread_cond_timedwait(&m->cv_space, &m->mu, &ts);
+		}
+		if (atomic_load(&m->stop) || m->next_index >= m->count) {
+			pthread_mutex_unlock(&m->mu);
+			break;
+		}
+		long k = m->next_index++;
+		if (m->since[id] == 0)
+			m->since[id] = now();
+		pthread_mutex_unlock(&m->mu);
+		long i = m->cfg.first + k * m->cfg.stride;
+
+		if (m->cfg.positions)
+			memcpy(it.xi, m->cfg.positions + (size_t)i * nxi,
+			       sizeof(double) * nxi);
+		else
+			mc_positions(w, m->cfg.seed, (unsigned long)i,
+				     m->cfg.depth, it.xi);
+		double t0 = now();
+		sample_run(ws, it.xi, &m->cfg.opts, &r);
+		if (lp_thread_interrupted())
+			break;	/* incomplete: never reported (mc_pop ends
+				 * at its index once the workers are gone) */
+		it.seconds = now() - t0;
+		it.index = i;
+		it.status = r.status;
+		it.lambda_lpmax = r.lambda_lpmax;
+		it.lambda_max = r.lambda_max;
+		it.lambda_min = r.lambda_min;
+		it.vw_residual = r.vw_residual;
+		it.iterations = r.iterations;
+		it.lps = r.lps;
+		if (r.status == SAMPLE_ACCEPTED) {
+			memcpy(it.joint, r.joint, (size_t)w->nifaces + 1);
+			memcpy(it.vel, r.vel, sizeof(double) * 3 * (size_t)w->nblocks);
+		} else {
+			memset(it.joint, 0, (size_t)w->nifaces + 1);
+			memset(it.vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
+		}
+
+		pthread_mutex_lock(&m->mu);
+		struct slot *s = &m->ring[k % m->window];
+		item_copy(&s->item, &it, w);
+		s->full = 1;
+		m->since[id] = 0;
+		if (k == m->next_out) {
+			pthread_cond_broadcast(&m->cv_ready);
+			notify(m);
+		}
+		pthread_mutex_unlock(&m->mu);
+	}
+
+	long solves, iters, held;
+	lp_thread_counters(&solves, &iters, &held);
+	double lp_seconds = lp_thread_seconds();
+	sample_result_free(&r);
+	mc_item_free(&it);
+	sample_ws_free(ws);
+	lp_thread_stop_flag(NULL);
+	lp_thread_done();
+	pthread_mutex_lock(&m->mu);
+	m->counters.solves += solves;
+	m->counters.iterations += iters;
+	m->counters.held += held;
+	m->counters.lp_seconds += lp_seconds;
+	m->since[id] = 0;
+	m->running--;
+	pthread_cond_broadcast(&m->cv_ready);
+	notify(m);
+	pthread_mutex_unlock(&m->mu);
+	return NULL;
+}
+
+struct mc *mc_start(const struct mc_config *c, char *err)
+{
+	if (c->threads < 1 || c->threads > 1024) {
+		sw_fail(err, SW_EUSAGE, "threads must be between 1 and 1024");
+		return NULL;
+	}
+	if (c->first < 0 || c->stride < 0) {
+		sw_fail(err, SW_EUSAGE, "a pool's share needs first >= 0 and "
+			"stride >= 0");
+		return NULL;
+	}
+	struct mc *m = sw_xcalloc(1, sizeof *m);
+	m->cfg = *c;
+	if (m->cfg.stride == 0)
+		m->cfg.stride = 1;
+	m->count = c->n > c->first ? (c->n - c->first - 1) / m->cfg.stride + 1
+				   : 0;
+	/* never more workers than samples to compute */
+	m->nth = m->count > 0 && m->count < c->threads ? (int)m->count :
+		 c->threads;
+	m->window = 64 + 16L * m->nth;
+	m->ring = sw_xcalloc((size_t)m->window, sizeof *m->ring);
+	for (long k = 0; k < m->window; k++)
+		mc_item_init(&m->ring[k].item, c->w);
+	pthread_mutex_init(&m->mu, NULL);
+	pthread_cond_init(&m->cv_space, NULL);
+	pthread_cond_init(&m->cv_ready, NULL);
+	atomic_init(&m->stop, 0);
+	if (pipe(m->pipe) != 0) {
+		sw_fail(err, SW_EIO, "cannot create a pipe: %s", strerror(errno));
+		m->pipe[0] = m->pipe[1] = -1;
+		mc_free(m);
+		return NULL;
+	}
+	for (int k = 0; k < 2; k++) {
+		fcntl(m->pipe[k], F_SETFL, fcntl(m->pipe[k], F_GETFL) | O_NONBLOCK);
+		fcntl(m->pipe[k], F_SETFD, FD_CLOEXEC);
+	}
+	m->th = sw_xcalloc((size_t)m->nth, sizeof *m->th);
+	m->since = sw_xcalloc((size_t)m->nth, sizeof *m->since);
+
+	/* workers inherit a full signal mask: signals go to the caller */
+	sigset_t all, old;
+	sigfillset(&all);
+	pthread_sigmask(SIG_SETMASK, &all, &old);
+	m->running = 0;
+	for (int k = 0; k < m->nth; k++) {
+		pthread_mutex_lock(&m->mu);
+		m->running++;
+		pthread_mutex_unlock(&m->mu);
+		if (pthread_create(&m->th[k], NULL, worker, m) != 0) {
+			pthread_mutex_lock(&m->mu);
+			m->running--;
+			pthread_mutex_unlock(&m->mu);
+			break;
+		}
+		m->started++;
+	}
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	if (m->started == 0) {
+		sw_fail(err, SW_EIO, "cannot start a worker thread");
+		mc_free(m);
+		return NULL;
+	}
+	return m;
+}
+
+void mc_progress(struct mc *m, struct mc_progress *p)
+{
+	double t = now();
+	memset(p, 0, sizeof *p);
+	pthread_mutex_lock(&m->mu);
+	for (int k = 0; k < m->nth; k++) {
+		if (m->since[k] == 0)
+			continue;
+		double age = t - m->since[k];
+		p->busy++;
+		p->total += age;
+		if (age > p->oldest)
+			p->oldest = age;
+	}
+	pthread_mutex_unlock(&m->mu);
+}
+
+int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
+{
+	char buf[64];
+	while (read(m->pipe[0], buf, sizeof buf) > 0)
+		;
+	pthread_mutex_lock(&m->mu);
+	struct timespec ts;
+	if (wait_ms > 0)
+		deadline(&ts, wait_ms);
+	for (;;) {
+		if (m->next_out >= m->count) {
+			pthread_mutex_unlock(&m->mu);
+			return -1;
+		}
+		struct slot *s = &m->ring[m->next_out % m->window];
+		if (s->full) {
+			item_copy(it, &s->item, m->cfg.w);
+			s->full = 0;
+			m->next_out++;
+			pthread_cond_broadcast(&m->cv_space);
+			pthread_mutex_unlock(&m->mu);
+			return 1;
+		}
+		/* nothing will come: the sample was never handed out (stop)
+		 * or no worker is left */
+		if (m->running == 0 ||
+		    (atomic_load(&m->stop) && m->next_out >= m->next_index)) {
+			pthread_mutex_unlock(&m->mu);
+			return -1;
+		}
+		if (wait_ms == 0) {
+			pthread_mutex_unlock(&m->mu);
+			return 0;
+		}
+		if (wait_ms < 0) {
+			struct timespec t2;
+			deadline(&t2, 100);
+			pthread_cond_timedwait(&m->cv_ready, &m->mu, &t2);
+		} else if (pthread_cond_timedwait(&m->cv_ready, &m->mu, &ts) ==
+			   ETIMEDOUT) {
+			int full = m->ring[m->next_out % m->window].full;
+			if (!full) {
+				pthread_mutex_unlock(&m->mu);
+				return 0;
+			}
+		}
+	}
+}
+
+int mc_wake_fd(const struct mc *m)
+{
+	return m->pipe[0];
+}
+
+void mc_stop(struct mc *m)
+{
+	atomic_store(&m->stop, 1);
+}
+
+void mc_counters(const struct mc *m, struct mc_counters *c)
+{
+	pthread_mutex_lock((pthread_mutex_t *)&m->mu);
+	*c = m->counters;
+	pthread_mutex_unlock((pthread_mutex_t *)&m->mu);
+}
+
+void mc_wait(struct mc *m)
+{
+	pthread_mutex_lock(&m->mu);
+	while (m->running > 0) {
+		struct timespec ts;
+		deadline(&ts, 100);
+		pthread_cond_timedwait(&m->cv_ready, &m->mu, &ts);
+	}
+	pthread_mutex_unlock(&m->mu);
+}
+
+void mc_free(struct mc *m)
+{
+	if (!m)
+		return;
+	mc_stop(m);
+	pthread_mutex_lock(&m->mu);
+	pthread_cond_broadcast(&m->cv_space);
+	pthread_mutex_unlock(&m->mu);
+	for (int k = 0; k < m->started; k++)
+		pthread_join(m->th[k], NULL);
+	for (long k = 0; k < m->window; k++)
+		mc_item_free(&m->ring[k].item);
+	free(m->ring);
+	free(m->th);
+	free(m->since);
+	if (m->pipe[0] >= 0)
+		close(m->pipe[0]);
+	if (m->pipe[1] >= 0)
+		close(m->pipe[1]);
+	pthread_mutex_destroy(&m->mu);
+	pthread_cond_destroy(&m->cv_space);
+	pthread_cond_destroy(&m->cv_ready);
+	free(m);
+}
+
+double mc_sample_seconds(const struct wall *w)
+{
+	double n = w->nifaces > 1 ? (double)w->nifaces : 1;
+	return EST_SECONDS * pow(n / 100.0, EST_POWER);
+}
+
+void mc_about(char *buf, size_t len, double s)
+{
+	if (!(s >= 1))
+		snprintf(buf, len, "under a second");
+	else if (s < 59.5)
+		snprintf(buf, len, "about %.0f s", s);
+	else if (s < 5970)	/* under 99.5 min */
+		snprintf(buf, len, "about %.0f min", s / 60);
+	else
+		snprintf(buf, len, "about %.0f h", s / 3600);
+}
+
+int mc_ncpu(void)
+{
+	long n = sysconf(_SC_NPROCESSORS_ONLN);
+	return n > 0 ? (int)n : 1;
+}
+
+void mc_worker_memory_set(double mb)
+{
+	lp_mem_limit_set(mb);
+}
+
+int mc_worker_memory(void)
+{
+	return lp_mem_limit();
+}
+
+long mc_memory_errors(void)
+{
+	return lp_memory_errors();
+}

@@ -1,0 +1,146 @@
+/*
+ * statics.c - assembly of the equilibrium operator; see statics.h for the
+ * conventions.  Every entry of A is computed in statics_column(); the
+ * kinematic rates are its transpose applied to velocities.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "statics.h"
+
+void statics_init(struct statics *s, const struct wall *w)
+{
+	memset(s, 0, sizeof *s);
+	s->w = w;
+	s->nrows = 3 * w->nfree;
+	s->ncols = 3 * w->nifaces;
+	s->F = w->mean_weight;
+	s->L = w->mean_size;
+	double ref = 0;
+	int nloaded = 0;
+	for (int l = 0; l < w->nloads; l++) {
+		if (w->loads[l].kind == LOAD_POINT) {
+			ref += w->loads[l].magnitude;
+			nloaded++;
+		} else {
+			ref += w->loads[l].magnitude * w->total_weight;
+			nloaded += w->nfree;
+		}
+	}
+	/* the mean reference live force per loaded block: every force is
+	 * divided by it before a lever multiplies it, so that a moment is
+	 * finite whenever the forces are (a load of 1e308 N at a lever of
+	 * 2 m overflows; 2 at 2 does not) */
+	double unit = ref > 0 ? ref / nloaded : s->F;
+	s->S = s->F / unit;
+	s->fL = sw_xcalloc((size_t)s->nrows + 1, sizeof(double));
+	s->fD = sw_xcalloc((size_t)s->nrows + 1, sizeof(double));
+	s->q = sw_xcalloc(4 * (size_t)w->nifaces + 1, sizeof(double));
+	s->xi = sw_xcalloc(2 * (size_t)w->nifaces + 1, sizeof(double));
+
+	/* f_L at lambda_scaled = 1 is S times the reference load, over F,
+	 * that is the reference load over `unit` */
+	for (int l = 0; l < w->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		for (int k = 0; k < w->nblocks; k++) {
+			const struct wall_block *b = &w->blocks[k];
+			double f, px, py;
+			if (b->fixed)
+				continue;
+			if (ld->kind == LOAD_POINT) {
+				if (ld->block != k)
+					continue;
+				f = ld->magnitude / unit;
+				px = ld->at[0];
+				py = ld->at[1];
+			} else {
+				/* finite: wall_finish checked the magnitude
+				 * times the whole wall's weight */
+				f = ld->magnitude * b->weight / unit;
+				px = b->cx;
+				py = b->cy;
+			}
+			double fx = f * ld->dir[0], fy = f * ld->dir[1];
+			/* the lever over L: F * L overflows on a wall whose
+			 * weights and sizes are large (1e290 N and 1e20 m) */
+			double m = (px - b->cx) / s->L * fy -
+				   (py - b->cy) / s->L * fx;
+			s->fL[3 * b->eq] += fx;
+			s->fL[3 * b->eq + 1] += fy;
+			s->fL[3 * b->eq + 2] += m;
+		}
+	}
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (!b->fixed)
+			s->fD[3 * b->eq + 1] = -b->weight / s->F;
+	}
+	double *xi = sw_xmalloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	for (int k = 0; k < w->nifaces; k++) {
+		xi[2 * k] = 0;
+		xi[2 * k + 1] = 1;
+	}
+	statics_set_points(s, xi);
+	free(xi);
+}
+
+void statics_free(struct statics *s)
+{
+	free(s->fL);
+	free(s->fD);
+	free(s->q);
+	free(s->xi);
+	memset(s, 0, sizeof *s);
+}
+
+void statics_set_points(struct statics *s, const double *xi)
+{
+	const struct wall *w = s->w;
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *it = &w->ifaces[k];
+		for (int e = 0; e < 2; e++) {
+			double x = xi[2 * k + e];
+			s->xi[2 * k + e] = x;
+			s->q[4 * k + 2 * e] = it->p1[0] + x * (it->p2[0] - it->p1[0]);
+			s->q[4 * k + 2 * e + 1] = it->p1[1] + x * (it->p2[1] - it->p1[1]);
+		}
+	}
+}
+
+int statics_column(const struct statics *s, int j, int *rows, double *vals)
+{
+	const struct wall *w = s->w;
+	const struct wall_interface *it = &w->ifaces[j / 3];
+	int kind = j % 3;
+	const double *e = kind == 2 ? it->t : it->n;
+	/* the shear's moment does not depend on where along the joint it
+	 * acts; take p1 */
+	const double *p = kind == 2 ? it->p1 : &s->q[4 * (j / 3) + 2 * kind];
+	int n = 0;
+	const int body[2] = {it->b, it->a};
+	const double sign[2] = {1, -1};
+	for (int side = 0; side < 2; side++) {
+		const struct wall_block *B = &w->blocks[body[side]];
+		if (B->fixed)
+			continue;
+		double m = (p[0] - B->cx) * e[1] - (p[1] - B->cy) * e[0];
+		rows[n] = 3 * B->eq;
+		vals[n++] = sign[side] * e[0];
+		rows[n] = 3 * B->eq + 1;
+		vals[n++] = sign[side] * e[1];
+		rows[n] = 3 * B->eq + 2;
+		vals[n++] = sign[side] * m / s->L;
+	}
+	return n;
+}
+
+double statics_rate(const struct statics *s, int j, const double *v)
+{
+	int rows[6];
+	double vals[6], r = 0;
+	int n = statics_column(s, j, rows, vals);
+	for (int i = 0; i < n; i++)
+		r += vals[i] * v[rows[i]];
+	return r;
+}

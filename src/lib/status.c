@@ -1,0 +1,126 @@
+/* status.c - the status table, error formatting, checked allocation,
+ * files written whole or not at all. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "slipwall/status.h"
+
+static const struct {
+	int exit_code;
+	const char *text;
+} status_info[] = {
+#define SW_X(name, code, text) {code, text},
+	SW_STATUS_TABLE(SW_X)
+#undef SW_X
+};
+
+int sw_status_exit(enum sw_status st)
+{
+	if ((unsigned)st >= SW_STATUS_COUNT)
+		return 1;
+	return status_info[st].exit_code;
+}
+
+const char *sw_status_text(enum sw_status st)
+{
+	if ((unsigned)st >= SW_STATUS_COUNT)
+		return "unknown status";
+	return status_info[st].text;
+}
+
+enum sw_status sw_fail(char *err, enum sw_status st, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(err, SW_ERRLEN, fmt, ap);
+	va_end(ap);
+	return st;
+}
+
+static void oom(size_t n)
+{
+	fprintf(stderr, "slipwall: out of memory (%zu bytes)\n", n);
+	abort();
+}
+
+void *sw_xmalloc(size_t n)
+{
+	void *p = malloc(n ? n : 1);
+	if (!p)
+		oom(n);
+	return p;
+}
+
+void *sw_xcalloc(size_t n, size_t size)
+{
+	void *p = calloc(n ? n : 1, size ? size : 1);
+	if (!p)
+		oom(n * size);
+	return p;
+}
+
+void *sw_xrealloc(void *p, size_t n)
+{
+	void *q = realloc(p, n ? n : 1);
+	if (!q)
+		oom(n);
+	return q;
+}
+
+char *sw_xstrdup(const char *s)
+{
+	size_t n = strlen(s) + 1;
+	char *d = sw_xmalloc(n);
+	memcpy(d, s, n);
+	return d;
+}
+
+enum sw_status sw_whole_open(struct sw_whole *w, const char *path, char *err)
+{
+	size_t n = strlen(path) + 5;
+	w->tmp = sw_xmalloc(n);
+	snprintf(w->tmp, n, "%s.tmp", path);
+	w->f = fopen(w->tmp, "w");
+	if (!w->f) {
+		enum sw_status st = sw_fail(err, SW_EIO, "%s: cannot write: %s",
+					    w->tmp, strerror(errno));
+		free(w->tmp);
+		w->tmp = NULL;
+		return st;
+	}
+	w->path = sw_xstrdup(path);
+	errno = 0;	/* a failed write below leaves its reason here */
+	return SW_OK;
+}
+
+enum sw_status sw_whole_close(struct sw_whole *w, char *err)
+{
+	int e = 0;
+	if (ferror(w->f) || fflush(w->f) != 0)
+		e = errno ? errno : EIO;
+	if (!e && fsync(fileno(w->f)) != 0)
+		e = errno;
+	if (fclose(w->f) != 0 && !e)
+		e = errno ? errno : EIO;
+	if (!e && rename(w->tmp, w->path) != 0)
+		e = errno;
+	enum sw_status st = SW_OK;
+	if (e) {
+		unlink(w->tmp);
+		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", w->path,
+			     strerror(e));
+	}
+	free(w->tmp);
+	free(w->path);
+	w->f = NULL;
+	w->tmp = w->path = NULL;
+	return st;
+}
+
+const char *sw_version(void)
+{
+	return SLIPWALL_VERSION;
+}

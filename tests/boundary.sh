@@ -1,0 +1,117 @@
+#!/bin/bash
+# boundary.sh - the walls between the three rooms (docs/design.md) stand.
+#
+#   src/lib/  libslipwall: computes; the only room that includes the LP
+#             solver (and only its LP layer, lp.c), GSL, libyaml, cairo
+#   src/tui/  the workbench: the only room that includes curses
+#   src/cli/  main and the batch commands: the only room with MPI
+#
+# Each rule is a pattern of #include lines (or of dependencies in a
+# room's meson.build) and the places where it may appear; a match
+# anywhere else is a crossing, printed as FILE:LINE: text.  The rules are
+# then proven able to fail: for each one, a copy of the tree gets one
+# crossing planted in it, and the rule must find it.
+#
+# Usage (from the source root): bash tests/boundary.sh
+# TAP output.
+cd "$(dirname "$0")/.." || exit 1
+. tests/tap.sh
+
+# RULE: name | files it looks at (find -path patterns, relative to the
+# tree) | the files of those where the pattern is allowed (an extended
+# regex on the path, or "-" for none) | the pattern (extended regex on
+# lines)
+rules=(
+	"curses outside src/tui/|src/*|^src/tui/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(n?cursesw?/|n?cursesw?\.h|panel\.h|term\.h)"
+	"MPI outside src/cli/|src/* include/*|^src/cli/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<mpi\.h>"
+	"GLPK outside the LP layer (src/lib/lp.c)|src/* include/*|^src/lib/lp\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
+	"the LP layer's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp\.h\""
+	"the operator's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?statics\.h\""
+	"GSL, libyaml, cairo outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(gsl/|yaml\.h|cairo|fontconfig/)"
+	"src/tui/ including src/cli/|src/tui/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(cli/)?(cli|override|summary|cluster)\.h\""
+	"the library including a front end|src/lib/* include/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*((cli|tui)/)?(cli|override|summary|cluster|tui|workbench)\.h\""
+	"src/cli/ past the workbench's door (workbench.h)|src/cli/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(tui/)?tui\.h\""
+	"a room's meson.build naming another room's dependencies|src/lib/meson.build src/tui/meson.build src/cli/meson.build|-|@meson"
+	"source files outside the three rooms|src/*|-|@loose"
+)
+
+# crossings TREE RULE: print the crossings of RULE in TREE (empty: none)
+crossings() {
+	local tree=$1 rule=$2
+	local name scope allowed pat
+	IFS='|' read -r name scope allowed pat <<<"$rule"
+	(
+		cd "$tree" || exit 1
+		if [ "$pat" = "@loose" ]; then
+			find src -maxdepth 1 -type f \( -name '*.c' -o -name '*.h' \)
+			exit 0
+		fi
+		if [ "$pat" = "@meson" ]; then
+			# the dependencies each room may name
+			grep -HnE 'curses_dep|mpi_dep' src/lib/meson.build
+			grep -HnE 'mpi_dep|glpk_dep|gsl_dep|yaml_dep|cairo_dep' src/tui/meson.build
+			grep -HnE 'curses_dep|glpk_dep|gsl_dep|yaml_dep|cairo_dep' src/cli/meson.build
+			exit 0
+		fi
+		local files=() p f
+		set -f	# the scope's patterns are find's, not the shell's
+		for p in $scope; do
+			while IFS= read -r f; do files+=("$f"); done < <(
+				find . -path "./$p" -type f \( -name '*.c' -o -name '*.h' \) |
+					sed 's|^\./||' | sort)
+		done
+		for f in "${files[@]}"; do
+			if [ "$allowed" != "-" ] && [[ $f =~ $allowed ]]; then
+				continue
+			fi
+			grep -HnE "$pat" "$f"
+		done
+		exit 0
+	)
+}
+
+# 1. the tree as it is: no crossing
+for rule in "${rules[@]}"; do
+	name=${rule%%|*}
+	out=$(crossings . "$rule")
+	if [ -z "$out" ]; then
+		ok "no $name"
+	else
+		mapfile -t lines <<<"$out"
+		not_ok "no $name" "${lines[@]}"
+	fi
+done
+
+# 2. each rule finds a crossing planted on purpose
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+plant() {	# RULE-INDEX: the file and line that cross rule i
+	case $1 in
+	0) echo "src/lib/planted.c|#include <curses.h>" ;;
+	1) echo "src/tui/planted.c|#include <mpi.h>" ;;
+	2) echo "src/lib/sample_planted.c|#include <glpk.h>" ;;
+	3) echo "src/cli/planted.c|#include \"lp.h\"" ;;
+	4) echo "src/tui/planted.c|# include \"statics.h\"" ;;
+	5) echo "src/cli/planted.c|#include <gsl/gsl_rng.h>" ;;
+	6) echo "src/tui/planted.c|#include \"cli.h\"" ;;
+	7) echo "include/slipwall/planted.h|#include \"tui.h\"" ;;
+	8) echo "src/cli/planted.c|#include \"tui.h\"" ;;
+	9) echo "src/tui/meson.build|  dependencies : [slipwall_dep, curses_dep, mpi_dep])" ;;
+	10) echo "src/planted.c|int planted;" ;;
+	esac
+}
+for i in "${!rules[@]}"; do
+	rule=${rules[$i]}
+	name=${rule%%|*}
+	rm -rf "${tmp:?}/tree" && mkdir "$tmp/tree"
+	cp -r src include "$tmp/tree/"
+	IFS='|' read -r file line <<<"$(plant "$i")"
+	printf '%s\n' "$line" >>"$tmp/tree/$file"
+	out=$(crossings "$tmp/tree" "$rule")
+	if grep -qF "${file}" <<<"$out"; then
+		ok "planted crossing found: $name ($file: $line)"
+	else
+		not_ok "planted crossing found: $name ($file: $line)" "found: $out"
+	fi
+done
+tap_end

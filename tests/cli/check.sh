@@ -1,0 +1,87 @@
+#!/bin/bash
+# cli/check.sh - `slipwall check` and `slipwall solve` through the real
+# binary: counts and loads someone could get wrong, exit statuses.
+set -u
+bin=$1
+cd "$(dirname "$0")/../.." || exit 1
+. tests/tap.sh
+# ok_if STATUS TEXT: ok when STATUS is 0
+ok_if() { if [ "$1" = 0 ]; then ok "$2"; else not_ok "$2"; fi; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# The demo wall by hand: 8 courses of 0.20 x 0.15 m blocks in a 0.60 m
+# wall, half-start courses [0.1 0.2 0.2 0.1] (4 blocks) and full ones
+# [0.2 0.2 0.2] (3): 4*4 + 4*3 = 28 blocks.  Head joints 4*3 + 4*2 = 20;
+# between two courses the joints at every 0.1 m split the bed into 6
+# segments, 7 pairs = 42; 4 blocks on the ground.  66 interfaces.
+"$bin" check --json walls/demo.yaml > "$tmp/demo.json"
+ok_if $? "check --json demo wall exits 0"
+python3 - "$tmp/demo.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+free = [b for b in d["blocks"] if not b["fixed"]]
+assert len(free) == 28, len(free)
+assert len(d["interfaces"]) == 66, len(d["interfaces"])
+head = [i for i in d["interfaces"] if i["kind"] == "head"]
+assert len(head) == 20, len(head)
+# weight of a full block: 19620 * 0.2 * 0.15 * 0.1 = 58.86 N; 20 of them
+# (3 in each full course, 2 in each half-start one)
+w = [b["weight"] for b in free if abs(b["area"] - 0.03) < 1e-12]
+assert all(abs(x - 58.86) < 1e-9 for x in w) and len(w) == 20, (len(w), w[:3])
+assert d["loads"][0]["type"] == "point" and d["loads"][0]["block"] == "c4b3", d["loads"][0]
+PY
+ok_if $? "demo wall: 28 blocks, 66 interfaces (20 head), 58.86 N blocks, load on c4b3"
+
+"$bin" check walls/ferris-tinloi-1.yaml > "$tmp/ft1.txt"
+grep -q "33 free" "$tmp/ft1.txt"
+ok_if $? "check text: Ferris & Tin-Loi wall 1 has 33 free blocks"
+
+"$bin" check --help > /dev/null
+ok_if $? "check --help exits 0"
+"$bin" check > /dev/null 2>&1
+[ $? = 2 ]
+ok_if $? "check without a file exits 2"
+"$bin" check walls/demo.yaml --frobnicate > /dev/null 2>&1
+[ $? = 2 ]
+ok_if $? "check with an unknown option exits 2"
+"$bin" --help | grep -q "commands:"
+ok_if $? "slipwall --help lists the commands"
+
+# single block 0.4 x 0.8 pushed at height 0.6: overturns at
+# P = W b / (2 a) = W / 3 (b/2a = 0.333 < mu = 0.6)
+"$bin" check --json walls/single-block.yaml > "$tmp/sb.json"
+for m in standard gilbert global; do
+	"$bin" solve walls/single-block.yaml --method $m --json > "$tmp/$m.json"
+	ok_if $? "solve --method $m exits 0"
+	python3 - "$tmp/sb.json" "$tmp/$m.json" <<'PY'
+import json, sys
+w = json.load(open(sys.argv[1])); r = json.load(open(sys.argv[2]))
+W = w["total_weight"]
+b = 0.4; a = w["loads"][0]["at"][1]; mu = w["material"]["friction"]["bed"]
+want = W * min(mu, b / (2 * a))
+assert abs(r["load_factor"] - want) <= 1e-9 * want, (r["load_factor"], want)
+assert r["mechanism"]["blocks"][0]["moving"]
+PY
+	ok_if $? "solve --method $m: single block at W b/(2a)"
+done
+"$bin" solve walls/single-block.yaml --method magic > /dev/null 2>&1
+[ $? = 2 ]
+ok_if $? "solve with an unknown method exits 2"
+
+# a load pushing a block into an abutment: no finite collapse load
+cat > "$tmp/boxed.yaml" <<'Y'
+blocks:
+  - vertices: [[0, 0], [0.4, 0], [0.4, 0.4], [0, 0.4]]
+supports:
+  - ground: {y: 0}
+  - vertices: [[0.4, 0], [0.6, 0], [0.6, 0.6], [0.4, 0.6]]
+loads:
+  - point: {at: [0, 0.1], direction: [1, 0]}
+Y
+"$bin" solve "$tmp/boxed.yaml" --method standard > /dev/null 2> "$tmp/err"
+rc=$?
+[ $rc = 1 ] && grep -q "unbounded" "$tmp/err"
+ok_if $? "a load pushing into a support: exit 1 and says unbounded ($(cat "$tmp/err"))"
+
+tap_end

@@ -1,0 +1,169 @@
+#!/bin/bash
+# cli/compare.sh - `slipwall compare` end to end.
+#
+# Usage (from the source root): bash tests/cli/compare.sh /path/to/slipwall
+# Proves: the KS statistic and the three exact p-values on small samples
+# with ties equal a brute-force permutation count in exact rational
+# arithmetic (python3 fractions, all C(9,4) splits of the pooled data);
+# the wall's tests: key and a tests file give the same result; bad input
+# and missing tests exit 2 with FILE:LINE:COL; --fit-depth finds the depth
+# that made the "tests" (model loads at d = 0.3 with another seed).
+# TAP output.
+
+bin=${1:?usage: cli/compare.sh SLIPWALL}
+cd "$(dirname "$0")/../.." || exit 1
+
+. tests/tap.sh
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+demo=walls/demo.yaml
+# the hand-made samples files below have one interface: the single block's
+one=walls/single-block.yaml
+
+# ---- KS against a brute-force permutation test --------------------------------
+# model x = {1, 2, 2, 3, 5} (two rejected rows are skipped),
+# tests y = {2, 3, 3, 4}: ties inside and across the samples
+cat >"$tmp/model.csv" <<'EOF'
+sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1
+0,accepted,9,1,3,0.1,0.9
+1,no_mechanism,9,,3,0.1,0.9
+2,accepted,9,2,3,0.1,0.9
+3,accepted,9,2,3,0.1,0.9
+4,not_converged,,,200,0.1,0.9
+5,accepted,9,3,3,0.1,0.9
+6,accepted,9,5,3,0.1,0.9
+EOF
+printf '# experimental loads, N\n2\n3   # two equal loads\n\n  3\n4\n' >"$tmp/tests.txt"
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
+	--json >"$tmp/ks.json" 2>"$tmp/ks.err"
+rc=$?
+check "compare --samples --tests --json: exit 0" [ $rc -eq 0 ]
+res=$(python3 - "$tmp/ks.json" <<'EOF'
+import json, sys
+from fractions import Fraction as F
+from itertools import combinations
+from math import comb
+x = [1, 2, 2, 3, 5]
+y = [2, 3, 3, 4]
+def stats(x, y):
+    pts = sorted(set(x + y))
+    dp = dm = F(0)
+    for t in pts:
+        fx = F(sum(v <= t for v in x), len(x))
+        fy = F(sum(v <= t for v in y), len(y))
+        dp = max(dp, fx - fy)
+        dm = max(dm, fy - fx)
+    return max(dp, dm), dp, dm
+d0, dp0, dm0 = stats(x, y)
+z = x + y
+cnt = [0, 0, 0]
+for idx in combinations(range(len(z)), len(y)):
+    yy = [z[i] for i in idx]
+    xx = [z[i] for i in range(len(z)) if i not in idx]
+    d, dp, dm = stats(xx, yy)
+    cnt[0] += d >= d0
+    cnt[1] += dp >= dp0
+    cnt[2] += dm >= dm0
+tot = comb(len(z), len(y))
+want = {"statistic": d0, "d_plus": dp0, "d_minus": dm0,
+        "p_two_sided": F(cnt[0], tot), "p_greater": F(cnt[1], tot),
+        "p_less": F(cnt[2], tot)}
+ks = json.load(open(sys.argv[1]))["ks"]
+bad = [f"{k}: got {ks[k]!r}, want {float(v)!r} ({v})" for k, v in want.items()
+       if abs(ks[k] - float(v)) > 1e-12]
+print("; ".join(bad) or "ok " + ", ".join(f"{k} {v}" for k, v in want.items()))
+EOF
+)
+if [ "${res%% *}" = ok ]; then
+	ok "KS on x = {1,2,2,3,5}, y = {2,3,3,4} equals the brute-force permutation test: ${res#ok }"
+else
+	not_ok "KS equals the brute-force permutation test" "$res"
+fi
+check "model = 5 accepted loads of the file, tests = 4 loads of the file" \
+	python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
+sys.exit(not (d["model"]["accepted"]==5 and d["tests"]["n"]==4 and d["tests"]["lambda"]["p50"]==3 and d["tests"]["p05_ci99"] is None))' "$tmp/ks.json"
+
+# the same loads from the wall's tests: key
+{ cat $one; printf 'tests:\n  loads: [2, 3, 3, 4]\n'; } >"$tmp/withtests.yaml"
+"$bin" compare "$tmp/withtests.yaml" --samples "$tmp/model.csv" --json \
+	>"$tmp/ks2.json" 2>/dev/null
+check "the wall's tests: key gives the same KS result as the file" \
+	python3 -c 'import json,sys; a=json.load(open(sys.argv[1]))["ks"]; b=json.load(open(sys.argv[2]))["ks"]; sys.exit(a!=b)' \
+	"$tmp/ks.json" "$tmp/ks2.json"
+
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
+	>"$tmp/ks.txt" 2>&1
+ok_txt=1
+for s in "p05 (characteristic)" "99 % interval" "no interval: needs at least 90 values" \
+	"Kolmogorov-Smirnov" "p two-sided" "p greater" "p less"; do
+	grep -qF "$s" "$tmp/ks.txt" || ok_txt=0
+done
+check "Table 1 for people: p05 side by side, 'no interval' under 90 values, the KS p-values" \
+	[ $ok_txt = 1 ]
+
+# ---- bad input --------------------------------------------------------------------
+bad() {	# bad DESCRIPTION SUBSTRING ARGS...
+	local what=$1 sub=$2
+	shift 2
+	timeout 120 "$bin" compare "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
+	local rc=$?
+	if [ $rc -eq 2 ] && grep -qF -- "$sub" "$tmp/err"; then
+		ok "refused with exit 2: $what"
+	else
+		not_ok "refused with exit 2: $what" "exit $rc" \
+			"stderr: $(head -c 300 "$tmp/err")"
+	fi
+}
+bad "no tests anywhere" "no experimental loads" $demo -n 5
+printf '# empty\n\n' >"$tmp/empty.txt"
+bad "a tests file without loads" "holds no load" $demo --tests "$tmp/empty.txt"
+printf '100\n  12x\n' >"$tmp/junk.txt"
+bad "a word in the tests file (FILE:LINE:COL)" "junk.txt:2:3: a load must be a number" \
+	$demo --tests "$tmp/junk.txt"
+printf '100\n100 200\n' >"$tmp/two.txt"
+bad "two loads on a line" "two.txt:2:5: one load per line" $demo --tests "$tmp/two.txt"
+printf '100\n-3\n' >"$tmp/neg.txt"
+bad "a negative load" "neg.txt:2:1: a collapse load must be >= 0" $demo --tests "$tmp/neg.txt"
+bad "a missing tests file" "cannot open" $demo --tests "$tmp/nope.txt"
+bad "--samples with --fit-depth" "do not apply" $demo --tests "$tmp/tests.txt" \
+	--samples "$tmp/model.csv" --fit-depth
+bad "unknown option" "unknown option" $demo --frobnicate
+printf 'sample,status\n' >"$tmp/bad.csv"
+bad "a --samples file that is not one" "bad.csv:1:" $demo --tests "$tmp/tests.txt" \
+	--samples "$tmp/bad.csv"
+
+# ---- --fit-depth recovers the depth of the "tests" ------------------------------
+# tests: 60 model loads of the single block at d = 0.3, seed 99
+"$bin" run walls/single-block.yaml -n 60 --seed 99 --depth 0.3 \
+	--samples "$tmp/sb.csv" >/dev/null 2>&1
+awk -F, 'NR > 1 && $2 == "accepted" { print $4 }' "$tmp/sb.csv" >"$tmp/sb.txt"
+"$bin" compare walls/single-block.yaml --tests "$tmp/sb.txt" -n 200 \
+	--fit-depth --json >"$tmp/fit.json" 2>"$tmp/fit.err"
+rc=$?
+res=$(python3 - "$tmp/fit.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+f = d["fit_depth"]
+prof = f["profile"]
+deps = [p["depth"] for p in prof]
+errs = []
+if deps != sorted(deps): errs.append("profile not sorted by depth")
+for g in [round(0.05 * k, 2) for k in range(11)]:
+    if not any(abs(g - x) < 1e-9 for x in deps): errs.append(f"grid point {g} missing")
+best = min(prof, key=lambda p: (p["ks_statistic"], -p["p_two_sided"], p["depth"]))
+if best["depth"] != f["best_depth"]: errs.append(f"best {f['best_depth']} is not the least KS distance ({best['depth']})")
+if not abs(f["best_depth"] - 0.3) <= 0.05: errs.append(f"best depth {f['best_depth']}, want 0.3 +- 0.05")
+if d["ks"]["statistic"] != best["ks_statistic"]: errs.append("ks is not that of the best depth")
+if d["model"]["depth"] != f["best_depth"]: errs.append("model depth")
+print("; ".join(errs) or f"ok {f['best_depth']} {best['ks_statistic']:.3f} {len(prof)}")
+EOF
+)
+if [ $rc -eq 0 ] && [ "${res%% *}" = ok ]; then
+	set -- $res
+	ok "--fit-depth: best d = $2 (tests made at 0.3), KS D = $3, $4 depths, the least D wins"
+else
+	not_ok "--fit-depth recovers d = 0.3" "exit $rc: $res" "$(head -c 200 "$tmp/fit.err")"
+fi
+
+tap_end

@@ -1,0 +1,63 @@
+#!/bin/bash
+# cli/solve.sh - what `slipwall solve` says about its result.
+#
+# Usage (from the source root): bash tests/cli/solve.sh SLIPWALL
+# Proves: gilbert's text names the load factor as the result (the same
+# number as the JSON's load_factor, which has "result": "load_factor")
+# and the onset check's load as a check, not the result; global says up
+# front, on stderr before anything else, when the wall is larger than it
+# proves in its time limit (the demo wall), and says nothing of the kind
+# for a small wall, which it proves; while global's program works, stderr
+# (not a terminal here) has a line a second with its best bound, a number
+# between 0 and the standard solution's load factor (an upper value of
+# the minimum).  On a terminal (script(1)), a long solve of the large wall
+# says within seconds what it is solving and for how long, rewriting one
+# line; with stderr not a terminal it prints nothing there.  TAP output.
+
+bin=${1:?usage: cli/solve.sh SLIPWALL}
+cd "$(dirname "$0")/../.." || exit 1
+. tests/tap.sh
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$bin" solve walls/demo.yaml --method gilbert >"$tmp/g.txt" 2>&1
+"$bin" solve walls/demo.yaml --method gilbert --json >"$tmp/g.json" 2>&1
+check "gilbert: the load factor line, then 'the result: the load of the converged sequential LP'" \
+	eval 'grep -A1 "^load factor:" "$tmp/g.txt" | tail -n 1 | grep -q "the result: the load of the converged sequential LP"'
+check "gilbert: the text's result is the JSON's load_factor, and the JSON names it" python3 -c '
+import json, re, sys
+d = json.load(open(sys.argv[2]))
+m = re.search(r"^load factor: ([0-9.e+-]+)", open(sys.argv[1]).read(), re.M)
+sys.exit(not (m and d["result"] == "load_factor" and abs(float(m.group(1)) - d["load_factor"]) <= 1e-5 * d["load_factor"]))' "$tmp/g.txt" "$tmp/g.json"
+check "gilbert: the onset load is labelled a check, not the result" \
+	eval 'grep -q "^onset check: mechanism found; the least load that keeps it is" "$tmp/g.txt" && grep -q "(a check of the mechanism, not the result" "$tmp/g.txt"'
+
+"$bin" solve walls/demo.yaml --method global --time-limit 3 >"$tmp/d.out" 2>"$tmp/d.err"
+check "global on the 28-block demo wall: the first word on stderr is the forecast" \
+	eval 'head -n 1 "$tmp/d.err" | grep -q "^slipwall solve: walls/demo.yaml has 28 free blocks and [0-9]* interfaces ([0-9]* binary variables): most likely beyond what the mixed-integer program can prove within 3 s"'
+"$bin" solve walls/two-block-stack.yaml --method global >"$tmp/s.out" 2>"$tmp/s.err"
+check "global on two blocks: no forecast, and proven" \
+	eval '! grep -q "beyond" "$tmp/s.err" && grep -q "^optimality:  proven" "$tmp/s.out"'
+check "global: the best bound while it works, at most a line a second, between 0 and the standard load factor" python3 -c '
+import json, re, subprocess, sys
+bin = sys.argv[1]
+std = json.loads(subprocess.run([bin, "solve", "walls/demo.yaml", "--method", "standard", "--json"],
+                                capture_output=True, text=True).stdout)["load_factor"]
+lines = [re.match(r"slipwall solve: global: walls/demo.yaml: solving the mixed-integer program, ([0-9]+) s, best bound ([0-9.e+-]+), ", l)
+         for l in open(sys.argv[2]).read().splitlines()]
+lines = [m for m in lines if m]
+secs = [int(m.group(1)) for m in lines]
+ok = len(lines) >= 1 and len(secs) == len(set(secs))
+ok = ok and all(0 <= float(m.group(2)) <= std * (1 + 1e-9) for m in lines)
+sys.exit(not ok)' "$bin" "$tmp/d.err"
+check "global: no progress line on stdout" eval '! grep -q "best bound" "$tmp/d.out"'
+
+# the large wall's first LP runs for minutes: a few seconds of it
+script -qc "timeout 4 $bin solve walls/large.yaml --method standard" "$tmp/ts" >/dev/null 2>&1
+check "standard on the large wall, on a terminal: what it solves and the seconds, rewritten in place" \
+	eval 'tr "\r" "\n" <"$tmp/ts" | grep -Eq "^slipwall solve: standard: walls/large.yaml: solving the standard solution \(LP-max\), [1-9][0-9]* s"'
+timeout 4 "$bin" solve walls/large.yaml --method gilbert --json >"$tmp/l.out" 2>"$tmp/l.err"
+check "gilbert on the large wall, stderr not a terminal: no progress text" \
+	eval '! grep -q "solving" "$tmp/l.err" && ! grep -q "solving" "$tmp/l.out"'
+tap_end

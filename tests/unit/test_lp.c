@@ -1,0 +1,101 @@
+/*
+ * test_lp.c - the GLPK layer's held bases (src/lib/lp.c): after bound
+ * changes, a dual simplex solve takes the basis GLPK holds as it is when
+ * it is still optimal, and only then.  On a 2 x 2 LP whose every answer
+ * is known in closed form:
+ *
+ *   max x + y   s.t.   x + 2y <= b1,   3x + y <= b2,   x, y >= 0
+ *
+ * At (b1, b2) = (4, 6) both rows bind: x = (2 b2 - b1)/5, y = (3 b1 -
+ * b2)/5, the optimum is x + y = (2 b1 + b2)/5 while both are >= 0.  For
+ * b1 > 3 b2 row 1 is slack and the optimum is x = 0, y = b2.
+ */
+#include <math.h>
+
+#include "lp.h"
+#include "tap.h"
+
+static long held_count(void)
+{
+	long s, it, h;
+	lp_thread_counters(&s, &it, &h);
+	return h;
+}
+
+static struct lp *two_by_two(double b1, double b2)
+{
+	struct lp *p = lp_new(2, 2);
+	int cols[2] = {0, 1};
+	double r1[2] = {1, 2}, r2[2] = {3, 1};
+	lp_set_row(p, 0, 2, cols, r1);
+	lp_set_row(p, 1, 2, cols, r2);
+	lp_set_row_bounds(p, 0, -HUGE_VAL, b1);
+	lp_set_row_bounds(p, 1, -HUGE_VAL, b2);
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	lp_set_col_bounds(p, 1, 0, HUGE_VAL);
+	lp_set_obj(p, 0, 1);
+	lp_set_obj(p, 1, 1);
+	lp_set_maximize(p, 1);
+	return p;
+}
+
+int main(void)
+{
+	struct lp *p = two_by_two(4, 6);
+	long h0 = held_count();
+	enum lp_status st = lp_solve(p, LP_DUAL);
+	tap_ok(st == LP_OPTIMAL && held_count() == h0 &&
+	       lp_last_iterations(p) > 0,
+	       "first solve: the simplex (%d pivots), no held basis yet",
+	       lp_last_iterations(p));
+	tap_near(lp_obj(p), 2.8, 1e-12, "optimum (8 + 6)/5 = 2.8");
+
+	/* a small change of b1: the same basis stays optimal */
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 4.2);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && held_count() == h0 + 1 &&
+	       lp_last_iterations(p) == 0,
+	       "b1 = 4.2: answered by the held basis, no pivot");
+	tap_near(lp_col(p, 0), (12 - 4.2) / 5, 1e-14, "x = (2 b2 - b1)/5");
+	tap_near(lp_col(p, 1), (12.6 - 6) / 5, 1e-14, "y = (3 b1 - b2)/5");
+	tap_near(lp_obj(p), (8.4 + 6) / 5, 1e-14, "objective (2 b1 + b2)/5");
+	tap_near(lp_row_dual(p, 0), 0.4, 1e-14, "dual of row 1 = 2/5");
+
+	/* b1 far away: that basis gives x < 0, the simplex must move */
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 20);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && held_count() == h0 + 1 &&
+	       lp_last_iterations(p) > 0,
+	       "b1 = 20: the held basis is infeasible, the simplex pivots");
+	tap_near(lp_obj(p), 6, 1e-12, "optimum x = 0, y = b2 = 6");
+	tap_near(lp_col(p, 0), 0, 1e-12, "x = 0");
+
+	/* an objective change is not a bound change: never held */
+	lp_set_obj(p, 0, 1.5);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && held_count() == h0 + 1,
+	       "new objective coefficient: solved by the simplex");
+	tap_near(lp_obj(p), 6, 1e-12, "max 1.5 x + y is still 6 at (0, 6)");
+
+	/* the primal simplex never takes the held path */
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 21);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_OPTIMAL && held_count() == h0 + 1,
+	       "primal simplex after a bound change: not held");
+
+	/* y <= 5 cuts the held vertex (0, 6) off */
+	lp_set_col_bounds(p, 1, 0, 5);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && held_count() == h0 + 1,
+	       "y <= 5: the held vertex (0, 6) is cut off, the simplex");
+	tap_near(lp_obj(p), 1.5 / 3 + 5, 1e-12,
+		 "optimum y = 5, 3x + y = 6: x = 1/3, 1.5 x + y = 5.5");
+
+	/* y's bound removed: y, non-basic at 5, drops to its lower bound 0
+	 * (GLPK's status for a new bound type); that basis is primal
+	 * feasible (x = 2) but y's reduced cost 1 - 1.5/3 > 0 says raise y:
+	 * not optimal, whatever the primal values say */
+	lp_set_col_bounds(p, 1, 0, HUGE_VAL);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && held_count() == h0 + 1,
+	       "y free again: primal feasible but dual infeasible, the simplex");
+	tap_near(lp_obj(p), 6, 1e-12, "optimum back at (0, 6), not 3 at (2, 0)");
+	lp_free(p);
+
+	lp_thread_done();
+	return tap_done();
+}
