@@ -1,5 +1,5 @@
 /*
- * edit.c - the computations behind the workbench's edits; see edit.h.
+ * wedit.c - the computations behind the workbench's edits; see wedit.h.
  *
  * Moved here from the workbench's curses files (issue 15) so that they
  * can be tested without a terminal: the copy of an edited wall, the
@@ -11,11 +11,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "slipwall/edit.h"
+#include "slipwall/wedit.h"
 #include "slipwall/geom.h"
 #include "slipwall/layout.h"
 
-static int edit_generated(const char *id)
+static int wedit_generated(const char *id)
 {
 	int c, k, n = 0;
 	return id && sscanf(id, "c%db%d%n", &c, &k, &n) == 2 && id[n] == 0;
@@ -23,7 +23,7 @@ static int edit_generated(const char *id)
 
 /* Course and place of a generated id ("c<course>b<k>"), as one number
  * that sorts like the layout's order; -1 for other ids. */
-static long edit_order(const char *id)
+static long wedit_order(const char *id)
 {
 	int c, k, n = 0;
 	if (!id || sscanf(id, "c%db%d%n", &c, &k, &n) != 2 || id[n])
@@ -31,7 +31,7 @@ static long edit_order(const char *id)
 	return (long)c * 1000000L + k;
 }
 
-struct wall *edit_copy(const struct wall *w, const struct wall_layout *regen,
+struct wall *wedit_copy(const struct wall *w, const struct wall_layout *regen,
 		       int skip, char *err)
 {
 	struct wall_mark none = {0, 0};
@@ -63,7 +63,7 @@ struct wall *edit_copy(const struct wall *w, const struct wall_layout *regen,
 		const struct wall_block *b = &w->blocks[k];
 		if (k == w->ground_block || k == skip)
 			continue;
-		if (regen && !b->fixed && edit_generated(b->id))
+		if (regen && !b->fixed && wedit_generated(b->id))
 			continue;
 		wall_add_block(c, b->id, b->xy, b->nv, b->fixed, none);
 	}
@@ -75,7 +75,7 @@ struct wall *edit_copy(const struct wall *w, const struct wall_layout *regen,
 	return c;
 }
 
-int edit_point_load(const struct wall *w)
+int wedit_point_load(const struct wall *w)
 {
 	for (int l = 0; l < w->nloads; l++)
 		if (w->loads[l].kind == LOAD_POINT)
@@ -83,7 +83,7 @@ int edit_point_load(const struct wall *w)
 	return -1;
 }
 
-int edit_block_at(const struct wall *w, double x, double y)
+int wedit_block_at(const struct wall *w, double x, double y)
 {
 	double tol = 1e-6 * w->mean_size;
 	for (int k = 0; k < w->nblocks; k++)
@@ -93,7 +93,7 @@ int edit_block_at(const struct wall *w, double x, double y)
 	return -1;
 }
 
-void edit_block_size(const struct wall *w, double *bw, double *bh)
+void wedit_block_size(const struct wall *w, double *bw, double *bh)
 {
 	if (w->layout.present) {
 		*bw = w->layout.block_w;
@@ -107,12 +107,12 @@ void edit_block_size(const struct wall *w, double *bw, double *bh)
 /* ---- the load stations ---- */
 
 /* A growing list of stations, 4 numbers each: x, y, outward normal. */
-struct edit_st {
+struct wedit_st {
 	double *v;
 	int n, cap;
 };
 
-static void edit_st_add(struct edit_st *s, double x, double y, double nx,
+static void wedit_st_add(struct wedit_st *s, double x, double y, double nx,
 			double ny)
 {
 	if (s->n == s->cap) {
@@ -129,9 +129,9 @@ static void edit_st_add(struct edit_st *s, double x, double y, double nx,
 /* The pieces of [0, L] along block k's edge from p in direction t that
  * no interface of k covers, spread with stations (iv: room for one
  * interval per interface). */
-static void edit_edge(const struct wall *w, int k, const double p[2],
+static void wedit_edge(const struct wall *w, int k, const double p[2],
 		      const double t[2], double L, double (*iv)[2],
-		      struct edit_st *st)
+		      struct wedit_st *st)
 {
 	double tol = 1e-6 * w->mean_size;
 	int ni = 0;
@@ -170,18 +170,18 @@ static void edit_edge(const struct wall *w, int k, const double p[2],
 			cnt = 1;
 		for (int c = 0; c < cnt; c++) {
 			double u = s + len * (c + 0.5) / cnt;
-			edit_st_add(st, p[0] + t[0] * u, p[1] + t[1] * u, t[1],
+			wedit_st_add(st, p[0] + t[0] * u, p[1] + t[1] * u, t[1],
 				    -t[0]);
 		}
 		s = next;
 	}
 }
 
-/* The stations of w (see edit.h); returns how many, *out to free. */
-static int edit_stations(const struct wall *w, double **out)
+/* The stations of w (see wedit.h); returns how many, *out to free. */
+static int wedit_stations(const struct wall *w, double **out)
 {
 	double tol = 1e-6 * w->mean_size;
-	struct edit_st st = {NULL, 0, 0};
+	struct wedit_st st = {NULL, 0, 0};
 	double (*iv)[2] = sw_xmalloc(sizeof *iv * (size_t)(w->nifaces + 1));
 	for (int k = 0; k < w->nblocks; k++) {
 		const struct wall_block *b = &w->blocks[k];
@@ -196,7 +196,7 @@ static int edit_stations(const struct wall *w, double **out)
 				continue;
 			double t[2] = {(b->xy[2 * j] - p[0]) / L,
 				       (b->xy[2 * j + 1] - p[1]) / L};
-			edit_edge(w, k, p, t, L, iv, &st);
+			wedit_edge(w, k, p, t, L, iv, &st);
 		}
 	}
 	free(iv);
@@ -204,10 +204,10 @@ static int edit_stations(const struct wall *w, double **out)
 	return st.n;
 }
 
-int edit_load_step(const struct wall *w, int dx, int dy, double at[2])
+int wedit_load_step(const struct wall *w, int dx, int dy, double at[2])
 {
 	double *st;
-	int n = edit_stations(w, &st);
+	int n = wedit_stations(w, &st);
 	double tol = 1e-6 * w->mean_size, best = INFINITY;
 	int bi = -1;
 	for (int i = 0; i < n; i++) {
@@ -230,10 +230,10 @@ int edit_load_step(const struct wall *w, int dx, int dy, double at[2])
 	return bi >= 0;
 }
 
-int edit_load_nearest(const struct wall *w, const double dir[2], double at[2])
+int wedit_load_nearest(const struct wall *w, const double dir[2], double at[2])
 {
 	double *st;
-	int n = edit_stations(w, &st), bi = -1;
+	int n = wedit_stations(w, &st), bi = -1;
 	double best = INFINITY;
 	for (int i = 0; i < n; i++) {
 		/* prefer faces the load acts across (normal along dir) */
@@ -258,7 +258,7 @@ int edit_load_nearest(const struct wall *w, const double dir[2], double at[2])
 /* After a layout change a point load may be off the wall: move each such
  * load to the nearest station of the new outline.  The outline comes
  * from a copy finished with a body load in place of the point loads. */
-static void edit_snap_loads(struct wall *nw)
+static void wedit_snap_loads(struct wall *nw)
 {
 	char err[SW_ERRLEN];
 	struct wall *c = wall_copy(nw);
@@ -272,33 +272,33 @@ static void edit_snap_loads(struct wall *nw)
 	if (wall_finish(c, err) == SW_OK) {
 		for (int l = 0; l < nw->nloads; l++) {
 			struct wall_load *ld = &nw->loads[l];
-			int k = edit_block_at(c, ld->at[0], ld->at[1]);
+			int k = wedit_block_at(c, ld->at[0], ld->at[1]);
 			if (ld->kind == LOAD_POINT && (k < 0 || c->blocks[k].fixed))
-				edit_load_nearest(c, ld->dir, ld->at);
+				wedit_load_nearest(c, ld->dir, ld->at);
 		}
 	}
 	wall_free(c);
 }
 
-struct wall *edit_layout(const struct wall *w, const struct wall_layout *lay,
+struct wall *wedit_layout(const struct wall *w, const struct wall_layout *lay,
 			 char *err)
 {
-	struct wall *nw = edit_copy(w, lay, -1, err);
+	struct wall *nw = wedit_copy(w, lay, -1, err);
 	if (nw)
-		edit_snap_loads(nw);
+		wedit_snap_loads(nw);
 	return nw;
 }
 
 /* The last block of (unfinished) nw, a block of the courses put back,
  * moves to its place in the layout's order, before the blocks that are
  * not the layout's: a saved wall keeps its layout (wallfile_save). */
-static void edit_to_course(struct wall *nw)
+static void wedit_to_course(struct wall *nw)
 {
 	int last = nw->nblocks - 1;
-	long o = edit_order(nw->blocks[last].id);
+	long o = wedit_order(nw->blocks[last].id);
 	int at = 0;
 	while (at < last) {
-		long q = edit_order(nw->blocks[at].id);
+		long q = wedit_order(nw->blocks[at].id);
 		if (q < 0 || q > o)
 			break;
 		at++;
@@ -312,7 +312,7 @@ static void edit_to_course(struct wall *nw)
 /* The block of w's layout under (x, y) that w does not have (one removed
  * from the courses), as the last block of a wall holding the layout's
  * blocks; NULL when there is none. */
-static struct wall *edit_missing(const struct wall *w, double x, double y)
+static struct wall *wedit_missing(const struct wall *w, double x, double y)
 {
 	char err[SW_ERRLEN];
 	struct wall_mark none = {0, 0};
@@ -343,32 +343,32 @@ static struct wall *edit_missing(const struct wall *w, double x, double y)
 }
 
 /* A block of the courses that w lacks, under (x, y), put back. */
-static struct wall *edit_restore(const struct wall *w, const struct wall *lay,
+static struct wall *wedit_restore(const struct wall *w, const struct wall *lay,
 				 char *what, size_t len, char *err)
 {
 	struct wall_mark none = {0, 0};
 	const struct wall_block *b = &lay->blocks[lay->nblocks - 1];
-	struct wall *nw = edit_copy(w, NULL, -1, err);
+	struct wall *nw = wedit_copy(w, NULL, -1, err);
 	if (!nw)
 		return NULL;
 	wall_add_block(nw, b->id, b->xy, b->nv, 0, none);
-	edit_to_course(nw);
+	wedit_to_course(nw);
 	snprintf(what, len, "block %s restored", b->id);
 	return nw;
 }
 
-struct wall *edit_add_block(const struct wall *w, double x, double y,
+struct wall *wedit_add_block(const struct wall *w, double x, double y,
 			    char *what, size_t len, char *err)
 {
 	struct wall_mark none = {0, 0};
-	struct wall *lay = edit_missing(w, x, y);
+	struct wall *lay = wedit_missing(w, x, y);
 	if (lay) {
-		struct wall *nw = edit_restore(w, lay, what, len, err);
+		struct wall *nw = wedit_restore(w, lay, what, len, err);
 		wall_free(lay);
 		return nw;
 	}
 	double bw, bh;
-	edit_block_size(w, &bw, &bh);
+	wedit_block_size(w, &bw, &bh);
 	double gx = w->layout.present ? w->layout.x0 : 0;
 	double gy = w->layout.present ? w->layout.y0
 				      : (w->has_ground ? w->ground_y : 0);
@@ -384,7 +384,7 @@ struct wall *edit_add_block(const struct wall *w, double x, double y,
 		if (!used)
 			break;
 	}
-	struct wall *nw = edit_copy(w, NULL, -1, err);
+	struct wall *nw = wedit_copy(w, NULL, -1, err);
 	if (!nw)
 		return NULL;
 	wall_add_block(nw, id, xy, 4, 0, none);
@@ -394,11 +394,11 @@ struct wall *edit_add_block(const struct wall *w, double x, double y,
 
 /* ---- the block cursor, the load's direction ---- */
 
-void edit_cursor(const struct wall *w, double *x, double *y, int dx, int dy)
+void wedit_cursor(const struct wall *w, double *x, double *y, int dx, int dy)
 {
 	double bw, bh;
 	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-	edit_block_size(w, &bw, &bh);
+	wedit_block_size(w, &bw, &bh);
 	for (int k = 0; k < w->nblocks; k++) {
 		const struct wall_block *b = &w->blocks[k];
 		if (b->fixed)
@@ -414,7 +414,7 @@ void edit_cursor(const struct wall *w, double *x, double *y, int dx, int dy)
 	*y = fmin(y1 + bh, fmax(y0, *y + dy * bh));
 }
 
-void edit_turn(double dir[2], int sense)
+void wedit_turn(double dir[2], int sense)
 {
 	double a = atan2(dir[1], dir[0]);
 	a = (round(a / (M_PI / 4)) + sense) * (M_PI / 4);

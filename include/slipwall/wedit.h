@@ -1,11 +1,11 @@
 /*
- * edit.h - the computations behind the workbench's edits of a wall: an
+ * wedit.h - the computations behind the workbench's edits of a wall: an
  * editable copy, a layout changed, a block put back or added, the load
  * moved along the wall's outline.  No terminal: the workbench (src/tui/
  * tui_edit.c) calls these and applies what they return.
  *
  * A finished wall is read-only (wall.h), so an edit is a new wall:
- * edit_copy() gives an unfinished copy, the caller changes it, and
+ * wedit_copy() gives an unfinished copy, the caller changes it, and
  * wall_finish() (which may refuse it: a block left hanging, a load off
  * the wall) makes it usable.  Every function here that returns a wall
  * returns such an unfinished copy, owned by the caller; w is never
@@ -19,8 +19,8 @@
  * block size, each with its edge's outward normal.  The arrow keys move
  * a point load from station to station.
  */
-#ifndef SLIPWALL_EDIT_H
-#define SLIPWALL_EDIT_H
+#ifndef SLIPWALL_WEDIT_H
+#define SLIPWALL_WEDIT_H
 
 #include <stddef.h>
 
@@ -30,14 +30,14 @@
  * wall_finish adds again), marks cleared.  regen (or NULL): a layout
  * whose blocks replace the generated ones; skip: a block index to leave
  * out (-1: none).  NULL + err when regen cannot be generated. */
-struct wall *edit_copy(const struct wall *w, const struct wall_layout *regen,
+struct wall *wedit_copy(const struct wall *w, const struct wall_layout *regen,
 		       int skip, char *err);
 
 /* A copy of w with layout lay (w must have one): the courses generated
  * again, and each point load that is then off the wall (fewer courses,
  * a shorter wall) moved to the nearest station of the new outline.
  * NULL + err on failure. */
-struct wall *edit_layout(const struct wall *w, const struct wall_layout *lay,
+struct wall *wedit_layout(const struct wall *w, const struct wall_layout *lay,
 			 char *err);
 
 /* A copy of w with a block added under (x, y): the layout's block there
@@ -46,29 +46,29 @@ struct wall *edit_layout(const struct wall *w, const struct wall_layout *lay,
  * size on its grid (half a block across, a course up).  what (len
  * bytes) names the edit ("block c3b2 restored").  NULL + err on
  * failure. */
-struct wall *edit_add_block(const struct wall *w, double x, double y,
+struct wall *wedit_add_block(const struct wall *w, double x, double y,
 			    char *what, size_t len, char *err);
 
 /* The index of w's first point load, or -1. */
-int edit_point_load(const struct wall *w);
+int wedit_point_load(const struct wall *w);
 /* The block (not the generated ground) that holds (x, y), or -1. */
-int edit_block_at(const struct wall *w, double x, double y);
+int wedit_block_at(const struct wall *w, double x, double y);
 /* A block's width and height: the layout's, else from the mean size. */
-void edit_block_size(const struct wall *w, double *bw, double *bh);
+void wedit_block_size(const struct wall *w, double *bw, double *bh);
 
 /* Move (x, y) by dx half blocks across and dy blocks up, kept within a
  * block's size of the free blocks' bounding box (above it, not below
  * the lowest). */
-void edit_cursor(const struct wall *w, double *x, double *y, int dx, int dy);
+void wedit_cursor(const struct wall *w, double *x, double *y, int dx, int dy);
 /* Turn dir by sense eighths of a turn (+1 counter-clockwise), from the
  * nearest eighth; components below 1e-12 become 0. */
-void edit_turn(double dir[2], int sense);
+void wedit_turn(double dir[2], int sense);
 
 /* Move at to the next station in direction (dx, dy) (an arrow key: one
  * of them 0, the other +-1); 0 (at unchanged) if there is none. */
-int edit_load_step(const struct wall *w, int dx, int dy, double at[2]);
+int wedit_load_step(const struct wall *w, int dx, int dy, double at[2]);
 /* Move at to the nearest station, preferring faces that a load of
  * direction dir acts across; 0 if the wall has none. */
-int edit_load_nearest(const struct wall *w, const double dir[2], double at[2]);
+int wedit_load_nearest(const struct wall *w, const double dir[2], double at[2]);
 
 #endif

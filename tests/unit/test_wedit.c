@@ -1,5 +1,5 @@
 /*
- * test_edit.c - the edits of a wall without a terminal (edit.h): the
+ * test_wedit.c - the edits of a wall without a terminal (wedit.h): the
  * copy finishes to the same wall, a skipped block is gone, a removed
  * block of the courses comes back with its id and its place, a new block
  * sits on the layout's grid, a layout change regenerates the courses and
@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "slipwall/edit.h"
+#include "slipwall/wedit.h"
 #include "slipwall/layout.h"
 #include "slipwall/wallfile.h"
 #include "tap.h"
@@ -49,7 +49,7 @@ static int on_outline(double x, double y)
 static void test_copy(const struct wall *w)
 {
 	char err[SW_ERRLEN];
-	struct wall *c = finish(edit_copy(w, NULL, -1, err));
+	struct wall *c = finish(wedit_copy(w, NULL, -1, err));
 	tap_ok(c && c->nblocks == w->nblocks && c->nifaces == w->nifaces &&
 	       c->mu_bed == w->mu_bed && c->loads[0].at[1] == w->loads[0].at[1],
 	       "a copy finishes to the same wall (%d blocks, %d interfaces)",
@@ -66,28 +66,28 @@ static void test_block_at(const struct wall *w)
 	int bad = 0;
 	for (int k = 0; k < w->nblocks; k++)
 		if (k != w->ground_block &&
-		    edit_block_at(w, w->blocks[k].cx, w->blocks[k].cy) != k)
+		    wedit_block_at(w, w->blocks[k].cx, w->blocks[k].cy) != k)
 			bad++;
 	tap_ok(!bad, "each block's centroid finds that block (%d wrong)", bad);
-	tap_ok(edit_block_at(w, 0.3, -0.05) == -1,
+	tap_ok(wedit_block_at(w, 0.3, -0.05) == -1,
 	       "the generated ground is never a block under the cursor");
-	tap_ok(edit_block_at(w, 5, 5) == -1, "off the wall: no block");
+	tap_ok(wedit_block_at(w, 5, 5) == -1, "off the wall: no block");
 }
 
 /* Remove the block at the top left, then add it back at its place. */
 static void test_remove_restore(const struct wall *w)
 {
 	char err[SW_ERRLEN], what[128];
-	int k = edit_block_at(w, 0.05, 1.15);
+	int k = wedit_block_at(w, 0.05, 1.15);
 	tap_ok(k >= 0, "a block at the top course (%s)", k >= 0 ? w->blocks[k].id : "-");
 	if (k < 0)
 		return;
-	struct wall *r = finish(edit_copy(w, NULL, k, err));
-	tap_ok(r && r->nblocks == w->nblocks - 1 && edit_block_at(r, 0.05, 1.15) < 0,
+	struct wall *r = finish(wedit_copy(w, NULL, k, err));
+	tap_ok(r && r->nblocks == w->nblocks - 1 && wedit_block_at(r, 0.05, 1.15) < 0,
 	       "skip leaves that block out");
 	if (!r)
 		return;
-	struct wall *b = finish(edit_add_block(r, 0.05, 1.15, what, sizeof what, err));
+	struct wall *b = finish(wedit_add_block(r, 0.05, 1.15, what, sizeof what, err));
 	tap_ok(b && b->nblocks == w->nblocks && !strcmp(b->blocks[k].id, w->blocks[k].id),
 	       "a block added there is the removed one, at index %d (%s)", k, what);
 	char want[64];
@@ -102,8 +102,8 @@ static void test_remove_restore(const struct wall *w)
 static void test_new_block(const struct wall *w)
 {
 	char err[SW_ERRLEN], what[128];
-	struct wall *b = finish(edit_add_block(w, 0.25, 1.28, what, sizeof what, err));
-	int k = b ? edit_block_at(b, 0.3, 1.25) : -1;
+	struct wall *b = finish(wedit_add_block(w, 0.25, 1.28, what, sizeof what, err));
+	int k = b ? wedit_block_at(b, 0.3, 1.25) : -1;
 	tap_ok(k >= 0 && b->nblocks == w->nblocks + 1 && !strcmp(b->blocks[k].id, "u1"),
 	       "a block above the wall is a new one, u1 (%s)", what);
 	/* the grid: half a block (0.1 m) across, a course (0.15 m) up */
@@ -113,9 +113,9 @@ static void test_new_block(const struct wall *w)
 	       fabs(b->blocks[k].xy[5] - 1.35) < 1e-12,
 	       "on the layout's grid: (0.2, 1.2) to (0.4, 1.35)");
 	if (b) {
-		struct wall *b2 = finish(edit_add_block(b, 0.45, 1.28, what,
+		struct wall *b2 = finish(wedit_add_block(b, 0.45, 1.28, what,
 						       sizeof what, err));
-		int k2 = b2 ? edit_block_at(b2, 0.5, 1.25) : -1;
+		int k2 = b2 ? wedit_block_at(b2, 0.5, 1.25) : -1;
 		tap_ok(k2 >= 0 && !strcmp(b2->blocks[k2].id, "u2"),
 		       "the next one is u2 (%s)", what);
 		wall_free(b2);
@@ -133,7 +133,7 @@ static void test_layout(const struct wall *w)
 	g->layout = lay;
 	int n = layout_generate(g, none, err) == SW_OK ? g->nblocks : -1;
 	wall_free(g);
-	struct wall *c = finish(edit_layout(w, &lay, err));
+	struct wall *c = finish(wedit_layout(w, &lay, err));
 	tap_ok(c && c->nblocks == n + 1,
 	       "3 courses: the layout's %d blocks and the ground (%d)", n,
 	       c ? c->nblocks : -1);
@@ -150,7 +150,7 @@ static void test_layout(const struct wall *w)
 static int walk(const struct wall *w, int dx, int dy, double at[2], int *off)
 {
 	int n = 0;
-	while (n < 100 && edit_load_step(w, dx, dy, at)) {
+	while (n < 100 && wedit_load_step(w, dx, dy, at)) {
 		*off += !on_outline(at[0], at[1]);
 		n++;
 	}
@@ -174,12 +174,12 @@ static void test_stations(const struct wall *s)
 	       "right: %d steps to the right face (%.3g)", right, at[0]);
 	tap_ok(off == 0, "every station is on the outline (%d off)", off);
 	double p[2] = {0.2, 0.79}, h[2] = {1, 0}, v[2] = {0, -1};
-	int found = edit_load_nearest(s, h, p);
+	int found = wedit_load_nearest(s, h, p);
 	tap_ok(found && (fabs(p[0]) < 1e-9 || fabs(p[0] - 0.4) < 1e-9),
 	       "a horizontal load goes to a side face (%.3g, %.3g)", p[0], p[1]);
 	p[0] = 0.2;
 	p[1] = 0.79;
-	found = edit_load_nearest(s, v, p);
+	found = wedit_load_nearest(s, v, p);
 	tap_ok(found && fabs(p[1] - 0.8) < 1e-9,
 	       "a vertical one to the top (%.3g, %.3g)", p[0], p[1]);
 }
@@ -187,17 +187,17 @@ static void test_stations(const struct wall *s)
 static void test_cursor_turn(const struct wall *s)
 {
 	double bw, bh, x = 0.2, y = 0.4;
-	edit_block_size(s, &bw, &bh);
+	wedit_block_size(s, &bw, &bh);
 	for (int i = 0; i < 100; i++)
-		edit_cursor(s, &x, &y, 1, -1);
+		wedit_cursor(s, &x, &y, 1, -1);
 	tap_ok(fabs(x - (0.4 + bw)) < 1e-12 && fabs(y) < 1e-12,
 	       "the cursor stops a block right of the wall, at its foot (%.3g, %.3g)",
 	       x, y);
 	double d[2] = {1, 0};
-	edit_turn(d, 1);
+	wedit_turn(d, 1);
 	tap_ok(fabs(d[0] - sqrt(0.5)) < 1e-12 && fabs(d[1] - sqrt(0.5)) < 1e-12,
 	       "an eighth of a turn counter-clockwise");
-	edit_turn(d, -3);
+	wedit_turn(d, -3);
 	tap_ok(d[0] == 0 && d[1] == -1, "three back: straight down (%g, %g)",
 	       d[0], d[1]);
 }
@@ -206,7 +206,7 @@ int main(void)
 {
 	struct wall *w = load(SRCDIR "/walls/demo.yaml");
 	struct wall *s = load(SRCDIR "/walls/single-block.yaml");
-	tap_ok(edit_point_load(w) == 0, "demo's point load is load 0");
+	tap_ok(wedit_point_load(w) == 0, "demo's point load is load 0");
 	test_copy(w);
 	test_block_at(w);
 	test_remove_restore(w);
