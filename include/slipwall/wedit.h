@@ -56,6 +56,9 @@ int wedit_block_at(const struct wall *w, double x, double y);
 /* A block's width and height: the layout's, else from the mean size. */
 void wedit_block_size(const struct wall *w, double *bw, double *bh);
 
+/* The bounding box {x0, y0, x1, y1} of w's blocks but the generated
+ * ground (free_only: of its free blocks); infinite when there is none. */
+void wedit_bounds(const struct wall *w, int free_only, double box[4]);
 /* Move (x, y) by dx half blocks across and dy blocks up, kept within a
  * block's size of the free blocks' bounding box (above it, not below
  * the lowest). */

@@ -204,42 +204,18 @@ static int wedit_stations(const struct wall *w, double **out)
 	return st.n;
 }
 
-int wedit_load_step(const struct wall *w, int dx, int dy, double at[2])
-{
-	double *st;
-	int n = wedit_stations(w, &st);
-	double tol = 1e-6 * w->mean_size, best = INFINITY;
-	int bi = -1;
-	for (int i = 0; i < n; i++) {
-		double ex = st[4 * i] - at[0], ey = st[4 * i + 1] - at[1];
-		double along = ex * dx + ey * dy;
-		double perp = fabs(ex * dy - ey * dx);
-		if (along <= tol)
-			continue;
-		double score = along + 3 * perp;
-		if (score < best) {
-			best = score;
-			bi = i;
-		}
-	}
-	if (bi >= 0) {
-		at[0] = st[4 * bi];
-		at[1] = st[4 * bi + 1];
-	}
-	free(st);
-	return bi >= 0;
-}
+/* The station with the least score(station, at, ctx) below INFINITY
+ * goes to at; 0 if there is none. */
+typedef double (*wedit_score)(const double *st, const double at[2],
+			      const void *ctx);
 
-int wedit_load_nearest(const struct wall *w, const double dir[2], double at[2])
+static int wedit_station(const struct wall *w, double at[2], wedit_score score,
+			 const void *ctx)
 {
-	double *st;
+	double *st, best = INFINITY;
 	int n = wedit_stations(w, &st), bi = -1;
-	double best = INFINITY;
 	for (int i = 0; i < n; i++) {
-		/* prefer faces the load acts across (normal along dir) */
-		double d = hypot(st[4 * i] - at[0], st[4 * i + 1] - at[1]) +
-			   w->mean_size * (1 - fabs(st[4 * i + 2] * dir[0] +
-						    st[4 * i + 3] * dir[1]));
+		double d = score(st + 4 * i, at, ctx);
 		if (d < best) {
 			best = d;
 			bi = i;
@@ -251,6 +227,66 @@ int wedit_load_nearest(const struct wall *w, const double dir[2], double at[2])
 	}
 	free(st);
 	return bi >= 0;
+}
+
+/* Along the arrow (dx, dy), with a penalty across it. */
+struct wedit_arrow {
+	int dx, dy;
+	double tol;
+};
+
+static double wedit_step_score(const double *st, const double at[2],
+			       const void *ctx)
+{
+	const struct wedit_arrow *a = ctx;
+	double ex = st[0] - at[0], ey = st[1] - at[1];
+	double along = ex * a->dx + ey * a->dy;
+	double perp = fabs(ex * a->dy - ey * a->dx);
+	return along <= a->tol ? INFINITY : along + 3 * perp;
+}
+
+int wedit_load_step(const struct wall *w, int dx, int dy, double at[2])
+{
+	struct wedit_arrow a = {dx, dy, 1e-6 * w->mean_size};
+	return wedit_station(w, at, wedit_step_score, &a);
+}
+
+/* The distance, plus a block's size on faces the load does not act
+ * across (normal across dir). */
+struct wedit_near {
+	const double *dir;
+	double size;
+};
+
+static double wedit_near_score(const double *st, const double at[2],
+			       const void *ctx)
+{
+	const struct wedit_near *c = ctx;
+	return hypot(st[0] - at[0], st[1] - at[1]) +
+	       c->size * (1 - fabs(st[2] * c->dir[0] + st[3] * c->dir[1]));
+}
+
+int wedit_load_nearest(const struct wall *w, const double dir[2], double at[2])
+{
+	struct wedit_near c = {dir, w->mean_size};
+	return wedit_station(w, at, wedit_near_score, &c);
+}
+
+void wedit_bounds(const struct wall *w, int free_only, double box[4])
+{
+	box[0] = box[1] = INFINITY;
+	box[2] = box[3] = -INFINITY;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		if (k == w->ground_block || (free_only && b->fixed))
+			continue;
+		for (int i = 0; i < b->nv; i++) {
+			box[0] = fmin(box[0], b->xy[2 * i]);
+			box[2] = fmax(box[2], b->xy[2 * i]);
+			box[1] = fmin(box[1], b->xy[2 * i + 1]);
+			box[3] = fmax(box[3], b->xy[2 * i + 1]);
+		}
+	}
 }
 
 /* ---- layout edits ---- */
@@ -396,22 +432,11 @@ struct wall *wedit_add_block(const struct wall *w, double x, double y,
 
 void wedit_cursor(const struct wall *w, double *x, double *y, int dx, int dy)
 {
-	double bw, bh;
-	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	double bw, bh, box[4];
 	wedit_block_size(w, &bw, &bh);
-	for (int k = 0; k < w->nblocks; k++) {
-		const struct wall_block *b = &w->blocks[k];
-		if (b->fixed)
-			continue;
-		for (int i = 0; i < b->nv; i++) {
-			x0 = fmin(x0, b->xy[2 * i]);
-			x1 = fmax(x1, b->xy[2 * i]);
-			y0 = fmin(y0, b->xy[2 * i + 1]);
-			y1 = fmax(y1, b->xy[2 * i + 1]);
-		}
-	}
-	*x = fmin(x1 + bw, fmax(x0 - bw, *x + dx * bw / 2));
-	*y = fmin(y1 + bh, fmax(y0, *y + dy * bh));
+	wedit_bounds(w, 1, box);
+	*x = fmin(box[2] + bw, fmax(box[0] - bw, *x + dx * bw / 2));
+	*y = fmin(box[3] + bh, fmax(box[1], *y + dy * bh));
 }
 
 void wedit_turn(double dir[2], int sense)

@@ -181,19 +181,10 @@ static int tui_wall_drawn(const struct wall *w, int k)
 static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
 			 int ch, struct tui_map *m)
 {
-	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	double box[4];
 	int vert = 0;
-	for (int k = 0; k < w->nblocks; k++) {
-		const struct wall_block *b = &w->blocks[k];
-		if (!tui_wall_drawn(w, k))
-			continue;
-		for (int i = 0; i < b->nv; i++) {
-			x0 = fmin(x0, b->xy[2 * i]);
-			x1 = fmax(x1, b->xy[2 * i]);
-			y0 = fmin(y0, b->xy[2 * i + 1]);
-			y1 = fmax(y1, b->xy[2 * i + 1]);
-		}
-	}
+	wedit_bounds(w, 0, box);
+	double x0 = box[0], y0 = box[1], x1 = box[2], y1 = box[3];
 	for (int l = 0; l < w->nloads; l++)
 		if (w->loads[l].kind == LOAD_POINT &&
 		    fabs(w->loads[l].dir[1]) > 0.38)

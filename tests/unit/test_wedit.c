@@ -193,6 +193,11 @@ static void test_cursor_turn(const struct wall *s)
 	tap_ok(fabs(x - (0.4 + bw)) < 1e-12 && fabs(y) < 1e-12,
 	       "the cursor stops a block right of the wall, at its foot (%.3g, %.3g)",
 	       x, y);
+	double box[4];
+	wedit_bounds(s, 1, box);
+	tap_ok(box[0] == 0 && box[1] == 0 && box[2] == 0.4 && box[3] == 0.8,
+	       "the free blocks' box (%g, %g) - (%g, %g)", box[0], box[1],
+	       box[2], box[3]);
 	double d[2] = {1, 0};
 	wedit_turn(d, 1);
 	tap_ok(fabs(d[0] - sqrt(0.5)) < 1e-12 && fabs(d[1] - sqrt(0.5)) < 1e-12,
