@@ -1,6 +1,6 @@
 /*
- * tui.c - the workbench: tui_main, the event loop, signals, and the
- * dispatcher of screens (main, help).
+ * tui.c - the workbench: tui_main, the terminal, the event loop and the
+ * dispatcher of screens (main, help, history).
  *
  * One thread (this one) owns the terminal.  It sleeps in poll() on stdin
  * and on the sampler's wake pipe (mc_wake_fd) for at most 100 ms, then
@@ -16,13 +16,10 @@
  * joined (tui_solve_free); their LPs see the stop within a second.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <langinfo.h>
 #include <locale.h>
 #include <math.h>
 #include <poll.h>
-#include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,7 +28,6 @@
 
 #include <curses.h>
 
-#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "tui.h"
 #include "workbench.h"

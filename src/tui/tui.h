@@ -107,7 +107,7 @@ struct tui {
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
 
-	struct tui_solve *solve;/* standard/gilbert for this wall */
+	struct tui_solve *solve;/* the solve thread (standard, gilbert) */
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */

@@ -23,8 +23,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <curses.h>
-
 #include "slipwall/text.h"
 #include "slipwall/wedit.h"
 #include "tui.h"
