@@ -3,11 +3,11 @@
  * the model (blocks, interfaces, loads, weights).  The --json form fixes
  * the order of blocks and interfaces that every other output uses.
  */
-#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "slipwall/json.h"
 
 static const char *kind_name(enum joint_kind k)
@@ -227,32 +227,19 @@ static void usage(FILE *f)
 int cmd_check(int argc, char **argv)
 {
 	int json = 0;
-	static const struct option opts[] = {
-		{"json", no_argument, NULL, 'j'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
+	const char *path;
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", json),
 	};
-	int c;
-	optind = 1;
-	opterr = 0;
-	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
-		switch (c) {
-		case 'j':
-			json = 1;
-			break;
-		case 'h':
-			usage(stdout);
-			return 0;
-		default:
-			return cli_usage_error("check", "unknown option '%s'",
-					       argv[optind - 1]);
-		}
-	}
-	if (optind != argc - 1)
-		return cli_usage_error("check", "expected one wall file");
-	struct wall *w;
-	int rc = cli_load_wall(argv[optind], &w);
+	static const struct cli_cmd cmd = {
+		.name = "check", .usage = usage, .posix = 1,
+		.no_wall = "expected one wall file",
+	};
+	int rc = cli_opts_parse(&cmd, opts, 1, argc, argv, &path);
 	if (rc)
+		return rc < 0 ? 0 : rc;
+	struct wall *w;
+	if ((rc = cli_load_wall(path, &w)))
 		return rc;
 	if (json)
 		print_json(w);
