@@ -23,6 +23,13 @@ static void point(struct json *j, const double *p)
 	json_array_end(j);
 }
 
+/* "key": [x, y] */
+static void key_point(struct json *j, const char *key, const double *p)
+{
+	json_key(j, key);
+	point(j, p);
+}
+
 static void print_json(const struct wall *w)
 {
 	struct json j;
@@ -84,12 +91,9 @@ static void print_json(const struct wall *w)
 		json_string(&j, w->blocks[it->a].id);
 		json_key(&j, "b");
 		json_string(&j, w->blocks[it->b].id);
-		json_key(&j, "p1");
-		point(&j, it->p1);
-		json_key(&j, "p2");
-		point(&j, it->p2);
-		json_key(&j, "normal");
-		point(&j, it->n);
+		key_point(&j, "p1", it->p1);
+		key_point(&j, "p2", it->p2);
+		key_point(&j, "normal", it->n);
 		json_key(&j, "length");
 		json_double(&j, it->len);
 		json_key(&j, "mu");
@@ -107,13 +111,11 @@ static void print_json(const struct wall *w)
 		json_key(&j, "type");
 		json_string(&j, ld->kind == LOAD_POINT ? "point" : "body");
 		if (ld->kind == LOAD_POINT) {
-			json_key(&j, "at");
-			point(&j, ld->at);
+			key_point(&j, "at", ld->at);
 			json_key(&j, "block");
 			json_string(&j, w->blocks[ld->block].id);
 		}
-		json_key(&j, "direction");
-		point(&j, ld->dir);
+		key_point(&j, "direction", ld->dir);
 		json_key(&j, "magnitude");
 		json_double(&j, ld->magnitude);
 		json_object_end(&j);
