@@ -29,6 +29,7 @@
 #include <cairo-svg.h>
 #include <dirent.h>
 #include <errno.h>
+#include <limits.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
 #include <stdarg.h>
@@ -42,6 +43,7 @@
 #include <gsl/gsl_cdf.h>
 
 #include "slipwall/report.h"
+#include "slipwall/sys.h"
 #include "slipwall/stats.h"
 #include "slipwall/text.h"
 
@@ -259,20 +261,6 @@ struct rctx {
 	const struct report_sweep *sweep;
 };
 
-static int cmp_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double *sorted_copy(const double *x, size_t n)
-{
-	double *s = sw_xmalloc(sizeof(double) * (n ? n : 1));
-	memcpy(s, x, sizeof(double) * n);
-	qsort(s, n, sizeof(double), cmp_double);
-	return s;
-}
-
 void report_load_unit(const struct wall *w, char *axis, size_t len,
 		      const char **unit)
 {
@@ -311,14 +299,8 @@ static void class_freq(const double *x, size_t n, double lo, double w, int nb,
 {
 	for (int k = 0; k < nb; k++)
 		f[k] = 0;
-	for (size_t i = 0; i < n; i++) {
-		int k = (int)floor((x[i] - lo) / w);
-		if (k < 0)
-			k = 0;
-		if (k >= nb)
-			k = nb - 1;
-		f[k] += 1.0 / (double)n;
-	}
+	for (size_t i = 0; i < n; i++)
+		f[stats_bin(x[i], lo, w, nb)] += 1.0 / (double)n;
 }
 
 static void convergence(struct rctx *c)
@@ -340,7 +322,7 @@ static void convergence(struct rctx *c)
 					      (double)K);
 		size_t add = upto - have;
 		memcpy(tmp, lam + have, sizeof(double) * add);
-		qsort(tmp, add, sizeof(double), cmp_double);
+		stats_sort(tmp, add);
 		/* merge s[0..have) and tmp[0..add) from the top */
 		size_t i = have, j = add, o = upto;
 		while (j > 0) {
@@ -448,14 +430,14 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 				       "not a number", i + 1);
 	report_load_unit(in->w, c->axis, sizeof c->axis, &c->unit);
 	c->n = (size_t)in->nlam;
-	c->lam = sorted_copy(in->lam, c->n);
+	c->lam = stats_sorted_copy(in->lam, c->n);
 	stats_summarise(c->lam, c->n, &c->ms);
 	stats_normal_fit(c->lam, c->n, &c->mmu, &c->msd);
 	c->bw = stats_kde_bandwidth(c->lam, c->n);
 	c->tmu = c->tsd = NAN;
 	if (in->tests && in->ntests > 0) {
 		c->m = (size_t)in->ntests;
-		c->tst = sorted_copy(in->tests, c->m);
+		c->tst = stats_sorted_copy(in->tests, c->m);
 		stats_summarise(c->tst, c->m, &c->ts);
 		stats_normal_fit(c->tst, c->m, &c->tmu, &c->tsd);
 		c->ks_ok = stats_ks2(c->lam, c->n, c->tst, c->m, &c->ks) == 0;
@@ -1919,21 +1901,12 @@ void report_opts_default(struct report_opts *o)
 
 static enum sw_status make_dir(const char *dir, char *err)
 {
-	char p[4096];
-	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
+	char failed[PATH_MAX];
+	if (strlen(dir) >= PATH_MAX)
 		return sw_fail(err, SW_EIO, "%s: path too long", dir);
-	for (char *s = p + 1;; s++) {
-		if (*s != '/' && *s)
-			continue;
-		char c = *s;
-		*s = 0;
-		if (mkdir(p, 0777) && errno != EEXIST)
-			return sw_fail(err, SW_EIO, "%s: cannot create: %s", p,
-				       strerror(errno));
-		*s = c;
-		if (!c)
-			break;
-	}
+	if (sys_mkdir_p(dir, failed, sizeof failed))
+		return sw_fail(err, SW_EIO, "%s: cannot create: %s", failed,
+			       strerror(errno));
 	struct stat st;
 	if (stat(dir, &st) || !S_ISDIR(st.st_mode))
 		return sw_fail(err, SW_EIO, "%s: not a directory", dir);

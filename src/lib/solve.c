@@ -52,6 +52,7 @@
 
 #include "lp.h"
 #include "slipwall/solve.h"
+#include "slipwall/sys.h"
 #include "statics.h"
 
 #define GLOBAL_EPS_WORK 1e-6
@@ -113,14 +114,6 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 		return sw_fail(err, SW_EANALYSIS, "the solver failed (%s)",
 			       sample_status_text(s));
 	}
-}
-
-static double elapsed(const struct timespec *t0)
-{
-	struct timespec t1;
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	return (double)(t1.tv_sec - t0->tv_sec) +
-	       1e-9 * (double)(t1.tv_nsec - t0->tv_nsec);
 }
 
 /* Column indices of the global problem. */
@@ -215,14 +208,14 @@ static double max_total_normal(const struct statics *st, double lam_hi)
 /* lp_thread_progress's hook: the caller's, in seconds and user's units */
 struct progress {
 	const struct solve_opts *o;
-	struct timespec t0;
+	double t0;
 	double scale;		/* the program's units to the user's */
 	const char *what;	/* the step being solved */
 };
 static void progress(void *ctx, double incumbent, double bound)
 {
 	struct progress *p = ctx;
-	p->o->progress(p->o->progress_ctx, p->what, elapsed(&p->t0),
+	p->o->progress(p->o->progress_ctx, p->what, sys_now() - p->t0,
 		       incumbent * p->scale, bound * p->scale);
 }
 
@@ -455,8 +448,7 @@ static enum sw_status solve_global(const struct wall *w,
 enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			 struct solve_result *r, char *err)
 {
-	struct timespec t0;
-	clock_gettime(CLOCK_MONOTONIC, &t0);
+	double t0 = sys_now();
 	struct progress prog = { o, t0, 1, "the standard solution (LP-max)" };
 	if (o->progress)
 		lp_thread_progress(progress, &prog);
@@ -504,7 +496,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	}
 out:
 	lp_thread_progress(NULL, NULL);
-	r->seconds = elapsed(&t0);
+	r->seconds = sys_now() - t0;
 	free(xi);
 	sample_ws_free(ws);
 	/* the solver's environment of this thread goes with its last

@@ -71,13 +71,6 @@ int tui_signal_pending(void)
 	return tui_signalled != 0;
 }
 
-double tui_now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 {
 	va_list ap;
@@ -177,7 +170,7 @@ void tui_set_wall(struct tui *t, struct wall *nw)
 	t->mech_sel = 0;
 	tui_run_start(t);
 	t->solve = tui_solve_start(nw);
-	t->solve_t0 = tui_now();
+	t->solve_t0 = sys_now();
 }
 
 static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
@@ -355,7 +348,7 @@ int tui_main(const char *path)
 		    t->threads);
 	tui_run_start(t);
 	t->solve = tui_solve_start(w);
-	t->solve_t0 = tui_now();
+	t->solve_t0 = sys_now();
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
 
 	double last_draw = -1;
@@ -370,7 +363,7 @@ int tui_main(const char *path)
 		if (more)
 			timeout = 0;
 		else if (dirty) {
-			double left = last_draw + TUI_FRAME - tui_now();
+			double left = last_draw + TUI_FRAME - sys_now();
 			timeout = left <= 0 ? 0 : (int)(left * 1000) + 1;
 		}
 		if (poll(pf, 2, timeout) < 0 && errno != EINTR)
@@ -399,11 +392,11 @@ int tui_main(const char *path)
 		}
 		/* the clocks of slow samples and of the solve thread tick */
 		if ((t->run.mc || (t->solve && !t->solve_done)) &&
-		    tui_now() - last_draw >= 1)
+		    sys_now() - last_draw >= 1)
 			dirty = 1;
-		if (dirty && tui_now() - last_draw >= TUI_FRAME) {
+		if (dirty && sys_now() - last_draw >= TUI_FRAME) {
 			tui_draw(t);
-			last_draw = tui_now();
+			last_draw = sys_now();
 			dirty = 0;
 		}
 	}

@@ -29,6 +29,7 @@
 #include "slipwall/history.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
+#include "slipwall/sys.h"
 #include "slipwall/tally.h"
 #include "slipwall/undo.h"
 #include "slipwall/wall.h"
@@ -140,7 +141,6 @@ void tui_set_wall(struct tui *t, struct wall *nw);
 void tui_signal_watch(struct mc *m);
 /* A terminating signal has arrived: start nothing new. */
 int tui_signal_pending(void);
-double tui_now(void);
 /* Draw a UTF-8 or an ASCII string depending on the locale. */
 void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii);
 /* Draw s at (y, x), at most w columns (UTF-8 aware: one column per code

@@ -137,11 +137,7 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	}
 	size_t maxc = 0;
 	for (size_t i = 0; i < n; i++) {
-		int b = (int)((s->x[i] - lo) / width);
-		if (b < 0)
-			b = 0;
-		if (b >= nb)
-			b = nb - 1;
+		int b = stats_bin(s->x[i], lo, width, nb);
 		if (++count[b] > maxc)
 			maxc = count[b];
 	}
@@ -149,12 +145,7 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	double maxf = n ? (double)maxc / (double)n : 0;
 	if (n)
 		for (size_t i = 0; i < pn; i++) {
-			int b = (int)((px[i] - lo) / width);
-			if (b < 0)
-				b = 0;
-			if (b >= nb)
-				b = nb - 1;
-			pcount[b]++;
+			pcount[stats_bin(px[i], lo, width, nb)]++;
 		}
 	for (int b = 0; b < nb && pn; b++)
 		maxf = fmax(maxf, (double)pcount[b] / (double)pn);
