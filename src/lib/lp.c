@@ -900,6 +900,5 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	return LP_MIP_FAILED;
 }
 
-double lp_mip_obj(const struct lp *p) { return glp_mip_obj_val(p->P); }
 double lp_mip_col(const struct lp *p, int col) { return glp_mip_col_val(p->P, col + 1); }
 double lp_mip_row(const struct lp *p, int row) { return glp_mip_row_val(p->P, row + 1); }

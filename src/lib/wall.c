@@ -489,16 +489,6 @@ enum sw_status wall_finish(struct wall *w, char *err)
 	return SW_OK;
 }
 
-double wall_live_reference(const struct wall *w)
-{
-	double s = 0;
-	for (int l = 0; l < w->nloads; l++)
-		s += w->loads[l].kind == LOAD_POINT
-			     ? w->loads[l].magnitude
-			     : w->loads[l].magnitude * w->total_weight;
-	return s;
-}
-
 struct wall *wall_copy(const struct wall *w)
 {
 	struct wall *c = sw_xmalloc(sizeof *c);
