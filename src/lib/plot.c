@@ -241,10 +241,10 @@ void plot_axes(struct fig *f, const struct axes *a, const char *xlabel,
 	cairo_stroke(cr);
 	if (xlabel)
 		plot_text(f, a->x + a->w / 2, a->y + a->h + 21, 11, 0, 0.5, 0, 0,
-			 "%s", xlabel);
+			  "%s", xlabel);
 	if (ylabel)
 		plot_text(f, a->x - 56, a->y + a->h / 2, 11, 0, 0.5, 0, 90, "%s",
-			 ylabel);
+			  ylabel);
 	if (title)
 		plot_text(f, a->x, a->y - 6, 12, 1, 0, 1, 0, "%s", title);
 }
@@ -314,7 +314,7 @@ void plot_legend(struct fig *f, const struct axes *a, const struct lg_item *it,
 		}
 		plot_rgb(cr, C_BLACK, 1);
 		plot_text(f, x + 2 * pad + sw, yy, 9.5, 0, 0, 0.5, 0, "%s",
-			 it[i].text);
+			  it[i].text);
 	}
 }
 

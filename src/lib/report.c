@@ -521,7 +521,7 @@ static void draw_cumulative(struct fig *f, const struct rctx *c)
 		plot_caption(f, y + 39, s);
 	} else {
 		plot_caption(f, y, "No Kolmogorov-Smirnov test: the wall has no "
-			"experimental loads.");
+			     "experimental loads.");
 	}
 }
 
@@ -653,6 +653,94 @@ static void method_dash(cairo_t *cr, const char *m)
 		cairo_set_dash(cr, NULL, 0, 0);
 }
 
+/* Fig. 10: the labels of the single solutions' lines, above the plot,
+ * staggered when close. */
+static void single_labels(struct fig *f, const struct rctx *c,
+			  const struct axes *pa)
+{
+	const struct report_input *in = c->in;
+	const struct axes a = *pa;
+	double lastx = -1e9;
+	int row = 0;
+	for (int i = 0; i < in->nsol; i++) {
+		const struct report_solution *s = &in->sol[i];
+		if (!s->found || !isfinite(s->lambda))
+			continue;
+		double x = fmin(fmax(plot_x(&a, s->lambda), a.x + 1), a.x + a.w - 1);
+		row = fabs(x - lastx) < 120 ? row + 1 : 0;
+		lastx = x;
+		plot_rgb(f->cr, *method_colour(s->method), 1);
+		double ax = x > a.x + a.w - 100 ? 1 : x < a.x + 100 ? 0 : 0.5;
+		plot_text(f, x, a.y - 3 - 12 * (row % 2), 9.5, 1, ax, 1, 0,
+			  "%s %.5g%s", s->method, s->lambda, c->unit);
+	}
+}
+
+/* Fig. 10's legend; tests: the tests' normal fit is drawn. */
+static void single_legend(struct fig *f, const struct rctx *c,
+			  const struct axes *a, int tests)
+{
+	struct lg_item it[6];
+	int n = 0;
+	char l1[64], l2[64], l3[96];
+	it[n++] = (struct lg_item){LG_THIN, C_MODEL, "model frequencies"};
+	if (c->ft)
+		it[n++] = (struct lg_item){LG_THIN, C_TESTS, "test frequencies"};
+	snprintf(l1, sizeof l1, "model KDE");
+	it[n++] = (struct lg_item){LG_LINE, C_MODEL, l1};
+	snprintf(l2, sizeof l2, tests ? "tests, normal fit" : "model, normal fit");
+	it[n++] = (struct lg_item){tests ? LG_LINE : LG_DASH,
+				   tests ? C_TESTS : C_MODEL, l2};
+	snprintf(l3, sizeof l3, "model p05%s", c->ms.has_ci ?
+		 " and its 99 % interval" : "");
+	it[n++] = (struct lg_item){c->ms.has_ci ? LG_BAND : LG_DASH, C_ORANGE, l3};
+	if (c->m && c->ts.has_ci)
+		it[n++] = (struct lg_item){LG_BAND, C_GREY,
+					   "tests p05, 99 % interval"};
+	plot_legend(f, a, it, n, c->ms.p50 > (a->x0 + a->x1) / 2);
+
+}
+
+/* Fig. 10's captions: the two p05 and the solutions not shown. */
+static void single_captions(struct fig *f, const struct rctx *c)
+{
+	const struct report_input *in = c->in;
+	double y = plot_height(3) - 13 * 3;
+	char s[256];
+	if (c->ms.has_ci)
+		snprintf(s, sizeof s, "Model p05 = %.5g%s, 99 %% interval "
+			 "[%.5g, %.5g]%s (%zu accepted samples).", c->ms.p05,
+			 c->unit, c->ms.p05_lo, c->ms.p05_hi, c->unit, c->n);
+	else
+		snprintf(s, sizeof s, "Model p05 = %.5g%s, no 99 %% interval "
+			 "(needs at least 90 samples, has %zu).", c->ms.p05,
+			 c->unit, c->n);
+	plot_caption(f, y, s);
+	if (c->m && c->ts.has_ci)
+		snprintf(s, sizeof s, "Tests p05 = %.5g%s, 99 %% interval "
+			 "[%.5g, %.5g]%s (%zu tests).", c->ts.p05, c->unit,
+			 c->ts.p05_lo, c->ts.p05_hi, c->unit, c->m);
+	else if (c->m)
+		snprintf(s, sizeof s, "Tests p05 = %.5g%s, no distribution-free "
+			 "99 %% interval (needs 90 tests, has %zu).", c->ts.p05,
+			 c->unit, c->m);
+	else
+		snprintf(s, sizeof s, "No experimental loads: the model alone.");
+	plot_caption(f, y + 13, s);
+	s[0] = 0;
+	for (int i = 0; i < in->nsol; i++) {
+		const struct report_solution *so = &in->sol[i];
+		if (so->found && isfinite(so->lambda))
+			continue;
+		snprintf(s + strlen(s), sizeof s - strlen(s), "%s%s: %s",
+			 *s ? "; " : "Not shown: ", so->method,
+			 so->ran ? (*so->note ? so->note : "no load") :
+			 (*so->note ? so->note : "not run"));
+	}
+	if (*s)
+		plot_caption(f, y + 26, s);
+}
+
 static void draw_single(struct fig *f, const struct rctx *c)
 {
 	cairo_t *cr = f->cr;
@@ -736,76 +824,10 @@ static void draw_single(struct fig *f, const struct rctx *c)
 		 *c->unit ? "N" : "unit of λ");
 	plot_axes(f, &a, c->axis, yl, NULL, 0);
 	plot_text(f, a.x, 16, 12, 1, 0, 1, 0, "%s",
-		 "The model against the single-solution methods");
-	/* labels of the vertical lines, above the plot, staggered when close */
-	double lastx = -1e9;
-	int row = 0;
-	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
-		if (!s->found || !isfinite(s->lambda))
-			continue;
-		double x = fmin(fmax(plot_x(&a, s->lambda), a.x + 1), a.x + a.w - 1);
-		row = fabs(x - lastx) < 120 ? row + 1 : 0;
-		lastx = x;
-		plot_rgb(f->cr, *method_colour(s->method), 1);
-		double ax = x > a.x + a.w - 100 ? 1 : x < a.x + 100 ? 0 : 0.5;
-		plot_text(f, x, a.y - 3 - 12 * (row % 2), 9.5, 1, ax, 1, 0,
-			 "%s %.5g%s", s->method, s->lambda, c->unit);
-	}
-	/* the legend */
-	struct lg_item it[6];
-	int n = 0;
-	char l1[64], l2[64], l3[96];
-	it[n++] = (struct lg_item){LG_THIN, C_MODEL, "model frequencies"};
-	if (c->ft)
-		it[n++] = (struct lg_item){LG_THIN, C_TESTS, "test frequencies"};
-	snprintf(l1, sizeof l1, "model KDE");
-	it[n++] = (struct lg_item){LG_LINE, C_MODEL, l1};
-	snprintf(l2, sizeof l2, tests ? "tests, normal fit" : "model, normal fit");
-	it[n++] = (struct lg_item){tests ? LG_LINE : LG_DASH,
-				   tests ? C_TESTS : C_MODEL, l2};
-	snprintf(l3, sizeof l3, "model p05%s", c->ms.has_ci ?
-		 " and its 99 % interval" : "");
-	it[n++] = (struct lg_item){c->ms.has_ci ? LG_BAND : LG_DASH, C_ORANGE, l3};
-	if (c->m && c->ts.has_ci)
-		it[n++] = (struct lg_item){LG_BAND, C_GREY,
-					   "tests p05, 99 % interval"};
-	plot_legend(f, &a, it, n, c->ms.p50 > (a.x0 + a.x1) / 2);
-
-	double y = plot_height(3) - 13 * 3;
-	char s[256];
-	if (c->ms.has_ci)
-		snprintf(s, sizeof s, "Model p05 = %.5g%s, 99 %% interval "
-			 "[%.5g, %.5g]%s (%zu accepted samples).", c->ms.p05,
-			 c->unit, c->ms.p05_lo, c->ms.p05_hi, c->unit, c->n);
-	else
-		snprintf(s, sizeof s, "Model p05 = %.5g%s, no 99 %% interval "
-			 "(needs at least 90 samples, has %zu).", c->ms.p05,
-			 c->unit, c->n);
-	plot_caption(f, y, s);
-	if (c->m && c->ts.has_ci)
-		snprintf(s, sizeof s, "Tests p05 = %.5g%s, 99 %% interval "
-			 "[%.5g, %.5g]%s (%zu tests).", c->ts.p05, c->unit,
-			 c->ts.p05_lo, c->ts.p05_hi, c->unit, c->m);
-	else if (c->m)
-		snprintf(s, sizeof s, "Tests p05 = %.5g%s, no distribution-free "
-			 "99 %% interval (needs 90 tests, has %zu).", c->ts.p05,
-			 c->unit, c->m);
-	else
-		snprintf(s, sizeof s, "No experimental loads: the model alone.");
-	plot_caption(f, y + 13, s);
-	s[0] = 0;
-	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *so = &in->sol[i];
-		if (so->found && isfinite(so->lambda))
-			continue;
-		snprintf(s + strlen(s), sizeof s - strlen(s), "%s%s: %s",
-			 *s ? "; " : "Not shown: ", so->method,
-			 so->ran ? (*so->note ? so->note : "no load") :
-			 (*so->note ? so->note : "not run"));
-	}
-	if (*s)
-		plot_caption(f, y + 26, s);
+		  "The model against the single-solution methods");
+	single_labels(f, c, &a);
+	single_legend(f, c, &a, tests);
+	single_captions(f, c);
 }
 
 /* ---- the convergence of p05 ------------------------------------------------ */
@@ -876,7 +898,7 @@ static void draw_convergence(struct fig *f, const struct rctx *c)
 			 c->n);
 	plot_caption(f, y, s);
 	plot_caption(f, y + 13, "Distribution-free interval from order statistics "
-		"(docs/statistics.md).");
+		     "(docs/statistics.md).");
 }
 
 /* ---- Fig. 6: the mechanisms ------------------------------------------------ */
@@ -950,6 +972,63 @@ static void arrow(cairo_t *cr, double x0, double y0, double x1, double y1,
 		      y1 - head * dy - 0.45 * head * dx);
 	cairo_close_path(cr);
 	cairo_fill(cr);
+}
+
+/* A mechanism panel's live loads as arrows; the wall's point (x, y)
+ * is drawn at (ox + (x - wx0) s, oy + (wy1 - y) s). */
+static void panel_loads(cairo_t *cr, const struct rctx *c, double ox,
+			double oy, double s)
+{
+	const struct wall *w = c->w;
+#define MX(x) (ox + ((x) - c->wx0) * s)
+#define MY(y) (oy + (c->wy1 - (y)) * s)
+	for (int i = 0; i < w->nloads; i++) {
+		const struct wall_load *ld = &w->loads[i];
+		if (ld->kind != LOAD_POINT)
+			continue;
+		double L = LOAD_ARROW * c->wsize * s;
+		double x1 = MX(ld->at[0]), y1 = MY(ld->at[1]);
+		double x0 = x1 - L * ld->dir[0], y0 = y1 + L * ld->dir[1];
+		/* a pull is drawn from the point outwards */
+		int pull = 0;
+		for (int b = 0; b < w->nblocks; b++)
+			if (b == ld->block && ld->at[0] * ld->dir[0] +
+			    ld->at[1] * ld->dir[1] >= w->blocks[b].cx *
+			    ld->dir[0] + w->blocks[b].cy * ld->dir[1])
+				pull = 1;
+		plot_rgb(cr, C_BLACK, 1);
+		cairo_set_line_width(cr, 1.6);
+		if (pull)
+			arrow(cr, x1, y1, x1 + L * ld->dir[0], y1 - L * ld->dir[1], 7);
+		else
+			arrow(cr, x0, y0, x1, y1, 7);
+	}
+#undef MX
+#undef MY
+}
+
+/* A mechanism panel's texts: its rank and share, its range of loads. */
+static void panel_caption(struct fig *f, const struct rctx *c, int rank,
+			  const struct tally_mech *mk, double px, double py,
+			  double ph)
+{
+	const struct tally *t = c->in->mech;
+	double pct = 100.0 * (double)mk->count / (double)(t->accepted ?
+							      t->accepted : 1);
+	plot_rgb(f->cr, C_BLACK, 1);
+	plot_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
+		  "#%d: %.1f %% (%ld of %ld)", rank + 1, pct, mk->count,
+		  t->accepted);
+	char lo[32], hi[32];
+	snprintf(lo, sizeof lo, "%.5g", mk->lam_lo);
+	snprintf(hi, sizeof hi, "%.5g", mk->lam_hi);
+	if (!strcmp(lo, hi))
+		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0, "λ = %.5g%s",
+			  mk->lam_lo, c->unit);
+	else
+		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0,
+			  "λ from %.5g to %.5g%s", mk->lam_lo, mk->lam_hi,
+			  c->unit);
 }
 
 static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
@@ -1041,46 +1120,10 @@ static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
 		cairo_stroke(cr);
 	}
 	cairo_set_dash(cr, NULL, 0, 0);
-	/* the live load */
-	for (int i = 0; i < w->nloads; i++) {
-		const struct wall_load *ld = &w->loads[i];
-		if (ld->kind != LOAD_POINT)
-			continue;
-		double L = LOAD_ARROW * c->wsize * s;
-		double x1 = MX(ld->at[0]), y1 = MY(ld->at[1]);
-		double x0 = x1 - L * ld->dir[0], y0 = y1 + L * ld->dir[1];
-		/* a pull is drawn from the point outwards */
-		int pull = 0;
-		for (int b = 0; b < w->nblocks; b++)
-			if (b == ld->block && ld->at[0] * ld->dir[0] +
-			    ld->at[1] * ld->dir[1] >= w->blocks[b].cx *
-			    ld->dir[0] + w->blocks[b].cy * ld->dir[1])
-				pull = 1;
-		plot_rgb(cr, C_BLACK, 1);
-		cairo_set_line_width(cr, 1.6);
-		if (pull)
-			arrow(cr, x1, y1, x1 + L * ld->dir[0], y1 - L * ld->dir[1], 7);
-		else
-			arrow(cr, x0, y0, x1, y1, 7);
-	}
+	panel_loads(cr, c, ox, oy, s);
 #undef MX
 #undef MY
-	double pct = 100.0 * (double)mk->count / (double)(t->accepted ?
-							      t->accepted : 1);
-	plot_rgb(cr, C_BLACK, 1);
-	plot_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
-		 "#%d: %.1f %% (%ld of %ld)", rank + 1, pct, mk->count,
-		 t->accepted);
-	char lo[32], hi[32];
-	snprintf(lo, sizeof lo, "%.5g", mk->lam_lo);
-	snprintf(hi, sizeof hi, "%.5g", mk->lam_hi);
-	if (!strcmp(lo, hi))
-		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0, "λ = %.5g%s",
-			 mk->lam_lo, c->unit);
-	else
-		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0,
-			 "λ from %.5g to %.5g%s", mk->lam_lo, mk->lam_hi,
-			 c->unit);
+	panel_caption(f, c, rank, mk, px, py, ph);
 }
 
 static void draw_mechanisms(struct fig *f, const struct rctx *c)
@@ -1091,8 +1134,8 @@ static void draw_mechanisms(struct fig *f, const struct rctx *c)
 	mech_layout(c, &cols, &rows, &pw, &ph);
 	const struct tally *t = c->in->mech;
 	plot_text(f, 14, 6, 11.5, 1, 0, 0, 0, "Most frequent mechanisms "
-		 "(%d distinct in %ld accepted samples)", t->nmech,
-		 t->accepted);
+		  "(%d distinct in %ld accepted samples)", t->nmech,
+		  t->accepted);
 	for (int i = 0; i < c->ntop; i++) {
 		double px = (i % cols) * pw, py = 28 + (i / cols) * ph;
 		draw_mech_panel(f, c, i, &t->mech[c->top[i]], px, py, pw, ph);
@@ -1120,8 +1163,8 @@ static void draw_mechanisms(struct fig *f, const struct rctx *c)
 	cairo_fill(cr);
 	plot_rgb(cr, C_BLACK, 1);
 	plot_text(f, 36, y + 19.5, 9.5, 0, 0, 0.5, 0, "%s",
-		 "moving block (darker: faster); dashed: its motion; "
-		 "arrow: its velocity");
+		  "moving block (darker: faster); dashed: its motion; "
+		  "arrow: its velocity");
 }
 
 /* ---- rendering -------------------------------------------------------------- */
@@ -1573,7 +1616,7 @@ static void draw_sweep(struct fig *f, const struct rctx *c)
 	};
 	/* the legend on the side where the curves are low */
 	plot_legend(f, &a, it, 4, p95[0] < p95[n - 1] || !isfinite(p95[0]) ?
-	       LG_LEFT : 0);
+		    LG_LEFT : 0);
 	if (s->caption)
 		plot_caption(f, PLOT_H + 6, s->caption);
 	free(x);
