@@ -359,6 +359,23 @@ static void density_grid(const struct rctx *c, double x0, double x1, double *g,
 	}
 }
 
+/* The model's KDE, and the tests' normal fit (tests) or else the
+ * model's, on the grid g. */
+static void density_curves(cairo_t *cr, const struct axes *a,
+			   const double *g, const double *kde,
+			   const double *nm, const double *nt, int tests)
+{
+	plot_style(cr, LG_LINE, C_MODEL);
+	plot_curve(cr, a, g, kde, NGRID);
+	if (tests) {
+		plot_style(cr, LG_LINE, C_TESTS);
+		plot_curve(cr, a, g, nt, NGRID);
+	} else {
+		plot_style(cr, LG_DASH, C_MODEL);
+		plot_curve(cr, a, g, nm, NGRID);
+	}
+}
+
 static void draw_densities(struct fig *f, const struct rctx *c)
 {
 	cairo_t *cr = f->cr;
@@ -377,15 +394,7 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	if (!(a.y1 > 0))
 		a.y1 = 1;
 	plot_clip(cr, &a);
-	plot_style(cr, LG_LINE, C_MODEL);
-	plot_curve(cr, &a, g, kde, NGRID);
-	if (tests) {
-		plot_style(cr, LG_LINE, C_TESTS);
-		plot_curve(cr, &a, g, nt, NGRID);
-	} else {
-		plot_style(cr, LG_DASH, C_MODEL);
-		plot_curve(cr, &a, g, nm, NGRID);
-	}
+	density_curves(cr, &a, g, kde, nm, nt, tests);
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
@@ -788,15 +797,7 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	steps(cr, &a, c, c->fm, scale, C_MODEL, 0, 0.8);
 	if (c->ft)
 		steps(cr, &a, c, c->ft, scale, C_TESTS, 0, 0.8);
-	plot_style(cr, LG_LINE, C_MODEL);
-	plot_curve(cr, &a, g, kde, NGRID);
-	if (tests) {
-		plot_style(cr, LG_LINE, C_TESTS);
-		plot_curve(cr, &a, g, nt, NGRID);
-	} else {
-		plot_style(cr, LG_DASH, C_MODEL);
-		plot_curve(cr, &a, g, nm, NGRID);
-	}
+	density_curves(cr, &a, g, kde, nm, nt, tests);
 	/* p05 */
 	plot_style(cr, LG_DASH, C_ORANGE);
 	cairo_set_line_width(cr, 1.6);
