@@ -18,6 +18,8 @@
 /* status    the status codes, their messages and exit codes; sw_fail,
  *           the version; allocation that never returns NULL */
 #include "slipwall/status.h"
+/* sys       the monotonic clock and mkdir -p, one copy each */
+#include "slipwall/sys.h"
 /* text      lines read with a bound; names and messages made safe to
  *           print; whole-string number parsing */
 #include "slipwall/text.h"

@@ -61,6 +61,15 @@ struct stats_summary {
  * it p05_lo and p05_hi are NaN. */
 void stats_summarise(const double *x, size_t n, struct stats_summary *s);
 
+/* Sort x[0..n-1] in place, ascending (gsl_sort). */
+void stats_sort(double *x, size_t n);
+/* A sorted copy of x[0..n-1], malloc'd (never NULL, n may be 0). */
+double *stats_sorted_copy(const double *x, size_t n);
+/* The bin of x among nbins bins [lo + k width, lo + (k+1) width):
+ * floor((x - lo) / width), clamped to 0 .. nbins - 1 (values below lo
+ * fall in the first bin, the top value in the last). */
+int stats_bin(double x, double lo, double width, int nbins);
+
 /* Freedman-Diaconis bin width 2 IQR n^(-1/3) of sorted x; falls back to
  * Scott's rule, then to 1, when the IQR or the spread is zero. */
 double stats_fd_width(const double *sorted, size_t n);

@@ -35,8 +35,6 @@ enum sw_status {
 
 /* Exit status of the program for a status (0, 1 or 2). */
 int sw_status_exit(enum sw_status st);
-/* Short text of a status ("bad input"). */
-const char *sw_status_text(enum sw_status st);
 
 /* Format into err (SW_ERRLEN bytes) and return st: `return sw_fail(...)`. */
 enum sw_status sw_fail(char *err, enum sw_status st, const char *fmt, ...)

@@ -42,8 +42,6 @@ enum text_line text_getline(FILE *f, char **line, size_t *cap, size_t max,
 char *text_clean(const char *s);
 /* Is s printable as it is (text_clean would not change it)? */
 int text_is_clean(const char *s);
-/* Write s, cleaned, to f. */
-void text_put(FILE *f, const char *s);
 /* Length of the valid UTF-8 sequence at s (1..4), 0 if there is none. */
 int text_utf8_len(const unsigned char *s);
 

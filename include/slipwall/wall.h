@@ -150,10 +150,6 @@ enum sw_status wall_finish(struct wall *w, char *err);
 /* A deep copy of a finished or unfinished wall (for editing). */
 struct wall *wall_copy(const struct wall *w);
 
-/* Sum of the forces of the reference live load (the load at lambda = 1),
- * N: sum of point magnitudes, plus the body factor times total weight. */
-double wall_live_reference(const struct wall *w);
-
 /* "FILE:LINE:COLUMN: " prefix for mark m (or "FILE: " without mark). */
 void wall_where(const struct wall *w, struct wall_mark m, char *buf,
 		size_t len);

@@ -127,57 +127,6 @@ int cli_parse_time_limit(const char *s, double *out)
 	return 0;
 }
 
-const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
-			  int *missing)
-{
-	const char *a = argv[*i];
-	size_t len = strlen(name);
-	if (strncmp(a, name, len))
-		return NULL;
-	if (a[len] == '=')
-		return a + len + 1;
-	if (a[len])
-		return NULL;
-	if (*i + 1 >= argc) {
-		*missing = 1;
-		return NULL;
-	}
-	return argv[++*i];
-}
-
-int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
-			int *missing, long *n, int *n_set, unsigned long *seed,
-			int *seed_set, int *threads, double *depth)
-{
-	const char *v;
-	long l;
-	if ((v = cli_opt_value(argc, argv, i, "-n", missing))) {
-		if (text_parse_long(v, 1, 1000000000L, n))
-			return cli_usage_error(cmd, "-n: '%s' is not a "
-					       "sample count (1 to 10^9)", v);
-		*n_set = 1;
-	} else if ((v = cli_opt_value(argc, argv, i, "--seed", missing))) {
-		if (cli_parse_seed(v, seed))
-			return cli_usage_error(cmd, "--seed: '%s' is not a "
-					       "whole number from 0 to %llu "
-					       "(2^64-1)", v, WALL_SEED_MAX);
-		*seed_set = 1;
-	} else if ((v = cli_opt_value(argc, argv, i, "--threads", missing))) {
-		if (text_parse_long(v, 1, 1024, &l))
-			return cli_usage_error(cmd, "--threads: '%s' is not "
-					       "a thread count (1 to 1024)", v);
-		*threads = (int)l;
-	} else if (depth &&
-		   (v = cli_opt_value(argc, argv, i, "--depth", missing))) {
-		if (text_parse_double(v, depth) || *depth < 0 || *depth > 0.5)
-			return cli_usage_error(cmd, "--depth: '%s' is not a "
-					       "depth between 0 and 0.5", v);
-	} else {
-		return 0;
-	}
-	return 1;
-}
-
 double cli_worker_bytes(const struct wall *w)
 {
 	return 1048576.0 + 16384.0 * (double)w->nifaces +

@@ -45,20 +45,6 @@ int cli_parse_seed(const char *s, unsigned long *out);
  * end at 2^31-1 ms = 24.8 days); 0 on success. */
 #define CLI_TIME_LIMIT_MAX 1e6
 int cli_parse_time_limit(const char *s, double *out);
-/* Option scanning for the commands' own loops: if argv[*i] is the
- * option `name` ("-n", "--seed"), its value ("--seed=5", or the next
- * argument, advancing *i); NULL if argv[*i] is another option, or with
- * *missing = 1 if the value is missing. */
-const char *cli_opt_value(int argc, char **argv, int *i, const char *name,
-			  int *missing);
-/* The sampling options that run, compare and report share: -n N,
- * --seed S, --threads T and (when depth is not NULL) --depth D, checked
- * against their ranges.  Returns 1 if argv[*i] was one of them (stored,
- * *n_set / *seed_set raised), 0 if not, 2 after printing a usage error
- * for a bad value. */
-int cli_sampling_option(const char *cmd, int argc, char **argv, int *i,
-			int *missing, long *n, int *n_set, unsigned long *seed,
-			int *seed_set, int *threads, double *depth);
 /* Experimental collapse loads (compare --tests, report --tests): one
  * load >= 0 per line, '#' starts a comment, blank lines are skipped.
  * *out (malloc'd) and *nout on SW_OK; else SW_EINPUT and a message

@@ -84,6 +84,7 @@
 #include <unistd.h>
 
 #include "cluster.h"
+#include "slipwall/sys.h"
 
 #define WINDOW 128		/* samples a rank may be ahead of the merge, */
 #define WINDOW_BYTES (1L << 20)	/* or fewer: at most this much per rank, */
@@ -143,13 +144,6 @@ struct cluster {
 	MPI_Request rq_item, rq_beat, rq_done;
 	long done_buf[3];
 };
-
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static void nap(void)
 {
@@ -281,7 +275,7 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 		    WINDOW_MIN : c->window;
 	if (c->rank == 0) {
 		c->peer = sw_xcalloc((size_t)c->size, sizeof *c->peer);
-		double t = now();
+		double t = sys_now();
 		for (int r = 1; r < c->size; r++) {
 			struct peer *p = &c->peer[r];
 			p->ring = sw_xcalloc((size_t)c->window, c->item_size);
@@ -289,7 +283,7 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 			p->rq_credit = p->rq_stop = p->rq_beat = MPI_REQUEST_NULL;
 		}
 	}
-	c->last_loop = c->last_house = now();
+	c->last_loop = c->last_house = sys_now();
 	c->pool = mc_start(&share, err);
 	return c->pool ? SW_OK : SW_EIO;
 }
@@ -509,7 +503,7 @@ static void credit(struct cluster *c, int r)
 	p->credit_buf = p->taken;
 	if (post(&p->credit_buf, 1, MPI_LONG, r, TAG_CREDIT, &p->rq_credit)) {
 		p->credited = p->taken;
-		p->told = now();
+		p->told = sys_now();
 	}
 }
 
@@ -524,7 +518,7 @@ static void notice_stop(struct cluster *c)
 	if (!atomic_load(&c->stop) || c->stop_sent)
 		return;
 	if (c->stop_sig)
-		c->grace_until = now() + GRACE_SECONDS;
+		c->grace_until = sys_now() + GRACE_SECONDS;
 	stop_all(c);
 }
 
@@ -553,7 +547,7 @@ static int receive_item(struct cluster *c, int r, void *slot, int count)
 		}
 		if (flag)
 			return 0;
-		double t = now();
+		double t = sys_now();
 		notice_stop(c);
 		if (stalled(c, t))	/* our own stall: forgive it */
 			for (int q = 1; q < c->size; q++)
@@ -643,7 +637,7 @@ static void housekeeping(struct cluster *c, double t)
 /* Receive whatever has arrived, then keep house. */
 static void progress(struct cluster *c)
 {
-	double t = now();
+	double t = sys_now();
 	for (;;) {
 		int flag = 0;
 		MPI_Status st;
@@ -684,13 +678,13 @@ static int take(struct cluster *c, struct mc_item *it, int wait_ms)
 		int got = mc_pop(c->pool, it, wait_ms);
 		if (got == 1)
 			c->next++;
-		if (got == 0 && now() >= c->grace_until)
+		if (got == 0 && sys_now() >= c->grace_until)
 			got = -1;	/* our own workers are too slow */
 		return got;
 	}
 	struct peer *p = &c->peer[r];
 	if (p->queued == 0) {
-		if (!p->done && now() < c->grace_until)
+		if (!p->done && sys_now() < c->grace_until)
 			return 0;
 		c->cut_rank = r;
 		return -1;
@@ -729,7 +723,7 @@ static void finish(struct cluster *c)
 			left += !c->peer[r].done;
 		if (!left || c->lost)
 			return;
-		if (now() > c->grace_until) {
+		if (sys_now() > c->grace_until) {
 			for (int r = 1; r < c->size; r++)
 				if (!c->peer[r].done)
 					lose(c, "rank %d did not stop within "
@@ -745,7 +739,7 @@ int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
 {
 	if (c->ended)
 		return -1;
-	double until = wait_ms < 0 ? INFINITY : now() + 1e-3 * wait_ms;
+	double until = wait_ms < 0 ? INFINITY : sys_now() + 1e-3 * wait_ms;
 	for (;;) {
 		notice_stop(c);
 		progress(c);
@@ -762,7 +756,7 @@ int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
 			c->ended = 1;
 			return -1;
 		}
-		if (now() >= until)
+		if (sys_now() >= until)
 			return 0;
 	}
 }
@@ -795,9 +789,9 @@ void cluster_stop(struct cluster *c, int sig)
 /* Wait for a send to go, at most the timeout; 0 when it went. */
 static int wait_sent(struct cluster *c, MPI_Request *rq)
 {
-	double t0 = now();
+	double t0 = sys_now();
 	while (!sent(rq)) {
-		double t = now();
+		double t = sys_now();
 		if (stalled(c, t))
 			t0 = t;
 		if (t - t0 > c->timeout) {
@@ -819,7 +813,7 @@ static void listen(struct cluster *c, long *credit_got, double *heard)
 		if (MPI_Iprobe(0, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st) !=
 		    MPI_SUCCESS || !flag)
 			return;
-		*heard = now();
+		*heard = sys_now();
 		MPI_Get_count(&st, MPI_BYTE, &count);
 		if (st.MPI_TAG == TAG_CREDIT && count == (int)sizeof(long)) {
 			long v;
@@ -845,11 +839,11 @@ enum sw_status cluster_serve(struct cluster *c, char *err)
 	struct mc_item it;
 	mc_item_init(&it, c->w);
 	long nsent = 0, credit_got = 0;
-	double heard = now(), told = heard;
+	double heard = sys_now(), told = heard;
 	int got = 0;
 	while (!c->lost) {
 		listen(c, &credit_got, &heard);
-		double t = now();
+		double t = sys_now();
 		if (stalled(c, t))
 			heard = t;
 		if (t - heard > c->timeout) {
@@ -870,14 +864,14 @@ enum sw_status cluster_serve(struct cluster *c, char *err)
 				if (wait_sent(c, &c->rq_item))
 					break;
 				nsent++;
-				told = now();
+				told = sys_now();
 			}
 		} else {
 			nap();
 		}
-		if (now() - told >= BEAT_SECONDS &&
+		if (sys_now() - told >= BEAT_SECONDS &&
 		    post(NULL, 0, MPI_BYTE, 0, TAG_BEAT, &c->rq_beat))
-			told = now();
+			told = sys_now();
 	}
 	mc_item_free(&it);
 	if (c->lost)

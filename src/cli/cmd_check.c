@@ -3,11 +3,11 @@
  * the model (blocks, interfaces, loads, weights).  The --json form fixes
  * the order of blocks and interfaces that every other output uses.
  */
-#include <getopt.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "slipwall/json.h"
 
 static const char *kind_name(enum joint_kind k)
@@ -21,6 +21,13 @@ static void point(struct json *j, const double *p)
 	json_double(j, p[0]);
 	json_double(j, p[1]);
 	json_array_end(j);
+}
+
+/* "key": [x, y] */
+static void key_point(struct json *j, const char *key, const double *p)
+{
+	json_key(j, key);
+	point(j, p);
 }
 
 static void print_json(const struct wall *w)
@@ -84,12 +91,9 @@ static void print_json(const struct wall *w)
 		json_string(&j, w->blocks[it->a].id);
 		json_key(&j, "b");
 		json_string(&j, w->blocks[it->b].id);
-		json_key(&j, "p1");
-		point(&j, it->p1);
-		json_key(&j, "p2");
-		point(&j, it->p2);
-		json_key(&j, "normal");
-		point(&j, it->n);
+		key_point(&j, "p1", it->p1);
+		key_point(&j, "p2", it->p2);
+		key_point(&j, "normal", it->n);
 		json_key(&j, "length");
 		json_double(&j, it->len);
 		json_key(&j, "mu");
@@ -107,13 +111,11 @@ static void print_json(const struct wall *w)
 		json_key(&j, "type");
 		json_string(&j, ld->kind == LOAD_POINT ? "point" : "body");
 		if (ld->kind == LOAD_POINT) {
-			json_key(&j, "at");
-			point(&j, ld->at);
+			key_point(&j, "at", ld->at);
 			json_key(&j, "block");
 			json_string(&j, w->blocks[ld->block].id);
 		}
-		json_key(&j, "direction");
-		point(&j, ld->dir);
+		key_point(&j, "direction", ld->dir);
 		json_key(&j, "magnitude");
 		json_double(&j, ld->magnitude);
 		json_object_end(&j);
@@ -227,32 +229,19 @@ static void usage(FILE *f)
 int cmd_check(int argc, char **argv)
 {
 	int json = 0;
-	static const struct option opts[] = {
-		{"json", no_argument, NULL, 'j'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
+	const char *path;
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", json),
 	};
-	int c;
-	optind = 1;
-	opterr = 0;
-	while ((c = getopt_long(argc, argv, "h", opts, NULL)) != -1) {
-		switch (c) {
-		case 'j':
-			json = 1;
-			break;
-		case 'h':
-			usage(stdout);
-			return 0;
-		default:
-			return cli_usage_error("check", "unknown option '%s'",
-					       argv[optind - 1]);
-		}
-	}
-	if (optind != argc - 1)
-		return cli_usage_error("check", "expected one wall file");
-	struct wall *w;
-	int rc = cli_load_wall(argv[optind], &w);
+	static const struct cli_cmd cmd = {
+		.name = "check", .usage = usage, .posix = 1,
+		.no_wall = "expected one wall file",
+	};
+	int rc = cli_opts_parse(&cmd, opts, 1, argc, argv, &path);
 	if (rc)
+		return rc < 0 ? 0 : rc;
+	struct wall *w;
+	if ((rc = cli_load_wall(path, &w)))
 		return rc;
 	if (json)
 		print_json(w);

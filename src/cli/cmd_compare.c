@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "slipwall/collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
@@ -88,47 +89,23 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
-	for (int i = 1; i < argc; i++) {
-		const char *s = argv[i], *v;
-		int missing = 0, sr;
-		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-			usage(stdout);
-			return -1;
-		} else if (!strcmp(s, "--json")) {
-			a->json = 1;
-		} else if (!strcmp(s, "--fit-depth")) {
-			a->fit_depth = 1;
-		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
-						     &a->n, &a->n_set, &a->seed,
-						     &a->seed_set, &a->threads,
-						     &a->depth))) {
-			if (sr == 2)
-				return 2;
-		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
-						 &a->ov))) {
-			if (sr == 2)
-				return 2;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--tests: empty file name");
-			a->tests = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--samples: empty file name");
-			a->samples = v;
-		} else if (missing) {
-			return cli_usage_error(CMD, "%s needs a value", s);
-		} else if (s[0] == '-' && s[1]) {
-			return cli_usage_error(CMD, "unknown option '%s'", s);
-		} else if (a->wall) {
-			return cli_usage_error(CMD, "one wall file only ('%s' and "
-					       "'%s')", a->wall, s);
-		} else {
-			a->wall = s;
-		}
-	}
-	if (!a->wall)
-		return cli_usage_error(CMD, "which wall? (slipwall compare WALL.yaml)");
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", a->json),
+		CLI_OPT_SWITCH("--fit-depth", a->fit_depth),
+		CLI_OPT_SAMPLING(a),
+		CLI_OPT_DEPTH(a),
+		OVERRIDE_OPTIONS(&a->ov),
+		CLI_OPT_FILE("--tests", a->tests),
+		CLI_OPT_FILE("--samples", a->samples),
+	};
+	static const struct cli_cmd cmd = {
+		.name = CMD, .usage = usage,
+		.no_wall = "which wall? (slipwall compare WALL.yaml)",
+	};
+	int rc = cli_opts_parse(&cmd, opts, sizeof opts / sizeof *opts, argc,
+				argv, &a->wall);
+	if (rc)
+		return rc;
 	if (a->samples && (a->fit_depth || a->n_set || a->seed_set ||
 			   a->threads || a->depth >= 0))
 		return cli_usage_error(CMD, "--samples takes the model's loads "

@@ -31,6 +31,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "summary.h"
 #include "slipwall/collapse.h"
 #include "override.h"
@@ -86,55 +87,24 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
 	a->time_limit = GLOBAL_TIME;
-	for (int i = 1; i < argc; i++) {
-		const char *s = argv[i], *v;
-		int missing = 0, sr;
-		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-			usage(stdout);
-			return -1;
-		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
-						     &a->n, &a->n_set, &a->seed,
-						     &a->seed_set, &a->threads,
-						     &a->depth))) {
-			if (sr == 2)
-				return 2;
-		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
-						 &a->ov))) {
-			if (sr == 2)
-				return 2;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--time-limit",
-					  &missing))) {
-			if (cli_parse_time_limit(v, &a->time_limit))
-				return cli_usage_error(CMD, "--time-limit: '%s' is "
-						       "not a number of seconds "
-						       "> 0 and <= %g", v,
-						       CLI_TIME_LIMIT_MAX);
-		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--samples: empty file name");
-			a->samples = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--tests", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--tests: empty file name");
-			a->tests = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--out", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--out: empty directory name");
-			a->out = v;
-		} else if (missing) {
-			return cli_usage_error(CMD, "%s needs a value", s);
-		} else if (s[0] == '-' && s[1]) {
-			return cli_usage_error(CMD, "unknown option '%s'", s);
-		} else if (a->wall) {
-			return cli_usage_error(CMD, "one wall file only ('%s' and "
-					       "'%s')", a->wall, s);
-		} else {
-			a->wall = s;
-		}
-	}
-	if (!a->wall)
-		return cli_usage_error(CMD, "which wall? (slipwall report "
-				       "WALL.yaml --out DIR)");
+	const struct cli_opt opts[] = {
+		CLI_OPT_SAMPLING(a),
+		CLI_OPT_DEPTH(a),
+		OVERRIDE_OPTIONS(&a->ov),
+		{ .name = "--time-limit", .kind = CLI_OPT_TIME,
+		  .dst = &a->time_limit },
+		CLI_OPT_FILE("--samples", a->samples),
+		CLI_OPT_FILE("--tests", a->tests),
+		CLI_OPT_DIR("--out", a->out),
+	};
+	static const struct cli_cmd cmd = {
+		.name = CMD, .usage = usage,
+		.no_wall = "which wall? (slipwall report WALL.yaml --out DIR)",
+	};
+	int rc = cli_opts_parse(&cmd, opts, sizeof opts / sizeof *opts, argc,
+				argv, &a->wall);
+	if (rc)
+		return rc;
 	if (!a->out)
 		return cli_usage_error(CMD, "where to? (--out DIR)");
 	if (a->samples && (a->n_set || a->seed_set || a->depth >= 0))

@@ -42,6 +42,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "cluster.h"
 #include "slipwall/collapse.h"
 #include "override.h"
@@ -223,69 +224,49 @@ static void usage(FILE *f)
 		"Ctrl-C stops cleanly: the summary of the samples done, exit status 1.\n");
 }
 
-/* "--opt VALUE" or "--opt=VALUE": the value, advancing *i; NULL if this
- * is not the option.  *missing is set when the value is absent. */
+/* --slp plain|anderson into an int (enum sample_slp). */
+static int parse_slp(const char *cmd, const char *name, const char *v,
+		     void *dst)
+{
+	if (!strcmp(v, "plain"))
+		*(int *)dst = SAMPLE_SLP_PLAIN;
+	else if (!strcmp(v, "anderson"))
+		*(int *)dst = SAMPLE_SLP_ANDERSON;
+	else
+		return cli_usage_error(cmd, "%s: '%s' is not plain or anderson",
+				       name, v);
+	return 0;
+}
+
 static int parse_args(int argc, char **argv, struct run_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
 	a->slp = SAMPLE_SLP_ANDERSON;
 	a->at = -1;
-	for (int i = 1; i < argc; i++) {
-		const char *s = argv[i], *v;
-		int missing = 0, sr;
-		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-			usage(stdout);
-			return -1;
-		} else if (!strcmp(s, "--json")) {
-			a->json = 1;
-		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
-						     &a->n, &a->n_set, &a->seed,
-						     &a->seed_set, &a->threads,
-						     &a->depth))) {
-			if (sr == 2)
-				return 2;
-		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
-						 &a->ov))) {
-			if (sr == 2)
-				return 2;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--samples", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--samples: empty file name");
-			a->samples = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--positions", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--positions: empty file name");
-			a->positions = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--slp", &missing))) {
-			if (!strcmp(v, "plain"))
-				a->slp = SAMPLE_SLP_PLAIN;
-			else if (!strcmp(v, "anderson"))
-				a->slp = SAMPLE_SLP_ANDERSON;
-			else
-				return cli_usage_error(CMD, "--slp: '%s' is not "
-						       "plain or anderson", v);
-		} else if ((v = cli_opt_value(argc, argv, &i, "--at", &missing))) {
-			if (text_parse_double(v, &a->at) || a->at < 0)
-				return cli_usage_error(CMD, "--at: '%s' is not a "
-						       "load >= 0", v);
-		} else if ((v = cli_opt_value(argc, argv, &i, "--until-ci", &missing))) {
-			if (text_parse_double(v, &a->until_ci) || !(a->until_ci > 0))
-				return cli_usage_error(CMD, "--until-ci: '%s' is not "
-						       "a relative width > 0", v);
-		} else if (missing) {
-			return cli_usage_error(CMD, "%s needs a value", s);
-		} else if (s[0] == '-' && s[1]) {
-			return cli_usage_error(CMD, "unknown option '%s'", s);
-		} else if (a->wall) {
-			return cli_usage_error(CMD, "one wall file only ('%s' and "
-					       "'%s')", a->wall, s);
-		} else {
-			a->wall = s;
-		}
-	}
-	if (!a->wall)
-		return cli_usage_error(CMD, "which wall? (slipwall run WALL.yaml)");
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", a->json),
+		CLI_OPT_SAMPLING(a),
+		CLI_OPT_DEPTH(a),
+		OVERRIDE_OPTIONS(&a->ov),
+		CLI_OPT_FILE("--samples", a->samples),
+		CLI_OPT_FILE("--positions", a->positions),
+		{ .name = "--slp", .kind = CLI_OPT_CALL, .dst = &a->slp,
+		  .call = parse_slp },
+		{ .name = "--at", .kind = CLI_OPT_DOUBLE, .dst = &a->at,
+		  .lo = 0, .hi = INFINITY, .what = "a load >= 0" },
+		{ .name = "--until-ci", .kind = CLI_OPT_DOUBLE,
+		  .dst = &a->until_ci, .lo = 0, .above = 1, .hi = INFINITY,
+		  .what = "a relative width > 0" },
+	};
+	static const struct cli_cmd cmd = {
+		.name = CMD, .usage = usage,
+		.no_wall = "which wall? (slipwall run WALL.yaml)",
+	};
+	int rc = cli_opts_parse(&cmd, opts, sizeof opts / sizeof *opts, argc,
+				argv, &a->wall);
+	if (rc)
+		return rc;
 	if (a->positions && (a->seed_set || a->depth >= 0))
 		return cli_usage_error(CMD, "--positions replays the contact "
 				       "positions of a file: --seed and --depth "

@@ -2,13 +2,13 @@
  * cmd_solve.c - `slipwall solve WALL --method standard|gilbert|global`:
  * one solution on the classical contact, with its mechanism.
  */
-#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "slipwall/json.h"
 #include "slipwall/solve.h"
 
@@ -261,62 +261,50 @@ static void usage(FILE *f)
 		"mechanism.  Exit status 1 when there is no finite collapse load.\n");
 }
 
+/* --method NAME into an int (enum solve_method). */
+static int opt_method(const char *cmd, const char *name, const char *v,
+		      void *dst)
+{
+	(void)name;
+	if ((*(int *)dst = solve_method_parse(v)) < 0)
+		return cli_usage_error(cmd, "unknown method '%s' (standard, "
+				       "gilbert or global)", v);
+	return 0;
+}
+
 int cmd_solve(int argc, char **argv)
 {
 	int json = 0, method = -1;
 	double tlim = 60;
-	static const struct option opts[] = {
-		{"json", no_argument, NULL, 'j'},
-		{"method", required_argument, NULL, 'm'},
-		{"time-limit", required_argument, NULL, 't'},
-		{"help", no_argument, NULL, 'h'},
-		{NULL, 0, NULL, 0},
+	const char *path;
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", json),
+		{ .name = "--method", .alias = "-m", .kind = CLI_OPT_CALL,
+		  .dst = &method, .call = opt_method },
+		{ .name = "--time-limit", .kind = CLI_OPT_TIME, .dst = &tlim },
 	};
-	int c;
-	optind = 1;
-	opterr = 0;
-	while ((c = getopt_long(argc, argv, "hm:", opts, NULL)) != -1) {
-		switch (c) {
-		case 'j':
-			json = 1;
-			break;
-		case 'm':
-			method = solve_method_parse(optarg);
-			if (method < 0)
-				return cli_usage_error("solve",
-						       "unknown method '%s' (standard, gilbert or global)",
-						       optarg);
-			break;
-		case 't':
-			if (cli_parse_time_limit(optarg, &tlim))
-				return cli_usage_error("solve",
-						       "--time-limit: '%s' is not a number of seconds "
-						       "> 0 and <= %g", optarg, CLI_TIME_LIMIT_MAX);
-			break;
-		case 'h':
-			usage(stdout);
-			return 0;
-		default:
-			return cli_usage_error("solve", "unknown option or missing value: '%s'",
-					       argv[optind - 1]);
-		}
-	}
-	if (optind != argc - 1)
-		return cli_usage_error("solve", "expected one wall file");
+	static const struct cli_cmd cmd = {
+		.name = "solve", .usage = usage, .posix = 1,
+		.no_wall = "expected one wall file",
+		.unknown = "unknown option or missing value: '%s'",
+	};
+	int rc = cli_opts_parse(&cmd, opts, sizeof opts / sizeof *opts, argc,
+				argv, &path);
+	if (rc)
+		return rc < 0 ? 0 : rc;
 	if (method < 0)
 		return cli_usage_error("solve",
 				       "--method is required (standard, gilbert or global)");
 	struct wall *w;
-	int rc = cli_load_wall(argv[optind], &w);
-	if (rc)
+	if ((rc = cli_load_wall(path, &w)))
 		return rc;
 	if (method == SOLVE_GLOBAL)
-		global_forecast(argv[optind], w, tlim);
+		global_forecast(path, w, tlim);
 	struct solve_opts o;
 	solve_opts_default(&o, (enum solve_method)method);
 	o.time_limit = tlim;
 	struct solve_progress prog = {
-		argv[optind], solve_method_name(o.method), isatty(2), 0, 0,
+		path, solve_method_name(o.method), isatty(2), 0, 0,
 	};
 	o.progress = solve_progress;
 	o.progress_ctx = &prog;
@@ -326,7 +314,7 @@ int cmd_solve(int argc, char **argv)
 	if (prog.tty && prog.shown)
 		fputs("\r\033[K", stderr);	/* the line goes */
 	if (st != SW_OK) {
-		cli_errorf("%s: %s", argv[optind], err);
+		cli_errorf("%s: %s", path, err);
 		rc = sw_status_exit(st);
 	} else {
 		if (json)
@@ -335,7 +323,7 @@ int cmd_solve(int argc, char **argv)
 			print_text(w, &r);
 		if (method == SOLVE_GILBERT && !r.converged) {
 			fprintf(stderr, "%s: the sequential LP did not converge in %d iterations\n",
-				argv[optind], r.iterations);
+				path, r.iterations);
 			rc = 1;
 		}
 	}

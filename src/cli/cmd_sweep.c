@@ -28,6 +28,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_opts.h"
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
@@ -184,68 +185,53 @@ static int set_param(struct sweep_args *a, enum sweep_param p, const char *v)
 	return 0;
 }
 
+/* --depth A:B:STEP: the parameter. */
+static int opt_depth(const char *cmd, const char *name, const char *v,
+		     void *dst)
+{
+	(void)cmd;
+	(void)name;
+	return set_param(dst, SW_DEPTH, v);
+}
+
+/* --friction and --load-at: the parameter when a range (A:B:STEP,
+ * X1,Y1:X2,Y2:N), else a fixed override as for run (MU, X,Y). */
+static int opt_range_or_fixed(const char *cmd, const char *name,
+			      const char *v, void *dst)
+{
+	struct sweep_args *a = dst;
+	if (!strchr(v, ':'))
+		return override_add(cmd, name, v, &a->ov);
+	return set_param(a, !strcmp(name, "--friction") ? SW_FRICTION :
+			 SW_LOAD_AT, v);
+}
+
 static int parse_args(int argc, char **argv, struct sweep_args *a)
 {
 	memset(a, 0, sizeof *a);
-	for (int i = 1; i < argc; i++) {
-		const char *s = argv[i], *v;
-		int missing = 0, sr;
-		if (!strcmp(s, "--help") || !strcmp(s, "-h")) {
-			usage(stdout);
-			return -1;
-		} else if (!strcmp(s, "--json")) {
-			a->json = 1;
-		} else if ((sr = cli_sampling_option(CMD, argc, argv, &i, &missing,
-						     &a->n, &a->n_set, &a->seed,
-						     &a->seed_set, &a->threads,
-						     NULL))) {
-			if (sr == 2)
-				return 2;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--depth", &missing))) {
-			if ((sr = set_param(a, SW_DEPTH, v)))
-				return sr;
-		} else if (((v = cli_opt_value(argc, argv, &i, "--friction",
-					       &missing)) ||
-			    (!missing && (v = cli_opt_value(argc, argv, &i,
-							    "--load-at",
-							    &missing)))) &&
-			   strchr(v, ':')) {
-			if ((sr = set_param(a, !strncmp(s, "--friction", 10) ?
-					    SW_FRICTION : SW_LOAD_AT, v)))
-				return sr;
-		} else if (v) {
-			/* a fixed --friction MU or --load-at X,Y: give it back
-			 * to the overrides */
-			i -= strchr(s, '=') ? 0 : 1;
-			if ((sr = override_option(CMD, argc, argv, &i, &missing,
-						  &a->ov)) != 1)
-				return sr ? sr : 2;
-		} else if ((sr = override_option(CMD, argc, argv, &i, &missing,
-						 &a->ov))) {
-			if (sr == 2)
-				return 2;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--csv", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--csv: empty file name");
-			a->csv = v;
-		} else if ((v = cli_opt_value(argc, argv, &i, "--out", &missing))) {
-			if (!*v)
-				return cli_usage_error(CMD, "--out: empty directory name");
-			a->out = v;
-		} else if (missing) {
-			return cli_usage_error(CMD, "%s needs a value", s);
-		} else if (s[0] == '-' && s[1]) {
-			return cli_usage_error(CMD, "unknown option '%s'", s);
-		} else if (a->wall) {
-			return cli_usage_error(CMD, "one wall file only ('%s' and "
-					       "'%s')", a->wall, s);
-		} else {
-			a->wall = s;
-		}
-	}
-	if (!a->wall)
-		return cli_usage_error(CMD, "which wall? (slipwall sweep WALL.yaml "
-				       "--friction A:B:STEP)");
+	const struct cli_opt opts[] = {
+		CLI_OPT_SWITCH("--json", a->json),
+		CLI_OPT_SAMPLING(a),
+		{ .name = "--depth", .kind = CLI_OPT_CALL, .dst = a,
+		  .call = opt_depth },
+		{ .name = "--friction", .kind = CLI_OPT_CALL, .dst = a,
+		  .call = opt_range_or_fixed },
+		{ .name = "--load-at", .kind = CLI_OPT_CALL, .dst = a,
+		  .call = opt_range_or_fixed },
+		OVERRIDE_OPTION("--load-direction", &a->ov),
+		OVERRIDE_OPTION("--set", &a->ov),
+		CLI_OPT_FILE("--csv", a->csv),
+		CLI_OPT_DIR("--out", a->out),
+	};
+	static const struct cli_cmd cmd = {
+		.name = CMD, .usage = usage,
+		.no_wall = "which wall? (slipwall sweep WALL.yaml "
+			   "--friction A:B:STEP)",
+	};
+	int rc = cli_opts_parse(&cmd, opts, sizeof opts / sizeof *opts, argc,
+				argv, &a->wall);
+	if (rc)
+		return rc;
 	if (a->param == SW_NONE)
 		return cli_usage_error(CMD, "what to sweep? --friction A:B:STEP, "
 				       "--depth A:B:STEP or --load-at "
@@ -275,23 +261,16 @@ static int wall_for(const struct sweep_args *a, int k, struct wall **w)
 	struct overrides ov = {0};
 	char arg[128];
 	int rc = 0;
-	for (int i = 0; i < a->ov.n && !rc; i++) {
-		char *argv[2] = {a->ov.o[i].option, a->ov.o[i].arg};
-		int j = 0, missing = 0;
-		if (override_option(CMD, 2, argv, &j, &missing, &ov) != 1)
-			rc = 2;
-	}
+	for (int i = 0; i < a->ov.n && !rc; i++)
+		rc = override_add(CMD, a->ov.o[i].option, a->ov.o[i].arg, &ov);
 	if (!rc && (a->param == SW_FRICTION || a->param == SW_LOAD_AT)) {
 		if (a->param == SW_FRICTION)
 			snprintf(arg, sizeof arg, "%.17g", a->val[k]);
 		else
 			snprintf(arg, sizeof arg, "%.17g,%.17g", a->at[k][0],
 				 a->at[k][1]);
-		char *argv[2] = {a->param == SW_FRICTION ? "--friction" :
-				 "--load-at", arg};
-		int j = 0, missing = 0;
-		if (override_option(CMD, 2, argv, &j, &missing, &ov) != 1)
-			rc = 2;
+		rc = override_add(CMD, a->param == SW_FRICTION ?
+				  "--friction" : "--load-at", arg, &ov);
 	}
 	if (!rc)
 		rc = override_load(CMD, a->wall, &ov, w);

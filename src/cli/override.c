@@ -11,16 +11,6 @@
 #include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 
-static const struct {
-	const char *option;
-	enum override_kind kind;
-} options[] = {
-	{"--friction", OVR_FRICTION},
-	{"--load-at", OVR_LOAD_AT},
-	{"--load-direction", OVR_LOAD_DIR},
-	{"--set", OVR_SET},
-};
-
 static char *dup_printf(const char *fmt, ...)
 	__attribute__((format(printf, 1, 2)));
 
@@ -62,19 +52,13 @@ static int split_numbers(const char *v, int n, char *buf, size_t len,
 	return k == n ? 0 : -1;
 }
 
-int override_option(const char *cmd, int argc, char **argv, int *i,
-		    int *missing, struct overrides *ov)
+int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 {
-	const char *v = NULL;
-	size_t o;
-	for (o = 0; o < sizeof options / sizeof *options; o++)
-		if ((v = cli_opt_value(argc, argv, i, options[o].option,
-				       missing)) || *missing)
-			break;
-	if (!v)
-		return 0;
-	enum override_kind kind = options[o].kind;
-	const char *opt = options[o].option;
+	struct overrides *ov = dst;
+	enum override_kind kind = !strcmp(opt, "--friction") ? OVR_FRICTION :
+				  !strcmp(opt, "--load-at") ? OVR_LOAD_AT :
+				  !strcmp(opt, "--load-direction") ?
+				  OVR_LOAD_DIR : OVR_SET;
 	char buf[256], *part[2];
 	char *key = NULL, *value = NULL;
 	switch (kind) {
@@ -124,7 +108,7 @@ int override_option(const char *cmd, int argc, char **argv, int *i,
 	x->key = key;
 	x->value = value;
 	x->label = dup_printf("%s %s", opt, v);
-	return 1;
+	return 0;
 }
 
 /* The keys of --load-at and --load-direction: the wall's only load. */

@@ -12,9 +12,10 @@
  * edited file, sample for sample.  --load-at and --load-direction
  * change the wall's only live load (K found from the unedited file); a
  * wall with several says to use --set.  (--depth stays the sampling
- * option it was: cli_sampling_option.)
+ * option it was: CLI_OPT_DEPTH.)
  *
- * Usage: override_option() in the command's option loop, then
+ * Usage: OVERRIDE_OPTIONS(&ov) in the command's option table
+ * (cli_opts.h), then
  * override_load() instead of cli_load_wall(); override_json(),
  * override_describe() and override_args() say what was changed;
  * override_free() at the end.
@@ -24,6 +25,7 @@
 
 #include <stddef.h>
 #include <stdio.h>
+#include "cli_opts.h"
 #include "slipwall/json.h"
 #include "slipwall/wall.h"
 
@@ -44,12 +46,19 @@ struct overrides {
 	int n;
 };
 
-/* If argv[*i] is an override option, record it (advancing *i past its
- * value) and return 1; 0 if it is not one; 2 after printing a usage
- * error (a value that is not what the option takes).  *missing is set
- * when the value is absent (and 0 returned), as cli_opt_value does. */
-int override_option(const char *cmd, int argc, char **argv, int *i,
-		    int *missing, struct overrides *ov);
+/* Record the override option opt ("--friction", ...) with its value
+ * v into dst (a struct overrides *): 0, or 2 after printing a usage
+ * error (a value that is not what the option takes).  The
+ * CLI_OPT_CALL of the four options. */
+int override_add(const char *cmd, const char *opt, const char *v, void *dst);
+#define OVERRIDE_OPTION(nm, ov)						\
+	{ .name = (nm), .kind = CLI_OPT_CALL, .dst = (ov),		\
+	  .call = override_add }
+#define OVERRIDE_OPTIONS(ov)						\
+	OVERRIDE_OPTION("--friction", ov),				\
+	OVERRIDE_OPTION("--load-at", ov),				\
+	OVERRIDE_OPTION("--load-direction", ov),			\
+	OVERRIDE_OPTION("--set", ov)
 /* Load the wall file with the overrides applied.  Returns 0, or the
  * exit status (2) after printing the message. */
 int override_load(const char *cmd, const char *path, struct overrides *ov,

@@ -12,30 +12,12 @@
 #include <unistd.h>
 
 #include "slipwall/history.h"
+#include "slipwall/sys.h"
 
 #define HISTORY_HEADER                                                      \
 	"session\trun\twall\twhat\tmu_bed\tmu_head\tdepth\tanywhere\tload\t" \
 	"x\ty\tdx\tdy\tsamples\taccepted\tp05\tp05_lo\tp05_hi\tp50\tp95\tfile\n"
 #define HISTORY_COLS 21
-
-/* mkdir -p */
-static int history_mkdirs(const char *dir)
-{
-	char p[PATH_MAX];
-	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
-		return -1;
-	for (char *s = p + 1; *s; s++) {
-		if (*s != '/')
-			continue;
-		*s = 0;
-		if (mkdir(p, 0777) && errno != EEXIST)
-			return -1;
-		*s = '/';
-	}
-	if (mkdir(p, 0777) && errno != EEXIST)
-		return -1;
-	return 0;
-}
 
 int history_runs_dir(char *out, size_t len, char *err)
 {
@@ -58,7 +40,7 @@ int history_runs_dir(char *out, size_t len, char *err)
 		sw_fail(err, SW_EIO, "the runs directory's path is too long");
 		return -1;
 	}
-	if (history_mkdirs(out)) {
+	if (sys_mkdir_p(out, NULL, 0)) {
 		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", out,
 			strerror(errno));
 		return -1;

@@ -72,6 +72,7 @@
 
 #include "lp.h"
 #include "slipwall/status.h"
+#include "slipwall/sys.h"
 
 struct lp {
 	glp_prob *P;
@@ -117,12 +118,6 @@ static long fault_every;		/* 0: off */
 static enum lp_status fault_as;		/* LP_FAILED or LP_ERROR */
 static _Thread_local long tl_fault_count;
 
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 static _Thread_local double tl_gap;
 static _Thread_local lp_progress_fn tl_progress;	/* lp_thread_progress */
 static _Thread_local void *tl_progress_ctx;
@@ -145,9 +140,9 @@ static void mip_callback(glp_tree *T, void *info)
 	if (r == GLP_IBINGO || r == GLP_ISELECT || r == GLP_IBRANCH)
 		tl_gap = glp_ios_mip_gap(T);
 	/* and, about once a second, the progress hook */
-	if (!tl_progress || r != GLP_ISELECT || now() - tl_progress_last < 1)
+	if (!tl_progress || r != GLP_ISELECT || sys_now() - tl_progress_last < 1)
 		return;
-	tl_progress_last = now();
+	tl_progress_last = sys_now();
 	glp_prob *P = glp_ios_get_prob(T);
 	int best = glp_ios_best_node(T);
 	progress(glp_mip_status(P) == GLP_FEAS ? glp_mip_obj_val(P) : NAN,
@@ -161,8 +156,8 @@ static int term_hook(void *info, const char *s)
 	if (tl_in_simplex && stop_requested())
 		longjmp(tl_jump, 2);	/* see "Interruption" above */
 	/* every half second of a long solve (the lines come every tenth) */
-	if (tl_in_simplex && tl_progress && now() - tl_progress_last >= 0.5) {
-		tl_progress_last = now();
+	if (tl_in_simplex && tl_progress && sys_now() - tl_progress_last >= 0.5) {
+		tl_progress_last = sys_now();
 		progress(NAN, NAN);
 	}
 	/* GLPK's allocator's words (env/alloc.c); the error's last line is
@@ -595,12 +590,12 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	tl_in_call = 1;
 	if (fault)	/* an injected error, through GLPK's error path */
 		glp_error("slipwall: injected fault (SLIPWALL_LP_FAULT)\n");
-	double t0 = now();
+	double t0 = sys_now();
 	int held = p->held && m == LP_DUAL;
 	p->held = 0;
 	if (held && held_optimal(p)) {
 		tl_in_call = 0;
-		tl_seconds += now() - t0;
+		tl_seconds += sys_now() - t0;
 		p->last_iters = 0;
 		p->held = 1;
 		tl_solves++;
@@ -618,7 +613,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	}
 	tl_in_call = 0;
 	tl_in_simplex = 0;
-	tl_seconds += now() - t0;
+	tl_seconds += sys_now() - t0;
 	p->last_iters = glp_get_it_cnt(p->P) - it0;
 	tl_solves++;
 	tl_iterations += p->last_iters;
@@ -912,7 +907,7 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	ip.clq_cuts = GLP_ON;
 	ip.cb_func = mip_callback;
 	tl_gap = NAN;
-	tl_progress_last = now();
+	tl_progress_last = sys_now();
 	rc = glp_intopt(p->P, &ip);
 	tl_in_call = 0;
 	int st = glp_mip_status(p->P);
@@ -932,6 +927,5 @@ enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap)
 	return LP_MIP_FAILED;
 }
 
-double lp_mip_obj(const struct lp *p) { return glp_mip_obj_val(p->P); }
 double lp_mip_col(const struct lp *p, int col) { return glp_mip_col_val(p->P, col + 1); }
 double lp_mip_row(const struct lp *p, int row) { return glp_mip_row_val(p->P, row + 1); }

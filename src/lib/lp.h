@@ -159,9 +159,8 @@ void lp_set_binary(struct lp *p, int col);
 enum lp_mip_status { LP_MIP_OPTIMAL, LP_MIP_FEASIBLE, LP_MIP_NOFEASIBLE,
 		     LP_MIP_FAILED };
 /* time_limit in seconds; *gap gets the relative MIP gap at the end.
- * Values are read with lp_mip_col / lp_mip_obj. */
+ * Values are read with lp_mip_col and lp_mip_row. */
 enum lp_mip_status lp_solve_mip(struct lp *p, double time_limit, double *gap);
-double lp_mip_obj(const struct lp *p);
 double lp_mip_col(const struct lp *p, int col);
 double lp_mip_row(const struct lp *p, int row);
 

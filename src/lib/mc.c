@@ -47,6 +47,7 @@
 
 #include "lp.h"
 #include "slipwall/mc.h"
+#include "slipwall/sys.h"
 
 /* Estimate: seconds of one sample at 100 interfaces, and the power of
  * the interfaces.  Measured on 23 November 2026 (`run -n 20`, or -n 1
@@ -213,13 +214,6 @@ static void deadline(struct timespec *ts, int ms)
 	}
 }
 
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 static void *worker(void *arg)
 {
 	struct mc *m = arg;
@@ -229,7 +223,7 @@ static void *worker(void *arg)
 #endif
 	pthread_mutex_lock(&m->mu);
 	int id = m->nextid++;
-	m->since[id] = now();
+	m->since[id] = sys_now();
 	pthread_mutex_unlock(&m->mu);
 	/* a stop reaches the LPs too: a sample in progress is abandoned
 	 * (on a large wall one LP can take minutes) */
@@ -255,7 +249,7 @@ static void *worker(void *arg)
 		}
 		long k = m->next_index++;
 		if (m->since[id] == 0)
-			m->since[id] = now();
+			m->since[id] = sys_now();
 		pthread_mutex_unlock(&m->mu);
 		long i = m->cfg.first + k * m->cfg.stride;
 
@@ -265,12 +259,12 @@ static void *worker(void *arg)
 		else
 			mc_positions(w, m->cfg.seed, (unsigned long)i,
 				     m->cfg.depth, it.xi);
-		double t0 = now();
+		double t0 = sys_now();
 		sample_run(ws, it.xi, &m->cfg.opts, &r);
 		if (lp_thread_interrupted())
 			break;	/* incomplete: never reported (mc_pop ends
 				 * at its index once the workers are gone) */
-		it.seconds = now() - t0;
+		it.seconds = sys_now() - t0;
 		it.index = i;
 		it.status = r.status;
 		it.lambda_lpmax = r.lambda_lpmax;
@@ -389,7 +383,7 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 
 void mc_progress(struct mc *m, struct mc_progress *p)
 {
-	double t = now();
+	double t = sys_now();
 	memset(p, 0, sizeof *p);
 	pthread_mutex_lock(&m->mu);
 	for (int k = 0; k < m->nth; k++) {

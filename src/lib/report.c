@@ -1,14 +1,16 @@
 /*
- * report.c - the paper's figures (cairo) and a Markdown summary; see
- * report.h for what is written and docs/report.md for how to read it.
+ * report.c - the paper's figures (cairo); see report.h for what is
+ * written and docs/report.md for how to read it.  The plotting kit
+ * (axes, text, colours, the SVG text layer) is plot.c; report.md is
+ * written by report_md.c.
  *
- * Who calls it: the `report` command (cmd_report.c) and, later, the
- * workbench.  Flow: report_write() computes everything once into a
- * `struct rctx` (sorted loads, summaries, KS test, fits, the common
- * classes, the plot ranges), then for each figure and each format opens
- * a cairo surface, calls the figure's draw function and closes it.  The
- * draw functions only read the rctx: the three formats are the same
- * drawing.
+ * Who calls it: the `report` and `sweep` commands.  Flow: report_write()
+ * computes everything once into a `struct rctx` (report_fig.h: sorted
+ * loads, summaries, KS test, fits, the common classes, the plot
+ * ranges), then for each figure and each format opens a cairo surface,
+ * calls the figure's draw function and closes it, all in a staging
+ * directory published at the end.  The draw functions only read the
+ * rctx: the three formats are the same drawing.
  *
  * Drawing is in points (1/72 in): a figure is 480 pt wide (about 170 mm,
  * an A4 text width) with 10-12 pt text, so it reads in print at its
@@ -17,21 +19,15 @@
  * vision deficiencies): the model in vermillion and the tests in black,
  * as in the paper, the single-solution methods in blue, bluish green and
  * reddish purple, intervals in orange.
- *
- * The SVG text layer: cairo 1.16 writes text into SVG as glyph outlines,
- * so the numbers on a figure could not be searched or checked.  Every
- * label goes through fig_text(), which also records it; after the SVG
- * surface is finished, the recorded labels are spliced in before </svg>
- * as transparent <text> elements at the same place and size.
  */
 #include <cairo.h>
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <dirent.h>
 #include <errno.h>
+#include <limits.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,237 +37,15 @@
 
 #include <gsl/gsl_cdf.h>
 
+#include "report_fig.h"
 #include "slipwall/report.h"
+#include "slipwall/sys.h"
 #include "slipwall/stats.h"
 #include "slipwall/text.h"
 
-#define FIG_W 480.0		/* figure width, pt */
-#define PLOT_H 300.0		/* a single plot figure's height, pt */
 #define NGRID 400		/* points of a density curve */
 #define NCONV 400		/* checkpoints of the convergence curve */
-#define MAX_PANELS 6
 
-/* ---- colours ------------------------------------------------------------ */
-
-struct rgb {
-	double r, g, b;
-};
-/* Okabe & Ito (2008), "Color Universal Design" */
-static const struct rgb C_BLACK = {0, 0, 0};
-static const struct rgb C_ORANGE = {0.902, 0.624, 0.0};
-static const struct rgb C_SKY = {0.337, 0.706, 0.914};
-static const struct rgb C_GREEN = {0.0, 0.620, 0.451};
-static const struct rgb C_BLUE = {0.0, 0.447, 0.698};
-static const struct rgb C_VERMILLION = {0.835, 0.369, 0.0};
-static const struct rgb C_PURPLE = {0.800, 0.475, 0.655};
-static const struct rgb C_GREY = {0.55, 0.55, 0.55};
-
-#define C_MODEL C_VERMILLION
-#define C_TESTS C_BLACK
-
-static void set_rgb(cairo_t *cr, struct rgb c, double alpha)
-{
-	cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
-}
-
-/* ---- a figure being drawn, and its text layer ---------------------------- */
-
-struct label {
-	char *s;
-	double x, y, size, angle;	/* baseline start, pt, degrees */
-	int bold;
-};
-
-struct fig {
-	cairo_t *cr;
-	double w, h;
-	struct label *lab;
-	int nlab, caplab;
-};
-
-static void fig_clear_labels(struct fig *f)
-{
-	for (int i = 0; i < f->nlab; i++)
-		free(f->lab[i].s);
-	free(f->lab);
-	f->lab = NULL;
-	f->nlab = f->caplab = 0;
-}
-
-/* Draw text at (x, y) anchored at (ax, ay) of its box (0 left/top,
- * 0.5 centre, 1 right/bottom), rotated by angle degrees
- * (counter-clockwise on the page), and record it for the text layer. */
-static void fig_text(struct fig *f, double x, double y, double size, int bold,
-		     double ax, double ay, double angle, const char *fmt, ...)
-	__attribute__((format(printf, 9, 10)));
-static void fig_text(struct fig *f, double x, double y, double size, int bold,
-		     double ax, double ay, double angle, const char *fmt, ...)
-{
-	char buf[512];
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(buf, sizeof buf, fmt, ap);
-	va_end(ap);
-	cairo_t *cr = f->cr;
-	cairo_save(cr);
-	cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-			       bold ? CAIRO_FONT_WEIGHT_BOLD :
-			       CAIRO_FONT_WEIGHT_NORMAL);
-	cairo_set_font_size(cr, size);
-	cairo_text_extents_t te;
-	cairo_font_extents_t fe;
-	cairo_text_extents(cr, buf, &te);
-	cairo_font_extents(cr, &fe);
-	/* the box: advance wide, ascent + descent high */
-	double dx = -ax * te.x_advance;
-	double dy = fe.ascent - ay * (fe.ascent + fe.descent);
-	double th = -angle * M_PI / 180;
-	cairo_translate(cr, x, y);
-	cairo_rotate(cr, th);
-	cairo_move_to(cr, dx, dy);
-	cairo_show_text(cr, buf);
-	cairo_restore(cr);
-	if (f->nlab == f->caplab) {
-		f->caplab = f->caplab ? 2 * f->caplab : 32;
-		f->lab = sw_xrealloc(f->lab, sizeof *f->lab * (size_t)f->caplab);
-	}
-	struct label *l = &f->lab[f->nlab++];
-	l->s = sw_xstrdup(buf);
-	l->x = x + dx * cos(th) - dy * sin(th);
-	l->y = y + dx * sin(th) + dy * cos(th);
-	l->size = size;
-	l->angle = -angle;
-	l->bold = bold;
-}
-
-static void xml_escape(FILE *o, const char *text)
-{
-	/* no control character: XML 1.0 forbids most of them */
-	char *clean = text_clean(text);
-	for (const char *s = clean; *s; s++) {
-		switch (*s) {
-		case '&':
-			fputs("&amp;", o);
-			break;
-		case '<':
-			fputs("&lt;", o);
-			break;
-		case '>':
-			fputs("&gt;", o);
-			break;
-		case '"':
-			fputs("&quot;", o);
-			break;
-		default:
-			fputc(*s, o);
-		}
-	}
-	free(clean);
-}
-
-/* Splice the recorded labels into the SVG file PATH before its </svg>;
- * errors name NAME (the figure's final name). */
-static enum sw_status svg_add_text_layer(const char *path, const char *name,
-					 const struct fig *f, char *err)
-{
-	FILE *in = fopen(path, "rb");
-	if (!in)
-		return sw_fail(err, SW_EIO, "%s: cannot read back: %s", name,
-			       strerror(errno));
-	size_t cap = 1 << 16, n = 0, got;
-	char *buf = sw_xmalloc(cap);
-	while ((got = fread(buf + n, 1, cap - n, in)) > 0) {
-		n += got;
-		if (n == cap)
-			buf = sw_xrealloc(buf, cap *= 2);
-	}
-	fclose(in);
-	char *end = NULL;
-	for (size_t i = n >= 6 ? n - 6 + 1 : 0; i-- > 0;)
-		if (!memcmp(buf + i, "</svg>", 6)) {
-			end = buf + i;
-			break;
-		}
-	if (!end) {
-		free(buf);
-		return sw_fail(err, SW_EIO, "%s: cairo wrote no </svg>", name);
-	}
-	FILE *o = fopen(path, "wb");
-	if (!o) {
-		free(buf);
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", name,
-			       strerror(errno));
-	}
-	fwrite(buf, 1, (size_t)(end - buf), o);
-	fprintf(o, "<g id=\"slipwall-text\" fill=\"#000000\" fill-opacity=\"0\" "
-		"font-family=\"DejaVu Sans, sans-serif\">\n");
-	for (int i = 0; i < f->nlab; i++) {
-		const struct label *l = &f->lab[i];
-		fprintf(o, "<text x=\"%.2f\" y=\"%.2f\" font-size=\"%.1f\"%s",
-			l->x, l->y, l->size, l->bold ? " font-weight=\"bold\"" : "");
-		if (l->angle != 0)
-			fprintf(o, " transform=\"rotate(%.1f %.2f %.2f)\"",
-				l->angle, l->x, l->y);
-		fputc('>', o);
-		xml_escape(o, l->s);
-		fputs("</text>\n", o);
-	}
-	fputs("</g>\n", o);
-	fwrite(end, 1, n - (size_t)(end - buf), o);
-	free(buf);
-	int bad = ferror(o);
-	if (fclose(o) || bad)
-		return sw_fail(err, SW_EIO, "%s: cannot write: %s", name,
-			       strerror(errno ? errno : EIO));
-	return SW_OK;
-}
-
-/* ---- what every figure reads --------------------------------------------- */
-
-struct rctx {
-	const struct report_input *in;
-	const struct wall *w;
-	char axis[96];		/* the load axis label */
-	const char *unit;	/* " N" or "" */
-	double *lam;		/* model loads, sorted */
-	size_t n;
-	double *tst;		/* tests, sorted, or NULL */
-	size_t m;
-	struct stats_summary ms, ts;
-	double mmu, msd, tmu, tsd;	/* normal fits */
-	struct stats_ks ks;
-	int ks_ok;
-	double bw;		/* KDE bandwidth */
-	/* common classes of Figs. 8 and 10 */
-	double blo, bw_class;
-	int nb;
-	double *fm, *ft;	/* relative frequencies per class */
-	/* the load range of the distribution plots */
-	double x0, x1;
-	/* the mechanisms (Fig. 6) */
-	int top[MAX_PANELS], ntop;
-	double wx0, wx1, wy0, wy1;	/* the drawn extent, m */
-	double wsize;			/* the blocks' larger extent, m */
-	/* the convergence curve */
-	int nconv;
-	double *cn, *cp, *clo, *chi;	/* n, p05, 99 % band (NaN: none) */
-	/* report_write_sweep: the sweep (the fields above are unused) */
-	const struct report_sweep *sweep;
-};
-
-static int cmp_double(const void *a, const void *b)
-{
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
-}
-
-static double *sorted_copy(const double *x, size_t n)
-{
-	double *s = sw_xmalloc(sizeof(double) * (n ? n : 1));
-	memcpy(s, x, sizeof(double) * n);
-	qsort(s, n, sizeof(double), cmp_double);
-	return s;
-}
 
 void report_load_unit(const struct wall *w, char *axis, size_t len,
 		      const char **unit)
@@ -311,14 +85,8 @@ static void class_freq(const double *x, size_t n, double lo, double w, int nb,
 {
 	for (int k = 0; k < nb; k++)
 		f[k] = 0;
-	for (size_t i = 0; i < n; i++) {
-		int k = (int)floor((x[i] - lo) / w);
-		if (k < 0)
-			k = 0;
-		if (k >= nb)
-			k = nb - 1;
-		f[k] += 1.0 / (double)n;
-	}
+	for (size_t i = 0; i < n; i++)
+		f[stats_bin(x[i], lo, w, nb)] += 1.0 / (double)n;
 }
 
 static void convergence(struct rctx *c)
@@ -340,7 +108,7 @@ static void convergence(struct rctx *c)
 					      (double)K);
 		size_t add = upto - have;
 		memcpy(tmp, lam + have, sizeof(double) * add);
-		qsort(tmp, add, sizeof(double), cmp_double);
+		stats_sort(tmp, add);
 		/* merge s[0..have) and tmp[0..add) from the top */
 		size_t i = have, j = add, o = upto;
 		while (j > 0) {
@@ -448,14 +216,14 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 				       "not a number", i + 1);
 	report_load_unit(in->w, c->axis, sizeof c->axis, &c->unit);
 	c->n = (size_t)in->nlam;
-	c->lam = sorted_copy(in->lam, c->n);
+	c->lam = stats_sorted_copy(in->lam, c->n);
 	stats_summarise(c->lam, c->n, &c->ms);
 	stats_normal_fit(c->lam, c->n, &c->mmu, &c->msd);
 	c->bw = stats_kde_bandwidth(c->lam, c->n);
 	c->tmu = c->tsd = NAN;
 	if (in->tests && in->ntests > 0) {
 		c->m = (size_t)in->ntests;
-		c->tst = sorted_copy(in->tests, c->m);
+		c->tst = stats_sorted_copy(in->tests, c->m);
 		stats_summarise(c->tst, c->m, &c->ts);
 		stats_normal_fit(c->tst, c->m, &c->tmu, &c->tsd);
 		c->ks_ok = stats_ks2(c->lam, c->n, c->tst, c->m, &c->ks) == 0;
@@ -506,258 +274,28 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 	return SW_OK;
 }
 
-/* ---- axes ------------------------------------------------------------------ */
-
-struct axes {
-	double x, y, w, h;	/* the plot box on the page, pt */
-	double x0, x1, y0, y1;	/* the data range */
-};
-
-static double ax_x(const struct axes *a, double v)
-{
-	return a->x + (v - a->x0) / (a->x1 - a->x0) * a->w;
-}
-
-static double ax_y(const struct axes *a, double v)
-{
-	return a->y + a->h - (v - a->y0) / (a->y1 - a->y0) * a->h;
-}
-
-static double nice_step(double range, int target)
-{
-	double raw = range / target;
-	double mag = pow(10, floor(log10(raw)));
-	double r = raw / mag;
-	double s = r <= 1 ? 1 : r <= 2 ? 2 : r <= 2.5 ? 2.5 : r <= 5 ? 5 : 10;
-	return s * mag;
-}
-
-static void tick_label(char *buf, size_t len, double v, double step)
-{
-	if (fabs(v) < step * 1e-9)
-		v = 0;
-	snprintf(buf, len, "%g", v);
-}
-
-/* Frame, grid, ticks and the axis labels; title above. */
-static void axes_draw(struct fig *f, const struct axes *a, const char *xlabel,
-		      const char *ylabel, const char *title, int xticks_int)
-{
-	cairo_t *cr = f->cr;
-	char b[64];
-	double sx = nice_step(a->x1 - a->x0, 6), sy = nice_step(a->y1 - a->y0, 5);
-	if (xticks_int && sx < 1)
-		sx = 1;
-	cairo_set_line_width(cr, 0.5);
-	/* counted loops: a step below the ulp of the values cannot hang */
-	double x_first = ceil(a->x0 / sx - 1e-9) * sx;
-	for (int i = 0; i < 100; i++) {
-		double v = x_first + i * sx;
-		if (v > a->x1 + 1e-9 * sx)
-			break;
-		double x = ax_x(a, v);
-		set_rgb(cr, C_GREY, 0.35);
-		cairo_move_to(cr, x, a->y);
-		cairo_line_to(cr, x, a->y + a->h);
-		cairo_stroke(cr);
-		set_rgb(cr, C_BLACK, 1);
-		cairo_move_to(cr, x, a->y + a->h);
-		cairo_line_to(cr, x, a->y + a->h + 4);
-		cairo_stroke(cr);
-		tick_label(b, sizeof b, v, sx);
-		fig_text(f, x, a->y + a->h + 6, 10, 0, 0.5, 0, 0, "%s", b);
-	}
-	double y_first = ceil(a->y0 / sy - 1e-9) * sy;
-	for (int i = 0; i < 100; i++) {
-		double v = y_first + i * sy;
-		if (v > a->y1 + 1e-9 * sy)
-			break;
-		double y = ax_y(a, v);
-		set_rgb(cr, C_GREY, 0.35);
-		cairo_move_to(cr, a->x, y);
-		cairo_line_to(cr, a->x + a->w, y);
-		cairo_stroke(cr);
-		set_rgb(cr, C_BLACK, 1);
-		cairo_move_to(cr, a->x - 4, y);
-		cairo_line_to(cr, a->x, y);
-		cairo_stroke(cr);
-		tick_label(b, sizeof b, v, sy);
-		fig_text(f, a->x - 6, y, 10, 0, 1, 0.5, 0, "%s", b);
-	}
-	set_rgb(cr, C_BLACK, 1);
-	cairo_set_line_width(cr, 0.8);
-	cairo_rectangle(cr, a->x, a->y, a->w, a->h);
-	cairo_stroke(cr);
-	if (xlabel)
-		fig_text(f, a->x + a->w / 2, a->y + a->h + 21, 11, 0, 0.5, 0, 0,
-			 "%s", xlabel);
-	if (ylabel)
-		fig_text(f, a->x - 56, a->y + a->h / 2, 11, 0, 0.5, 0, 90, "%s",
-			 ylabel);
-	if (title)
-		fig_text(f, a->x, a->y - 6, 12, 1, 0, 1, 0, "%s", title);
-}
-
-static void axes_clip(cairo_t *cr, const struct axes *a)
-{
-	cairo_save(cr);
-	cairo_rectangle(cr, a->x, a->y, a->w, a->h);
-	cairo_clip(cr);
-}
-
-/* A legend in a corner of the plot: where = LG_LEFT | LG_BOTTOM bits
- * (0: top right). */
-#define LG_LEFT 1
-#define LG_BOTTOM 2
-enum lg_style { LG_LINE, LG_THIN, LG_DASH, LG_BAND, LG_BAR };
-struct lg_item {
-	enum lg_style style;
-	struct rgb c;
-	const char *text;
-};
-
-static void set_style(cairo_t *cr, enum lg_style s, struct rgb c)
-{
-	static const double dash[] = {5, 3};
-	set_rgb(cr, c, 1);
-	cairo_set_dash(cr, NULL, 0, 0);
-	switch (s) {
-	case LG_LINE:
-		cairo_set_line_width(cr, 2.4);
-		break;
-	case LG_THIN:
-		cairo_set_line_width(cr, 1.0);
-		break;
-	case LG_DASH:
-		cairo_set_line_width(cr, 1.4);
-		cairo_set_dash(cr, dash, 2, 0);
-		break;
-	default:
-		cairo_set_line_width(cr, 1.0);
-	}
-}
-
-static void legend(struct fig *f, const struct axes *a, const struct lg_item *it,
-		   int n, int where)
-{
-	cairo_t *cr = f->cr;
-	double lh = 13, pad = 5, sw = 22, tw = 0;
-	cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-			       CAIRO_FONT_WEIGHT_NORMAL);
-	cairo_set_font_size(cr, 9.5);
-	for (int i = 0; i < n; i++) {
-		cairo_text_extents_t te;
-		cairo_text_extents(cr, it[i].text, &te);
-		tw = fmax(tw, te.x_advance);
-	}
-	double bw = pad * 3 + sw + tw, bh = pad * 2 + lh * n;
-	double x = where & LG_LEFT ? a->x + 6 : a->x + a->w - bw - 6;
-	double y = where & LG_BOTTOM ? a->y + a->h - bh - 6 : a->y + 6;
-	cairo_set_source_rgba(cr, 1, 1, 1, 0.88);
-	cairo_rectangle(cr, x, y, bw, bh);
-	cairo_fill_preserve(cr);
-	set_rgb(cr, C_GREY, 1);
-	cairo_set_line_width(cr, 0.5);
-	cairo_stroke(cr);
-	for (int i = 0; i < n; i++) {
-		double yy = y + pad + lh * i + lh / 2;
-		if (it[i].style == LG_BAND || it[i].style == LG_BAR) {
-			set_rgb(cr, it[i].c, it[i].style == LG_BAND ? 0.35 : 0.45);
-			cairo_rectangle(cr, x + pad, yy - 4, sw, 8);
-			cairo_fill(cr);
-		} else {
-			set_style(cr, it[i].style, it[i].c);
-			cairo_move_to(cr, x + pad, yy);
-			cairo_line_to(cr, x + pad + sw, yy);
-			cairo_stroke(cr);
-			cairo_set_dash(cr, NULL, 0, 0);
-		}
-		set_rgb(cr, C_BLACK, 1);
-		fig_text(f, x + 2 * pad + sw, yy, 9.5, 0, 0, 0.5, 0, "%s",
-			 it[i].text);
-	}
-}
-
-/* Caption lines under the plot, left-aligned. */
-static void caption(struct fig *f, double y, const char *s)
-{
-	set_rgb(f->cr, C_BLACK, 1);
-	fig_text(f, 14, y, 9.5, 0, 0, 0, 0, "%s", s);
-}
-
-/* A curve y(x) on n points. */
-static void curve(cairo_t *cr, const struct axes *a, const double *x,
-		  const double *y, int n)
-{
-	int pen = 0;
-	for (int i = 0; i < n; i++) {
-		if (!isfinite(y[i])) {
-			pen = 0;
-			continue;
-		}
-		if (pen)
-			cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, y[i]));
-		else
-			cairo_move_to(cr, ax_x(a, x[i]), ax_y(a, y[i]));
-		pen = 1;
-	}
-	cairo_stroke(cr);
-}
-
 /* Class heights h[k] over the classes of c as a step outline (filled
  * when alpha > 0). */
 static void steps(cairo_t *cr, const struct axes *a, const struct rctx *c,
 		  const double *h, double scale, struct rgb col, double alpha,
 		  double lw)
 {
-	double y0 = ax_y(a, 0);
-	cairo_move_to(cr, ax_x(a, c->blo), y0);
+	double y0 = plot_y(a, 0);
+	cairo_move_to(cr, plot_x(a, c->blo), y0);
 	for (int k = 0; k < c->nb; k++) {
 		double xl = c->blo + k * c->bw_class, xr = xl + c->bw_class;
-		cairo_line_to(cr, ax_x(a, xl), ax_y(a, h[k] * scale));
-		cairo_line_to(cr, ax_x(a, xr), ax_y(a, h[k] * scale));
+		cairo_line_to(cr, plot_x(a, xl), plot_y(a, h[k] * scale));
+		cairo_line_to(cr, plot_x(a, xr), plot_y(a, h[k] * scale));
 	}
-	cairo_line_to(cr, ax_x(a, c->blo + c->nb * c->bw_class), y0);
+	cairo_line_to(cr, plot_x(a, c->blo + c->nb * c->bw_class), y0);
 	if (alpha > 0) {
-		set_rgb(cr, col, alpha);
+		plot_rgb(cr, col, alpha);
 		cairo_fill_preserve(cr);
 	}
 	cairo_set_dash(cr, NULL, 0, 0);
-	set_rgb(cr, col, 1);
+	plot_rgb(cr, col, 1);
 	cairo_set_line_width(cr, lw);
 	cairo_stroke(cr);
-}
-
-static double max_of(const double *x, int n)
-{
-	double m = 0;
-	for (int i = 0; i < n; i++)
-		if (isfinite(x[i]) && x[i] > m)
-			m = x[i];
-	return m;
-}
-
-static void fill_white(struct fig *f)
-{
-	cairo_set_source_rgb(f->cr, 1, 1, 1);
-	cairo_paint(f->cr);
-	cairo_set_source_rgb(f->cr, 0, 0, 0);
-}
-
-/* The standard plot box of a one-plot figure with `cap` caption lines. */
-static struct axes plot_box(int cap)
-{
-	struct axes a = {0};
-	a.x = 72;
-	a.y = 30;
-	a.w = FIG_W - a.x - 16;
-	a.h = PLOT_H - a.y - 48 + (cap ? 0 : 0);
-	return a;
-}
-
-static double fig_height(int cap)
-{
-	return PLOT_H + (cap ? 6 + 13 * cap : 0);
 }
 
 /* ---- Fig. 8 (left): relative frequencies -------------------------------- */
@@ -769,36 +307,36 @@ static void draw_frequencies(struct fig *f, const struct rctx *c)
 	a.x0 = c->x0;
 	a.x1 = c->x1;
 	a.y0 = 0;
-	a.y1 = 1.12 * fmax(max_of(c->fm, c->nb), c->ft ? max_of(c->ft, c->nb) : 0);
+	a.y1 = 1.12 * fmax(plot_max(c->fm, c->nb), c->ft ? plot_max(c->ft, c->nb) : 0);
 	if (!(a.y1 > 0))
 		a.y1 = 1;
-	fill_white(f);
-	axes_clip(cr, &a);
+	plot_white(f);
+	plot_clip(cr, &a);
 	steps(cr, &a, c, c->fm, 1, C_MODEL, 0.35, 1.6);
 	if (c->ft)
 		steps(cr, &a, c, c->ft, 1, C_TESTS, 0, 1.6);
 	cairo_restore(cr);
-	axes_draw(f, &a, c->axis, "relative frequency",
+	plot_axes(f, &a, c->axis, "relative frequency",
 		  c->m ? "Relative frequencies: model and tests" :
 		  "Relative frequencies: model (no tests)", 0);
 	char lm[96], lt[96];
 	snprintf(lm, sizeof lm, "model (%zu samples)", c->n);
 	snprintf(lt, sizeof lt, "tests (%zu)", c->m);
 	struct lg_item it[2] = {{LG_BAR, C_MODEL, lm}, {LG_THIN, C_TESTS, lt}};
-	legend(f, &a, it, c->m ? 2 : 1, c->ms.p50 > (c->x0 + c->x1) / 2);
+	plot_legend(f, &a, it, c->m ? 2 : 1, c->ms.p50 > (c->x0 + c->x1) / 2);
 	double y = PLOT_H + 6;
 	char s[256];
 	snprintf(s, sizeof s, "Classes of width %.4g%s from %.5g%s (%d classes, "
 		 "Freedman-Diaconis width of the %s).", c->bw_class, c->unit,
 		 c->blo, c->unit, c->nb, c->m >= 2 ? "tests" : "model");
-	caption(f, y, s);
+	plot_caption(f, y, s);
 	snprintf(s, sizeof s, "Model: mean %.5g%s, std %.4g%s.", c->ms.mean,
 		 c->unit, c->ms.std, c->unit);
 	if (c->m)
 		snprintf(s + strlen(s), sizeof s - strlen(s),
 			 "  Tests: mean %.5g%s, std %.4g%s.", c->ts.mean,
 			 c->unit, c->ts.std, c->unit);
-	caption(f, y + 13, s);
+	plot_caption(f, y + 13, s);
 }
 
 /* ---- Fig. 8 (centre, right): KDE and normals ------------------------------ */
@@ -821,10 +359,27 @@ static void density_grid(const struct rctx *c, double x0, double x1, double *g,
 	}
 }
 
+/* The model's KDE, and the tests' normal fit (tests) or else the
+ * model's, on the grid g. */
+static void density_curves(cairo_t *cr, const struct axes *a,
+			   const double *g, const double *kde,
+			   const double *nm, const double *nt, int tests)
+{
+	plot_style(cr, LG_LINE, C_MODEL);
+	plot_curve(cr, a, g, kde, NGRID);
+	if (tests) {
+		plot_style(cr, LG_LINE, C_TESTS);
+		plot_curve(cr, a, g, nt, NGRID);
+	} else {
+		plot_style(cr, LG_DASH, C_MODEL);
+		plot_curve(cr, a, g, nm, NGRID);
+	}
+}
+
 static void draw_densities(struct fig *f, const struct rctx *c)
 {
 	cairo_t *cr = f->cr;
-	fill_white(f);
+	plot_white(f);
 	double g[NGRID], kde[NGRID], nm[NGRID], nt[NGRID];
 	density_grid(c, c->x0, c->x1, g, kde, nm, nt);
 	int tests = c->m >= 2 && c->tsd > 0;
@@ -834,26 +389,18 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	a.x0 = c->x0;
 	a.x1 = c->x1;
 	a.y0 = 0;
-	a.y1 = 1.12 * fmax(max_of(kde, NGRID), fmax(tests ? max_of(nt, NGRID) : 0,
-						     max_of(nm, NGRID)));
+	a.y1 = 1.12 * fmax(plot_max(kde, NGRID), fmax(tests ? plot_max(nt, NGRID) : 0,
+						     plot_max(nm, NGRID)));
 	if (!(a.y1 > 0))
 		a.y1 = 1;
-	axes_clip(cr, &a);
-	set_style(cr, LG_LINE, C_MODEL);
-	curve(cr, &a, g, kde, NGRID);
-	if (tests) {
-		set_style(cr, LG_LINE, C_TESTS);
-		curve(cr, &a, g, nt, NGRID);
-	} else {
-		set_style(cr, LG_DASH, C_MODEL);
-		curve(cr, &a, g, nm, NGRID);
-	}
+	plot_clip(cr, &a);
+	density_curves(cr, &a, g, kde, nm, nt, tests);
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
 	snprintf(yl, sizeof yl, "probability density (1/%s)",
 		 *c->unit ? "N" : "unit of λ");
-	axes_draw(f, &a, c->axis, yl, tests ?
+	plot_axes(f, &a, c->axis, yl, tests ?
 		  "Model KDE and best-fit normal of the tests" :
 		  "Model KDE and its best-fit normal (no tests)", 0);
 	char l1[96], l2[96];
@@ -867,7 +414,7 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	struct lg_item it[2] = {{LG_LINE, C_MODEL, l1},
 				{tests ? LG_LINE : LG_DASH,
 				 tests ? C_TESTS : C_MODEL, l2}};
-	legend(f, &a, it, 2, c->ms.p50 > (c->x0 + c->x1) / 2);
+	plot_legend(f, &a, it, 2, c->ms.p50 > (c->x0 + c->x1) / 2);
 
 	/* bottom: both normals grouped in the tests' number of classes */
 	struct axes b = plot_box(0);
@@ -888,10 +435,10 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	b.x0 = c->x0;
 	b.x1 = c->x1;
 	b.y0 = 0;
-	b.y1 = 1.15 * fmax(max_of(pm, k), max_of(pt, k));
+	b.y1 = 1.15 * fmax(plot_max(pm, k), plot_max(pt, k));
 	if (!(b.y1 > 0))
 		b.y1 = 1;
-	axes_clip(cr, &b);
+	plot_clip(cr, &b);
 	for (int pass = 0; pass < (tests ? 2 : 1); pass++) {
 		const double *p = pass ? pt : pm;
 		double off = tests ? (pass ? 0.5 : 0.08) : 0.08;
@@ -900,23 +447,23 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 			if (!isfinite(p[i]))
 				continue;
 			double l = c->x0 + (i + off) * w;
-			cairo_rectangle(cr, ax_x(&b, l), ax_y(&b, p[i]),
-					ax_x(&b, l + bwid * w) - ax_x(&b, l),
-					ax_y(&b, 0) - ax_y(&b, p[i]));
+			cairo_rectangle(cr, plot_x(&b, l), plot_y(&b, p[i]),
+					plot_x(&b, l + bwid * w) - plot_x(&b, l),
+					plot_y(&b, 0) - plot_y(&b, p[i]));
 		}
-		set_rgb(cr, pass ? C_TESTS : C_MODEL, pass ? 0.75 : 0.6);
+		plot_rgb(cr, pass ? C_TESTS : C_MODEL, pass ? 0.75 : 0.6);
 		cairo_fill(cr);
 	}
 	cairo_restore(cr);
 	char title[128];
 	snprintf(title, sizeof title, "Best-fit normals in %d classes%s",
 		 k, tests ? " (the number of tests)" : "");
-	axes_draw(f, &b, c->axis, "probability per class", title, 0);
+	plot_axes(f, &b, c->axis, "probability per class", title, 0);
 	char l3[96], l4[96];
 	snprintf(l3, sizeof l3, "model, normal (%.4g, %.3g)", c->mmu, c->msd);
 	snprintf(l4, sizeof l4, "tests, normal (%.4g, %.3g)", c->tmu, c->tsd);
 	struct lg_item it2[2] = {{LG_BAR, C_MODEL, l3}, {LG_BAR, C_TESTS, l4}};
-	legend(f, &b, it2, tests ? 2 : 1, c->ms.p50 > (c->x0 + c->x1) / 2);
+	plot_legend(f, &b, it2, tests ? 2 : 1, c->ms.p50 > (c->x0 + c->x1) / 2);
 	free(pm);
 	free(pt);
 }
@@ -925,65 +472,65 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 
 static void ecdf(cairo_t *cr, const struct axes *a, const double *x, size_t n)
 {
-	cairo_move_to(cr, ax_x(a, a->x0), ax_y(a, 0));
+	cairo_move_to(cr, plot_x(a, a->x0), plot_y(a, 0));
 	for (size_t i = 0; i < n; i++) {
-		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, (double)i / (double)n));
+		cairo_line_to(cr, plot_x(a, x[i]), plot_y(a, (double)i / (double)n));
 		while (i + 1 < n && x[i + 1] == x[i])
 			i++;
-		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, (double)(i + 1) /
+		cairo_line_to(cr, plot_x(a, x[i]), plot_y(a, (double)(i + 1) /
 						    (double)n));
 	}
-	cairo_line_to(cr, ax_x(a, a->x1), ax_y(a, 1));
+	cairo_line_to(cr, plot_x(a, a->x1), plot_y(a, 1));
 	cairo_stroke(cr);
 }
 
 static void draw_cumulative(struct fig *f, const struct rctx *c)
 {
 	cairo_t *cr = f->cr;
-	fill_white(f);
+	plot_white(f);
 	struct axes a = plot_box(4);
 	a.x0 = c->x0;
 	a.x1 = c->x1;
 	a.y0 = 0;
 	a.y1 = 1.04;
-	axes_clip(cr, &a);
-	set_style(cr, LG_LINE, C_MODEL);
+	plot_clip(cr, &a);
+	plot_style(cr, LG_LINE, C_MODEL);
 	cairo_set_line_width(cr, 2);
 	ecdf(cr, &a, c->lam, c->n);
 	if (c->m) {
-		set_style(cr, LG_THIN, C_TESTS);
+		plot_style(cr, LG_THIN, C_TESTS);
 		cairo_set_line_width(cr, 1.4);
 		ecdf(cr, &a, c->tst, c->m);
 	}
 	cairo_restore(cr);
-	axes_draw(f, &a, c->axis, "relative cumulative frequency",
+	plot_axes(f, &a, c->axis, "relative cumulative frequency",
 		  c->m ? "Relative cumulative frequencies: model and tests" :
 		  "Relative cumulative frequencies: model (no tests)", 0);
 	char lm[96], lt[96];
 	snprintf(lm, sizeof lm, "model (%zu)", c->n);
 	snprintf(lt, sizeof lt, "tests (%zu)", c->m);
 	struct lg_item it[2] = {{LG_LINE, C_MODEL, lm}, {LG_THIN, C_TESTS, lt}};
-	legend(f, &a, it, c->m ? 2 : 1, 1);
+	plot_legend(f, &a, it, c->m ? 2 : 1, 1);
 	double y = PLOT_H + 6;
 	char s[256];
 	if (c->ks_ok) {
 		snprintf(s, sizeof s, "Two-sample Kolmogorov-Smirnov test, x = "
 			 "model, y = tests, %s p-values:", c->ks.exact ? "exact" :
 			 "asymptotic");
-		caption(f, y, s);
+		plot_caption(f, y, s);
 		snprintf(s, sizeof s, "D = %.4g (D+ = %.4g, D- = %.4g); "
 			 "p two-sided = %.4g (H1: they differ)", c->ks.d,
 			 c->ks.d_plus, c->ks.d_minus, c->ks.p_two_sided);
-		caption(f, y + 13, s);
+		plot_caption(f, y + 13, s);
 		snprintf(s, sizeof s, "p greater = %.4g (H1: model < tests)",
 			 c->ks.p_greater);
-		caption(f, y + 26, s);
+		plot_caption(f, y + 26, s);
 		snprintf(s, sizeof s, "p less = %.4g (H0: model <= tests; "
 			 "the paper's 0.994 is this one)", c->ks.p_less);
-		caption(f, y + 39, s);
+		plot_caption(f, y + 39, s);
 	} else {
-		caption(f, y, "No Kolmogorov-Smirnov test: the wall has no "
-			"experimental loads.");
+		plot_caption(f, y, "No Kolmogorov-Smirnov test: the wall has no "
+			     "experimental loads.");
 	}
 }
 
@@ -998,7 +545,7 @@ static void dkw_edge(cairo_t *cr, const struct axes *a, const double *x,
 		     size_t n, double eps, int upper)
 {
 	double f0 = upper ? fmin(1, eps) : 0;
-	cairo_line_to(cr, ax_x(a, a->x0), ax_y(a, f0));
+	cairo_line_to(cr, plot_x(a, a->x0), plot_y(a, f0));
 	for (size_t i = 0; i < n; i++) {
 		double before = (double)i / (double)n;
 		while (i + 1 < n && x[i + 1] == x[i])
@@ -1006,10 +553,10 @@ static void dkw_edge(cairo_t *cr, const struct axes *a, const double *x,
 		double after = (double)(i + 1) / (double)n;
 		before = upper ? fmin(1, before + eps) : fmax(0, before - eps);
 		after = upper ? fmin(1, after + eps) : fmax(0, after - eps);
-		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, before));
-		cairo_line_to(cr, ax_x(a, x[i]), ax_y(a, after));
+		cairo_line_to(cr, plot_x(a, x[i]), plot_y(a, before));
+		cairo_line_to(cr, plot_x(a, x[i]), plot_y(a, after));
 	}
-	cairo_line_to(cr, ax_x(a, a->x1), ax_y(a, upper ? 1 : fmax(0, 1 - eps)));
+	cairo_line_to(cr, plot_x(a, a->x1), plot_y(a, upper ? 1 : fmax(0, 1 - eps)));
 }
 
 static void draw_fragility(struct fig *f, const struct rctx *c)
@@ -1017,13 +564,13 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 	cairo_t *cr = f->cr;
 	double eps = stats_dkw_eps(c->n, 0.99);
 	double dl = c->w->design_load;
-	fill_white(f);
+	plot_white(f);
 	struct axes a = plot_box(3);
 	a.x0 = c->x0;
 	a.x1 = c->x1;
 	a.y0 = 0;
 	a.y1 = 1.04;
-	axes_clip(cr, &a);
+	plot_clip(cr, &a);
 	/* the band: the upper edge left to right, the lower edge back */
 	cairo_new_path(cr);
 	dkw_edge(cr, &a, c->lam, c->n, eps, 1);
@@ -1041,11 +588,11 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 		i -= 2;
 	}
 	cairo_close_path(cr);
-	set_rgb(cr, C_ORANGE, 0.35);
+	plot_rgb(cr, C_ORANGE, 0.35);
 	cairo_fill(cr);
 	cairo_path_destroy(up);
 	cairo_path_destroy(down);
-	set_style(cr, LG_LINE, C_MODEL);
+	plot_style(cr, LG_LINE, C_MODEL);
 	cairo_set_line_width(cr, 2);
 	ecdf(cr, &a, c->lam, c->n);
 	double p = NAN, lo = NAN, hi = NAN;
@@ -1053,18 +600,18 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 		size_t k = stats_count_le(c->lam, c->n, dl);
 		p = (double)k / (double)c->n;
 		stats_binomial_ci(k, c->n, 0.99, &lo, &hi);
-		set_style(cr, LG_DASH, C_BLUE);
-		cairo_move_to(cr, ax_x(&a, dl), ax_y(&a, 0));
-		cairo_line_to(cr, ax_x(&a, dl), ax_y(&a, 1.04));
+		plot_style(cr, LG_DASH, C_BLUE);
+		cairo_move_to(cr, plot_x(&a, dl), plot_y(&a, 0));
+		cairo_line_to(cr, plot_x(&a, dl), plot_y(&a, 1.04));
 		cairo_stroke(cr);
 		cairo_set_dash(cr, NULL, 0, 0);
 		cairo_set_line_width(cr, 3);
-		cairo_move_to(cr, ax_x(&a, dl), ax_y(&a, lo));
-		cairo_line_to(cr, ax_x(&a, dl), ax_y(&a, hi));
+		cairo_move_to(cr, plot_x(&a, dl), plot_y(&a, lo));
+		cairo_line_to(cr, plot_x(&a, dl), plot_y(&a, hi));
 		cairo_stroke(cr);
 	}
 	cairo_restore(cr);
-	axes_draw(f, &a, c->axis, "probability of collapse", "Fragility: "
+	plot_axes(f, &a, c->axis, "probability of collapse", "Fragility: "
 		  "P(collapse load <= load)", 0);
 	char lm[96], lb[96], ld[96];
 	snprintf(lm, sizeof lm, "model: empirical CDF (%zu)", c->n);
@@ -1072,15 +619,15 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 	snprintf(ld, sizeof ld, "design load, 99 %% interval");
 	struct lg_item it[3] = {{LG_LINE, C_MODEL, lm}, {LG_BAND, C_ORANGE, lb},
 				{LG_DASH, C_BLUE, ld}};
-	legend(f, &a, it, dl > 0 ? 3 : 2, LG_BOTTOM);
+	plot_legend(f, &a, it, dl > 0 ? 3 : 2, LG_BOTTOM);
 	double y = PLOT_H + 6;
 	char s[256];
 	snprintf(s, sizeof s, "The share of the %zu accepted samples whose "
 		 "collapse load is at most the load.", c->n);
-	caption(f, y, s);
+	plot_caption(f, y, s);
 	snprintf(s, sizeof s, "Band: +-%.4g (Dvoretzky-Kiefer-Wolfowitz): "
 		 "the true curve lies in it at every load, at 99 %%.", eps);
-	caption(f, y + 13, s);
+	plot_caption(f, y + 13, s);
 	if (dl > 0)
 		snprintf(s, sizeof s, "Design load %.5g%s: P = %.4g, 99 %% "
 			 "interval [%.4g, %.4g] (exact binomial).", dl, c->unit,
@@ -1088,7 +635,7 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 	else
 		snprintf(s, sizeof s, "No design load (analysis.design_load) "
 			 "in the wall file.");
-	caption(f, y + 26, s);
+	plot_caption(f, y + 26, s);
 }
 
 /* ---- Fig. 10: the model against the single solutions ---------------------- */
@@ -1115,106 +662,33 @@ static void method_dash(cairo_t *cr, const char *m)
 		cairo_set_dash(cr, NULL, 0, 0);
 }
 
-static void draw_single(struct fig *f, const struct rctx *c)
+/* Fig. 10: the labels of the single solutions' lines, above the plot,
+ * staggered when close. */
+static void single_labels(struct fig *f, const struct rctx *c,
+			  const struct axes *pa)
 {
-	cairo_t *cr = f->cr;
 	const struct report_input *in = c->in;
-	fill_white(f);
-	struct axes a = plot_box(3);
-	a.y += 14;	/* room for the line labels */
-	a.h -= 14;
-	double lo = c->x0, hi = c->x1;
-	for (int i = 0; i < in->nsol; i++)
-		if (in->sol[i].found && isfinite(in->sol[i].lambda)) {
-			lo = fmin(lo, in->sol[i].lambda);
-			hi = fmax(hi, in->sol[i].lambda);
-		}
-	double span = hi - lo;
-	a.x0 = fmax(0, lo - (lo < c->x0 ? 0.05 * span : 0));
-	a.x1 = hi + (hi > c->x1 ? 0.08 * span : 0);
-	double g[NGRID], kde[NGRID], nm[NGRID], nt[NGRID];
-	density_grid(c, a.x0, a.x1, g, kde, nm, nt);
-	int tests = c->m >= 2 && c->tsd > 0;
-	double scale = 1 / c->bw_class;	/* relative frequency -> density */
-	a.y0 = 0;
-	a.y1 = 1.12 * fmax(fmax(max_of(kde, NGRID), max_of(c->fm, c->nb) * scale),
-			   fmax(tests ? max_of(nt, NGRID) : max_of(nm, NGRID),
-				c->ft ? max_of(c->ft, c->nb) * scale : 0));
-	if (!(a.y1 > 0))
-		a.y1 = 1;
-
-	axes_clip(cr, &a);
-	/* the 99 % interval of the characteristic values */
-	if (c->m && c->ts.has_ci) {
-		set_rgb(cr, C_GREY, 0.25);
-		cairo_rectangle(cr, ax_x(&a, c->ts.p05_lo), a.y,
-				ax_x(&a, c->ts.p05_hi) - ax_x(&a, c->ts.p05_lo),
-				a.h);
-		cairo_fill(cr);
-	}
-	if (c->ms.has_ci) {
-		set_rgb(cr, C_ORANGE, 0.35);
-		cairo_rectangle(cr, ax_x(&a, c->ms.p05_lo), a.y,
-				fmax(ax_x(&a, c->ms.p05_hi) -
-				     ax_x(&a, c->ms.p05_lo), 1), a.h);
-		cairo_fill(cr);
-	}
-	steps(cr, &a, c, c->fm, scale, C_MODEL, 0, 0.8);
-	if (c->ft)
-		steps(cr, &a, c, c->ft, scale, C_TESTS, 0, 0.8);
-	set_style(cr, LG_LINE, C_MODEL);
-	curve(cr, &a, g, kde, NGRID);
-	if (tests) {
-		set_style(cr, LG_LINE, C_TESTS);
-		curve(cr, &a, g, nt, NGRID);
-	} else {
-		set_style(cr, LG_DASH, C_MODEL);
-		curve(cr, &a, g, nm, NGRID);
-	}
-	/* p05 */
-	set_style(cr, LG_DASH, C_ORANGE);
-	cairo_set_line_width(cr, 1.6);
-	cairo_move_to(cr, ax_x(&a, c->ms.p05), a.y);
-	cairo_line_to(cr, ax_x(&a, c->ms.p05), a.y + a.h);
-	cairo_stroke(cr);
-	/* the single solutions */
-	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
-		if (!s->found || !isfinite(s->lambda))
-			continue;
-		set_style(cr, LG_LINE, *method_colour(s->method));
-		cairo_set_line_width(cr, 2.2);
-		method_dash(cr, s->method);
-		double x = ax_x(&a, s->lambda);
-		x = fmin(fmax(x, a.x + 1), a.x + a.w - 1);
-		cairo_move_to(cr, x, a.y);
-		cairo_line_to(cr, x, a.y + a.h);
-		cairo_stroke(cr);
-	}
-	cairo_set_dash(cr, NULL, 0, 0);
-	cairo_restore(cr);
-	char yl[64];
-	snprintf(yl, sizeof yl, "probability density (1/%s)",
-		 *c->unit ? "N" : "unit of λ");
-	axes_draw(f, &a, c->axis, yl, NULL, 0);
-	fig_text(f, a.x, 16, 12, 1, 0, 1, 0, "%s",
-		 "The model against the single-solution methods");
-	/* labels of the vertical lines, above the plot, staggered when close */
+	const struct axes a = *pa;
 	double lastx = -1e9;
 	int row = 0;
 	for (int i = 0; i < in->nsol; i++) {
 		const struct report_solution *s = &in->sol[i];
 		if (!s->found || !isfinite(s->lambda))
 			continue;
-		double x = fmin(fmax(ax_x(&a, s->lambda), a.x + 1), a.x + a.w - 1);
+		double x = fmin(fmax(plot_x(&a, s->lambda), a.x + 1), a.x + a.w - 1);
 		row = fabs(x - lastx) < 120 ? row + 1 : 0;
 		lastx = x;
-		set_rgb(f->cr, *method_colour(s->method), 1);
+		plot_rgb(f->cr, *method_colour(s->method), 1);
 		double ax = x > a.x + a.w - 100 ? 1 : x < a.x + 100 ? 0 : 0.5;
-		fig_text(f, x, a.y - 3 - 12 * (row % 2), 9.5, 1, ax, 1, 0,
-			 "%s %.5g%s", s->method, s->lambda, c->unit);
+		plot_text(f, x, a.y - 3 - 12 * (row % 2), 9.5, 1, ax, 1, 0,
+			  "%s %.5g%s", s->method, s->lambda, c->unit);
 	}
-	/* the legend */
+}
+
+/* Fig. 10's legend; tests: the tests' normal fit is drawn. */
+static void single_legend(struct fig *f, const struct rctx *c,
+			  const struct axes *a, int tests)
+{
 	struct lg_item it[6];
 	int n = 0;
 	char l1[64], l2[64], l3[96];
@@ -1232,9 +706,15 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	if (c->m && c->ts.has_ci)
 		it[n++] = (struct lg_item){LG_BAND, C_GREY,
 					   "tests p05, 99 % interval"};
-	legend(f, &a, it, n, c->ms.p50 > (a.x0 + a.x1) / 2);
+	plot_legend(f, a, it, n, c->ms.p50 > (a->x0 + a->x1) / 2);
 
-	double y = fig_height(3) - 13 * 3;
+}
+
+/* Fig. 10's captions: the two p05 and the solutions not shown. */
+static void single_captions(struct fig *f, const struct rctx *c)
+{
+	const struct report_input *in = c->in;
+	double y = plot_height(3) - 13 * 3;
 	char s[256];
 	if (c->ms.has_ci)
 		snprintf(s, sizeof s, "Model p05 = %.5g%s, 99 %% interval "
@@ -1244,7 +724,7 @@ static void draw_single(struct fig *f, const struct rctx *c)
 		snprintf(s, sizeof s, "Model p05 = %.5g%s, no 99 %% interval "
 			 "(needs at least 90 samples, has %zu).", c->ms.p05,
 			 c->unit, c->n);
-	caption(f, y, s);
+	plot_caption(f, y, s);
 	if (c->m && c->ts.has_ci)
 		snprintf(s, sizeof s, "Tests p05 = %.5g%s, 99 %% interval "
 			 "[%.5g, %.5g]%s (%zu tests).", c->ts.p05, c->unit,
@@ -1255,7 +735,7 @@ static void draw_single(struct fig *f, const struct rctx *c)
 			 c->unit, c->m);
 	else
 		snprintf(s, sizeof s, "No experimental loads: the model alone.");
-	caption(f, y + 13, s);
+	plot_caption(f, y + 13, s);
 	s[0] = 0;
 	for (int i = 0; i < in->nsol; i++) {
 		const struct report_solution *so = &in->sol[i];
@@ -1267,7 +747,88 @@ static void draw_single(struct fig *f, const struct rctx *c)
 			 (*so->note ? so->note : "not run"));
 	}
 	if (*s)
-		caption(f, y + 26, s);
+		plot_caption(f, y + 26, s);
+}
+
+static void draw_single(struct fig *f, const struct rctx *c)
+{
+	cairo_t *cr = f->cr;
+	const struct report_input *in = c->in;
+	plot_white(f);
+	struct axes a = plot_box(3);
+	a.y += 14;	/* room for the line labels */
+	a.h -= 14;
+	double lo = c->x0, hi = c->x1;
+	for (int i = 0; i < in->nsol; i++)
+		if (in->sol[i].found && isfinite(in->sol[i].lambda)) {
+			lo = fmin(lo, in->sol[i].lambda);
+			hi = fmax(hi, in->sol[i].lambda);
+		}
+	double span = hi - lo;
+	a.x0 = fmax(0, lo - (lo < c->x0 ? 0.05 * span : 0));
+	a.x1 = hi + (hi > c->x1 ? 0.08 * span : 0);
+	double g[NGRID], kde[NGRID], nm[NGRID], nt[NGRID];
+	density_grid(c, a.x0, a.x1, g, kde, nm, nt);
+	int tests = c->m >= 2 && c->tsd > 0;
+	double scale = 1 / c->bw_class;	/* relative frequency -> density */
+	a.y0 = 0;
+	a.y1 = 1.12 * fmax(fmax(plot_max(kde, NGRID), plot_max(c->fm, c->nb) * scale),
+			   fmax(tests ? plot_max(nt, NGRID) : plot_max(nm, NGRID),
+				c->ft ? plot_max(c->ft, c->nb) * scale : 0));
+	if (!(a.y1 > 0))
+		a.y1 = 1;
+
+	plot_clip(cr, &a);
+	/* the 99 % interval of the characteristic values */
+	if (c->m && c->ts.has_ci) {
+		plot_rgb(cr, C_GREY, 0.25);
+		cairo_rectangle(cr, plot_x(&a, c->ts.p05_lo), a.y,
+				plot_x(&a, c->ts.p05_hi) - plot_x(&a, c->ts.p05_lo),
+				a.h);
+		cairo_fill(cr);
+	}
+	if (c->ms.has_ci) {
+		plot_rgb(cr, C_ORANGE, 0.35);
+		cairo_rectangle(cr, plot_x(&a, c->ms.p05_lo), a.y,
+				fmax(plot_x(&a, c->ms.p05_hi) -
+				     plot_x(&a, c->ms.p05_lo), 1), a.h);
+		cairo_fill(cr);
+	}
+	steps(cr, &a, c, c->fm, scale, C_MODEL, 0, 0.8);
+	if (c->ft)
+		steps(cr, &a, c, c->ft, scale, C_TESTS, 0, 0.8);
+	density_curves(cr, &a, g, kde, nm, nt, tests);
+	/* p05 */
+	plot_style(cr, LG_DASH, C_ORANGE);
+	cairo_set_line_width(cr, 1.6);
+	cairo_move_to(cr, plot_x(&a, c->ms.p05), a.y);
+	cairo_line_to(cr, plot_x(&a, c->ms.p05), a.y + a.h);
+	cairo_stroke(cr);
+	/* the single solutions */
+	for (int i = 0; i < in->nsol; i++) {
+		const struct report_solution *s = &in->sol[i];
+		if (!s->found || !isfinite(s->lambda))
+			continue;
+		plot_style(cr, LG_LINE, *method_colour(s->method));
+		cairo_set_line_width(cr, 2.2);
+		method_dash(cr, s->method);
+		double x = plot_x(&a, s->lambda);
+		x = fmin(fmax(x, a.x + 1), a.x + a.w - 1);
+		cairo_move_to(cr, x, a.y);
+		cairo_line_to(cr, x, a.y + a.h);
+		cairo_stroke(cr);
+	}
+	cairo_set_dash(cr, NULL, 0, 0);
+	cairo_restore(cr);
+	char yl[64];
+	snprintf(yl, sizeof yl, "probability density (1/%s)",
+		 *c->unit ? "N" : "unit of λ");
+	plot_axes(f, &a, c->axis, yl, NULL, 0);
+	plot_text(f, a.x, 16, 12, 1, 0, 1, 0, "%s",
+		  "The model against the single-solution methods");
+	single_labels(f, c, &a);
+	single_legend(f, c, &a, tests);
+	single_captions(f, c);
 }
 
 /* ---- the convergence of p05 ------------------------------------------------ */
@@ -1275,7 +836,7 @@ static void draw_single(struct fig *f, const struct rctx *c)
 static void draw_convergence(struct fig *f, const struct rctx *c)
 {
 	cairo_t *cr = f->cr;
-	fill_white(f);
+	plot_white(f);
 	struct axes a = plot_box(2);
 	a.x0 = 0;
 	a.x1 = (double)c->n;
@@ -1290,13 +851,13 @@ static void draw_convergence(struct fig *f, const struct rctx *c)
 	double span = data_span(lo, hi);
 	a.y0 = fmax(0, lo - 0.1 * span);
 	a.y1 = hi + 0.1 * span;
-	axes_clip(cr, &a);
+	plot_clip(cr, &a);
 	/* the band */
 	int started = 0;
 	for (int k = 0; k < c->nconv; k++) {
 		if (!isfinite(c->clo[k]))
 			continue;
-		double x = ax_x(&a, c->cn[k]), y = ax_y(&a, c->chi[k]);
+		double x = plot_x(&a, c->cn[k]), y = plot_y(&a, c->chi[k]);
 		if (!started)
 			cairo_move_to(cr, x, y);
 		else
@@ -1305,26 +866,26 @@ static void draw_convergence(struct fig *f, const struct rctx *c)
 	}
 	for (int k = c->nconv - 1; k >= 0 && started; k--)
 		if (isfinite(c->clo[k]))
-			cairo_line_to(cr, ax_x(&a, c->cn[k]), ax_y(&a, c->clo[k]));
+			cairo_line_to(cr, plot_x(&a, c->cn[k]), plot_y(&a, c->clo[k]));
 	if (started) {
 		cairo_close_path(cr);
-		set_rgb(cr, C_ORANGE, 0.35);
+		plot_rgb(cr, C_ORANGE, 0.35);
 		cairo_fill(cr);
 	}
 	/* the final value */
-	set_style(cr, LG_DASH, C_GREY);
-	cairo_move_to(cr, a.x, ax_y(&a, c->ms.p05));
-	cairo_line_to(cr, a.x + a.w, ax_y(&a, c->ms.p05));
+	plot_style(cr, LG_DASH, C_GREY);
+	cairo_move_to(cr, a.x, plot_y(&a, c->ms.p05));
+	cairo_line_to(cr, a.x + a.w, plot_y(&a, c->ms.p05));
 	cairo_stroke(cr);
-	set_style(cr, LG_LINE, C_MODEL);
+	plot_style(cr, LG_LINE, C_MODEL);
 	cairo_set_line_width(cr, 1.8);
-	curve(cr, &a, c->cn, c->cp, c->nconv);
+	plot_curve(cr, &a, c->cn, c->cp, c->nconv);
 	cairo_restore(cr);
-	axes_draw(f, &a, "accepted samples", c->axis,
+	plot_axes(f, &a, "accepted samples", c->axis,
 		  "Convergence of the characteristic value (p05)", 1);
 	struct lg_item it[2] = {{LG_LINE, C_MODEL, "running p05"},
 				{LG_BAND, C_ORANGE, "99 % interval (from 90 samples)"}};
-	legend(f, &a, it, 2, LG_BOTTOM);
+	plot_legend(f, &a, it, 2, LG_BOTTOM);
 	double y = PLOT_H + 6;
 	char s[256];
 	if (c->ms.has_ci)
@@ -1336,9 +897,9 @@ static void draw_convergence(struct fig *f, const struct rctx *c)
 		snprintf(s, sizeof s, "Final p05 = %.5g%s after %zu accepted "
 			 "samples (no interval below 90).", c->ms.p05, c->unit,
 			 c->n);
-	caption(f, y, s);
-	caption(f, y + 13, "Distribution-free interval from order statistics "
-		"(docs/statistics.md).");
+	plot_caption(f, y, s);
+	plot_caption(f, y + 13, "Distribution-free interval from order statistics "
+		     "(docs/statistics.md).");
 }
 
 /* ---- Fig. 6: the mechanisms ------------------------------------------------ */
@@ -1386,7 +947,7 @@ static struct rgb joint_colour(char j)
 static void joint_style(cairo_t *cr, char j)
 {
 	static const double dash[] = {3, 2};
-	set_rgb(cr, joint_colour(j), 1);
+	plot_rgb(cr, joint_colour(j), 1);
 	cairo_set_line_width(cr, 2.6);
 	if (j == JOINT_OPENS)
 		cairo_set_dash(cr, dash, 2, 0);
@@ -1412,6 +973,63 @@ static void arrow(cairo_t *cr, double x0, double y0, double x1, double y1,
 		      y1 - head * dy - 0.45 * head * dx);
 	cairo_close_path(cr);
 	cairo_fill(cr);
+}
+
+/* A mechanism panel's live loads as arrows; the wall's point (x, y)
+ * is drawn at (ox + (x - wx0) s, oy + (wy1 - y) s). */
+static void panel_loads(cairo_t *cr, const struct rctx *c, double ox,
+			double oy, double s)
+{
+	const struct wall *w = c->w;
+#define MX(x) (ox + ((x) - c->wx0) * s)
+#define MY(y) (oy + (c->wy1 - (y)) * s)
+	for (int i = 0; i < w->nloads; i++) {
+		const struct wall_load *ld = &w->loads[i];
+		if (ld->kind != LOAD_POINT)
+			continue;
+		double L = LOAD_ARROW * c->wsize * s;
+		double x1 = MX(ld->at[0]), y1 = MY(ld->at[1]);
+		double x0 = x1 - L * ld->dir[0], y0 = y1 + L * ld->dir[1];
+		/* a pull is drawn from the point outwards */
+		int pull = 0;
+		for (int b = 0; b < w->nblocks; b++)
+			if (b == ld->block && ld->at[0] * ld->dir[0] +
+			    ld->at[1] * ld->dir[1] >= w->blocks[b].cx *
+			    ld->dir[0] + w->blocks[b].cy * ld->dir[1])
+				pull = 1;
+		plot_rgb(cr, C_BLACK, 1);
+		cairo_set_line_width(cr, 1.6);
+		if (pull)
+			arrow(cr, x1, y1, x1 + L * ld->dir[0], y1 - L * ld->dir[1], 7);
+		else
+			arrow(cr, x0, y0, x1, y1, 7);
+	}
+#undef MX
+#undef MY
+}
+
+/* A mechanism panel's texts: its rank and share, its range of loads. */
+static void panel_caption(struct fig *f, const struct rctx *c, int rank,
+			  const struct tally_mech *mk, double px, double py,
+			  double ph)
+{
+	const struct tally *t = c->in->mech;
+	double pct = 100.0 * (double)mk->count / (double)(t->accepted ?
+							      t->accepted : 1);
+	plot_rgb(f->cr, C_BLACK, 1);
+	plot_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
+		  "#%d: %.1f %% (%ld of %ld)", rank + 1, pct, mk->count,
+		  t->accepted);
+	char lo[32], hi[32];
+	snprintf(lo, sizeof lo, "%.5g", mk->lam_lo);
+	snprintf(hi, sizeof hi, "%.5g", mk->lam_hi);
+	if (!strcmp(lo, hi))
+		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0, "λ = %.5g%s",
+			  mk->lam_lo, c->unit);
+	else
+		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0,
+			  "λ from %.5g to %.5g%s", mk->lam_lo, mk->lam_hi,
+			  c->unit);
 }
 
 static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
@@ -1454,7 +1072,7 @@ static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
 		if (bl->fixed)
 			cairo_set_source_rgb(cr, 0.82, 0.82, 0.82);
 		else if (dmax > 0 && sp > 1e-6 * dmax)
-			set_rgb(cr, C_SKY, 0.35 + 0.5 * sp / dmax);
+			plot_rgb(cr, C_SKY, 0.35 + 0.5 * sp / dmax);
 		else
 			cairo_set_source_rgb(cr, 1, 1, 1);
 		cairo_fill_preserve(cr);
@@ -1478,14 +1096,14 @@ static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
 			cairo_line_to(cr, MX(x + ds * dx), MY(y + ds * dy));
 		}
 		cairo_close_path(cr);
-		set_rgb(cr, C_BLUE, 0.8);
+		plot_rgb(cr, C_BLUE, 0.8);
 		cairo_set_line_width(cr, 0.6);
 		cairo_set_dash(cr, dash, 2, 0);
 		cairo_stroke(cr);
 		cairo_set_dash(cr, NULL, 0, 0);
 		if (vmax > 0 && hypot(v[0], v[1]) > 0.05 * vmax) {
 			double al = 0.8 * w->mean_size / vmax;
-			set_rgb(cr, C_BLUE, 1);
+			plot_rgb(cr, C_BLUE, 1);
 			cairo_set_line_width(cr, 1.2);
 			arrow(cr, MX(bl->cx), MY(bl->cy), MX(bl->cx + al * v[0]),
 			      MY(bl->cy + al * v[1]), 5);
@@ -1503,58 +1121,22 @@ static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
 		cairo_stroke(cr);
 	}
 	cairo_set_dash(cr, NULL, 0, 0);
-	/* the live load */
-	for (int i = 0; i < w->nloads; i++) {
-		const struct wall_load *ld = &w->loads[i];
-		if (ld->kind != LOAD_POINT)
-			continue;
-		double L = LOAD_ARROW * c->wsize * s;
-		double x1 = MX(ld->at[0]), y1 = MY(ld->at[1]);
-		double x0 = x1 - L * ld->dir[0], y0 = y1 + L * ld->dir[1];
-		/* a pull is drawn from the point outwards */
-		int pull = 0;
-		for (int b = 0; b < w->nblocks; b++)
-			if (b == ld->block && ld->at[0] * ld->dir[0] +
-			    ld->at[1] * ld->dir[1] >= w->blocks[b].cx *
-			    ld->dir[0] + w->blocks[b].cy * ld->dir[1])
-				pull = 1;
-		set_rgb(cr, C_BLACK, 1);
-		cairo_set_line_width(cr, 1.6);
-		if (pull)
-			arrow(cr, x1, y1, x1 + L * ld->dir[0], y1 - L * ld->dir[1], 7);
-		else
-			arrow(cr, x0, y0, x1, y1, 7);
-	}
+	panel_loads(cr, c, ox, oy, s);
 #undef MX
 #undef MY
-	double pct = 100.0 * (double)mk->count / (double)(t->accepted ?
-							      t->accepted : 1);
-	set_rgb(cr, C_BLACK, 1);
-	fig_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
-		 "#%d: %.1f %% (%ld of %ld)", rank + 1, pct, mk->count,
-		 t->accepted);
-	char lo[32], hi[32];
-	snprintf(lo, sizeof lo, "%.5g", mk->lam_lo);
-	snprintf(hi, sizeof hi, "%.5g", mk->lam_hi);
-	if (!strcmp(lo, hi))
-		fig_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0, "λ = %.5g%s",
-			 mk->lam_lo, c->unit);
-	else
-		fig_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0,
-			 "λ from %.5g to %.5g%s", mk->lam_lo, mk->lam_hi,
-			 c->unit);
+	panel_caption(f, c, rank, mk, px, py, ph);
 }
 
 static void draw_mechanisms(struct fig *f, const struct rctx *c)
 {
-	fill_white(f);
+	plot_white(f);
 	int cols, rows;
 	double pw, ph;
 	mech_layout(c, &cols, &rows, &pw, &ph);
 	const struct tally *t = c->in->mech;
-	fig_text(f, 14, 6, 11.5, 1, 0, 0, 0, "Most frequent mechanisms "
-		 "(%d distinct in %ld accepted samples)", t->nmech,
-		 t->accepted);
+	plot_text(f, 14, 6, 11.5, 1, 0, 0, 0, "Most frequent mechanisms "
+		  "(%d distinct in %ld accepted samples)", t->nmech,
+		  t->accepted);
 	for (int i = 0; i < c->ntop; i++) {
 		double px = (i % cols) * pw, py = 28 + (i / cols) * ph;
 		draw_mech_panel(f, c, i, &t->mech[c->top[i]], px, py, pw, ph);
@@ -1573,32 +1155,26 @@ static void draw_mechanisms(struct fig *f, const struct rctx *c)
 		cairo_line_to(cr, x + 18, y + 5);
 		cairo_stroke(cr);
 		cairo_set_dash(cr, NULL, 0, 0);
-		set_rgb(cr, C_BLACK, 1);
-		fig_text(f, x + 22, y + 5, 9.5, 0, 0, 0.5, 0, "%s", jt[i]);
+		plot_rgb(cr, C_BLACK, 1);
+		plot_text(f, x + 22, y + 5, 9.5, 0, 0, 0.5, 0, "%s", jt[i]);
 		x += i == 2 ? 130 : 80;
 	}
-	set_rgb(cr, C_SKY, 0.7);
+	plot_rgb(cr, C_SKY, 0.7);
 	cairo_rectangle(cr, 14, y + 15, 18, 9);
 	cairo_fill(cr);
-	set_rgb(cr, C_BLACK, 1);
-	fig_text(f, 36, y + 19.5, 9.5, 0, 0, 0.5, 0, "%s",
-		 "moving block (darker: faster); dashed: its motion; "
-		 "arrow: its velocity");
+	plot_rgb(cr, C_BLACK, 1);
+	plot_text(f, 36, y + 19.5, 9.5, 0, 0, 0.5, 0, "%s",
+		  "moving block (darker: faster); dashed: its motion; "
+		  "arrow: its velocity");
 }
 
 /* ---- rendering -------------------------------------------------------------- */
 
-struct figdef {
-	const char *name;	/* file name without extension */
-	const char *title;	/* for report.md and the PDF metadata */
-	void (*draw)(struct fig *, const struct rctx *);
-	double (*height)(const struct rctx *);
-};
 
 static double h_freq(const struct rctx *c)
 {
 	(void)c;
-	return fig_height(2);
+	return plot_height(2);
 }
 
 static double h_dens(const struct rctx *c)
@@ -1610,16 +1186,16 @@ static double h_dens(const struct rctx *c)
 static double h_three(const struct rctx *c)
 {
 	(void)c;
-	return fig_height(3);
+	return plot_height(3);
 }
 
 static double h_four(const struct rctx *c)
 {
 	(void)c;
-	return fig_height(4);
+	return plot_height(4);
 }
 
-static const struct figdef figures[] = {
+const struct figdef report_figures[] = {
 	{"frequencies", "Relative frequencies (the paper's Fig. 8, left)",
 	 draw_frequencies, h_freq},
 	{"densities", "Model KDE against the tests' normal, and both normals "
@@ -1635,7 +1211,12 @@ static const struct figdef figures[] = {
 	{"fragility", "Fragility: the probability of collapse at a load, with "
 	 "its 99 % simultaneous band", draw_fragility, h_three},
 };
-#define NFIGURES (int)(sizeof figures / sizeof figures[0])
+const int report_nfigures = sizeof report_figures / sizeof report_figures[0];
+
+int report_figure_wanted(const struct rctx *c, int i)
+{
+	return strcmp(report_figures[i].name, "mechanisms") || c->ntop > 0;
+}
 
 /* Draw figure d into dir; messages name the file in shown (the
  * report's directory: dir is its staging directory). */
@@ -1703,208 +1284,14 @@ static enum sw_status render(const struct figdef *d, const struct rctx *c,
 		st = sw_fail(err, SW_EIO, "%s: %s", named,
 			     cairo_status_to_string(cs));
 	else if (format == REPORT_SVG)
-		st = svg_add_text_layer(path, named, &f, err);
+		st = plot_svg_text_layer(path, named, &f, err);
 	if (st == SW_OK && rename(path, final) != 0)
 		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", named,
 			     strerror(errno));
 	if (st != SW_OK)
 		unlink(path);
-	fig_clear_labels(&f);
+	plot_labels_clear(&f);
 	return st;
-}
-
-/* ---- report.md -------------------------------------------------------------- */
-
-static void md_num(FILE *o, double v, const char *unit)
-{
-	if (isfinite(v))
-		fprintf(o, "%.5g%s", v, unit);
-	else
-		fprintf(o, "—");
-}
-
-static void md_ci(FILE *o, const struct stats_summary *s, const char *unit)
-{
-	if (s->has_ci)
-		fprintf(o, "[%.5g, %.5g]%s", s->p05_lo, s->p05_hi, unit);
-	else
-		fprintf(o, "none (n = %zu < 90)", s->n);
-}
-
-static int figure_wanted(const struct rctx *c, int i)
-{
-	return strcmp(figures[i].name, "mechanisms") || c->ntop > 0;
-}
-
-/* A copy of s for report.md (text_clean); NULL stays NULL. */
-static char *md_clean(const char *s)
-{
-	return s ? text_clean(s) : NULL;
-}
-
-static enum sw_status write_markdown(const struct rctx *c, const char *dir,
-				     const struct report_opts *o, char *err)
-{
-	const struct report_input *in = c->in;
-	const struct report_run *r = &in->run;
-	const struct wall *w = c->w;
-	char path[4096];
-	snprintf(path, sizeof path, "%s/report.md", dir);
-	struct sw_whole out;	/* whole or not at all, as the figures */
-	enum sw_status st = sw_whole_open(&out, path, err);
-	if (st != SW_OK)
-		return st;
-	FILE *f = out.f;
-	/* names and paths as they may be printed: no control character
-	 * (a newline would end a table row, an ESC reach a terminal) */
-	char *name = md_clean(w->name), *wall_path = md_clean(r->wall_path),
-	     *command = md_clean(r->command),
-	     *samples_file = md_clean(r->samples_file),
-	     *tests_source = md_clean(r->tests_source),
-	     *note = md_clean(r->note);
-	const char *u = c->unit;
-	fprintf(f, "# slipwall report: %s\n\n", name ? name :
-		(wall_path ? wall_path : "wall"));
-	fprintf(f, "Written by slipwall %s from `%s`.", r->version ? r->version :
-		"(unknown version)", wall_path ? wall_path : "?");
-	if (command)
-		fprintf(f, " To reproduce it:\n\n    %s\n\n", command);
-	else
-		fprintf(f, "\n\n");
-	fprintf(f, "Loads: %s.\n\n", c->axis);
-
-	fprintf(f, "## Characteristic values (the paper's Table 1)\n\n");
-	fprintf(f, "| | values | 5 %% percentile (p05) | 99 %% confidence "
-		"interval of p05 | mean | std |\n|---|---:|---:|---|---:|---:|\n");
-	fprintf(f, "| Numerical model | %zu | ", c->n);
-	md_num(f, c->ms.p05, u);
-	fprintf(f, " | ");
-	md_ci(f, &c->ms, u);
-	fprintf(f, " | ");
-	md_num(f, c->ms.mean, u);
-	fprintf(f, " | ");
-	md_num(f, c->ms.std, u);
-	fprintf(f, " |\n");
-	if (c->m) {
-		fprintf(f, "| Experimental tests | %zu | ", c->m);
-		md_num(f, c->ts.p05, u);
-		fprintf(f, " | ");
-		md_ci(f, &c->ts, u);
-		fprintf(f, " | ");
-		md_num(f, c->ts.mean, u);
-		fprintf(f, " | ");
-		md_num(f, c->ts.std, u);
-		fprintf(f, " |\n");
-	}
-	fprintf(f, "\nPercentiles are of type 7; the interval is "
-		"distribution-free (order statistics, coverage ≥ 99 %%) and "
-		"exists from 90 values on (docs/statistics.md).\n");
-	if (!c->m)
-		fprintf(f, "\n**No experimental loads** (the wall has no `tests:` "
-			"key and no `--tests` file was given): the figures show "
-			"the model alone, and there is no Kolmogorov-Smirnov "
-			"test.\n");
-
-	if (c->ks_ok) {
-		fprintf(f, "\n## Model against tests: two-sample "
-			"Kolmogorov–Smirnov\n\n");
-		fprintf(f, "x = model (%zu), y = tests (%zu), %s p-values.\n\n",
-			c->n, c->m, c->ks.exact ? "exact" : "asymptotic");
-		fprintf(f, "| statistic | value | p | hypotheses |\n"
-			"|---|---:|---:|---|\n");
-		fprintf(f, "| D | %.4g | %.4g | H1: the distributions differ |\n",
-			c->ks.d, c->ks.p_two_sided);
-		fprintf(f, "| D+ = max(F_model − F_tests) | %.4g | %.4g | "
-			"`p_greater`, H1: model < tests |\n", c->ks.d_plus,
-			c->ks.p_greater);
-		fprintf(f, "| D− = max(F_tests − F_model) | %.4g | %.4g | "
-			"`p_less`, H0: model ≤ tests (the paper's 0.994) |\n",
-			c->ks.d_minus, c->ks.p_less);
-	}
-
-	fprintf(f, "\n## Single-solution methods (classical contact, d = 0)\n\n");
-	if (in->nsol == 0)
-		fprintf(f, "None computed.\n");
-	else
-		fprintf(f, "| method | load | note |\n|---|---:|---|\n");
-	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
-		fprintf(f, "| %s | ", s->method);
-		if (s->found)
-			md_num(f, s->lambda, u);
-		else
-			fprintf(f, "—");
-		fprintf(f, " | %s |\n", *s->note ? s->note :
-			s->ran ? "" : "not run");
-	}
-
-	fprintf(f, "\n## Run\n\n| setting | value |\n|---|---|\n");
-	fprintf(f, "| wall file | `%s` |\n", wall_path ? wall_path : "?");
-	fprintf(f, "| slipwall version | %s |\n", r->version ? r->version : "?");
-	if (samples_file)
-		fprintf(f, "| loads read from | `%s` |\n", samples_file);
-	if (r->seed_known)
-		fprintf(f, "| seed | %lu |\n", r->seed);
-	else
-		fprintf(f, "| seed | not recorded in the samples file |\n");
-	if (r->requested > 0)
-		fprintf(f, "| samples requested | %ld |\n", r->requested);
-	if (r->threads > 0)
-		fprintf(f, "| threads | %d (the results do not depend on it) |\n",
-			r->threads);
-	if (r->anywhere)
-		fprintf(f, "| contact points | anywhere (sorted pair of U(0, 1)) |\n");
-	else if (isfinite(r->depth))
-		fprintf(f, "| contact depth d | %g |\n", r->depth);
-	if (r->has_counts) {
-		fprintf(f, "| samples computed | %ld |\n", r->samples);
-		fprintf(f, "| accepted | %ld (%.1f %%) |\n", r->accepted,
-			r->samples ? 100.0 * (double)r->accepted /
-			(double)r->samples : 0.0);
-		long rej = r->samples - r->accepted;
-		fprintf(f, "| rejected | %ld |\n", rej);
-		for (int k = 0; k < SAMPLE_STATUS_COUNT; k++)
-			if (k != SAMPLE_ACCEPTED && r->rejected[k])
-				fprintf(f, "| rejected: %s | %ld |\n",
-					sample_status_text(k), r->rejected[k]);
-	}
-	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
-	if (in->mech)
-		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
-	if (c->m)
-		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
-			tests_source ? tests_source : "?");
-	if (note)
-		fprintf(f, "\n%s\n", note);
-
-	fprintf(f, "\n## Figures\n\n");
-	for (int i = 0; i < NFIGURES; i++) {
-		if (!figure_wanted(c, i)) {
-			fprintf(f, "### %s\n\nNot drawn: no mechanisms were "
-				"recorded for these loads.\n\n", figures[i].title);
-			continue;
-		}
-		fprintf(f, "### %s\n\n", figures[i].title);
-		if (o->formats & REPORT_PNG)
-			fprintf(f, "![%s](%s.png)\n\n", figures[i].name,
-				figures[i].name);
-		int any = 0;
-		if (o->formats & REPORT_SVG)
-			fprintf(f, "%s[SVG](%s.svg)", any++ ? " · " : "",
-				figures[i].name);
-		if (o->formats & REPORT_PDF)
-			fprintf(f, "%s[PDF](%s.pdf)", any++ ? " · " : "",
-				figures[i].name);
-		if (any)
-			fprintf(f, "\n\n");
-	}
-	free(name);
-	free(wall_path);
-	free(command);
-	free(samples_file);
-	free(tests_source);
-	free(note);
-	return sw_whole_close(&out, err);
 }
 
 /* ---- the entry point ---------------------------------------------------------- */
@@ -1919,21 +1306,12 @@ void report_opts_default(struct report_opts *o)
 
 static enum sw_status make_dir(const char *dir, char *err)
 {
-	char p[4096];
-	if (snprintf(p, sizeof p, "%s", dir) >= (int)sizeof p)
+	char failed[PATH_MAX];
+	if (strlen(dir) >= PATH_MAX)
 		return sw_fail(err, SW_EIO, "%s: path too long", dir);
-	for (char *s = p + 1;; s++) {
-		if (*s != '/' && *s)
-			continue;
-		char c = *s;
-		*s = 0;
-		if (mkdir(p, 0777) && errno != EEXIST)
-			return sw_fail(err, SW_EIO, "%s: cannot create: %s", p,
-				       strerror(errno));
-		*s = c;
-		if (!c)
-			break;
-	}
+	if (sys_mkdir_p(dir, failed, sizeof failed))
+		return sw_fail(err, SW_EIO, "%s: cannot create: %s", failed,
+			       strerror(errno));
 	struct stat st;
 	if (stat(dir, &st) || !S_ISDIR(st.st_mode))
 		return sw_fail(err, SW_EIO, "%s: not a directory", dir);
@@ -2061,10 +1439,10 @@ static enum sw_status stage_publish(struct stage *s, char *err)
 	if (stat(s->final, &st) != 0 || !S_ISDIR(st.st_mode))
 		return sw_fail(err, SW_EIO, "%s: not a directory", s->final);
 	static const char *const ext[] = {"svg", "pdf", "png"};
-	for (int i = 0; i < NFIGURES; i++)
+	for (int i = 0; i < report_nfigures; i++)
 		for (int k = 0; k < 3; k++) {
 			char name[128];
-			snprintf(name, sizeof name, "%s.%s", figures[i].name,
+			snprintf(name, sizeof name, "%s.%s", report_figures[i].name,
 				 ext[k]);
 			if (stage_has(s, name))
 				continue;
@@ -2120,8 +1498,8 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 		return st;
 	}
 	static const char *const ext[] = {"svg", "pdf", "png"};
-	for (int i = 0; i < NFIGURES && st == SW_OK; i++) {
-		if (!figure_wanted(&c, i))
+	for (int i = 0; i < report_nfigures && st == SW_OK; i++) {
+		if (!report_figure_wanted(&c, i))
 			continue;
 		for (int fmt = REPORT_SVG, k = 0; fmt <= REPORT_PNG &&
 		     st == SW_OK; fmt <<= 1, k++) {
@@ -2132,12 +1510,12 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 					     "nothing written", dir);
 				break;
 			}
-			st = render(&figures[i], &c, s.dir, s.final, fmt, o,
+			st = render(&report_figures[i], &c, s.dir, s.final, fmt, o,
 				    err);
 			if (st == SW_OK) {
 				char name[128];
 				snprintf(name, sizeof name, "%s.%s",
-					 figures[i].name, ext[k]);
+					 report_figures[i].name, ext[k]);
 				stage_add(&s, name);
 			}
 		}
@@ -2145,7 +1523,7 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (st == SW_OK && cancelled(o))
 		st = sw_fail(err, SW_EINTR, "%s: interrupted: nothing written",
 			     dir);
-	if (st == SW_OK && (st = write_markdown(&c, s.dir, o, err)) == SW_OK)
+	if (st == SW_OK && (st = report_md_write(&c, s.dir, o, err)) == SW_OK)
 		stage_add(&s, "report.md");
 	if (st == SW_OK)
 		st = stage_publish(&s, err);
@@ -2175,8 +1553,8 @@ static void draw_sweep(struct fig *f, const struct rctx *c)
 		p50[i] = s->pt[i].p50;
 		p95[i] = s->pt[i].p95;
 	}
-	ymax = fmax(max_of(p95, n), max_of(hi, n));
-	fill_white(f);
+	ymax = fmax(plot_max(p95, n), plot_max(hi, n));
+	plot_white(f);
 	struct axes a = plot_box(1);
 	a.x0 = x[0];
 	a.x1 = x[n - 1];
@@ -2186,9 +1564,9 @@ static void draw_sweep(struct fig *f, const struct rctx *c)
 	}
 	a.y0 = 0;
 	a.y1 = ymax > 0 ? ymax * 1.08 : 1;
-	axes_draw(f, &a, s->xlabel, c->axis, "Collapse load against the "
+	plot_axes(f, &a, s->xlabel, c->axis, "Collapse load against the "
 		  "parameter", 0);
-	axes_clip(cr, &a);
+	plot_clip(cr, &a);
 	/* the band of p05, in runs of values that have one */
 	for (int i = 0; i < n;) {
 		if (!isfinite(lo[i]) || !isfinite(hi[i])) {
@@ -2199,34 +1577,34 @@ static void draw_sweep(struct fig *f, const struct rctx *c)
 		while (j + 1 < n && isfinite(lo[j + 1]) && isfinite(hi[j + 1]))
 			j++;
 		if (j == i) {
-			set_rgb(cr, C_ORANGE, 0.8);
+			plot_rgb(cr, C_ORANGE, 0.8);
 			cairo_set_line_width(cr, 4);
-			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
-			cairo_line_to(cr, ax_x(&a, x[i]), ax_y(&a, hi[i]));
+			cairo_move_to(cr, plot_x(&a, x[i]), plot_y(&a, lo[i]));
+			cairo_line_to(cr, plot_x(&a, x[i]), plot_y(&a, hi[i]));
 			cairo_stroke(cr);
 		} else {
-			cairo_move_to(cr, ax_x(&a, x[i]), ax_y(&a, lo[i]));
+			cairo_move_to(cr, plot_x(&a, x[i]), plot_y(&a, lo[i]));
 			for (int k = i + 1; k <= j; k++)
-				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, lo[k]));
+				cairo_line_to(cr, plot_x(&a, x[k]), plot_y(&a, lo[k]));
 			for (int k = j; k >= i; k--)
-				cairo_line_to(cr, ax_x(&a, x[k]), ax_y(&a, hi[k]));
+				cairo_line_to(cr, plot_x(&a, x[k]), plot_y(&a, hi[k]));
 			cairo_close_path(cr);
-			set_rgb(cr, C_ORANGE, 0.35);
+			plot_rgb(cr, C_ORANGE, 0.35);
 			cairo_fill(cr);
 		}
 		i = j + 1;
 	}
-	set_style(cr, LG_DASH, C_BLACK);
-	curve(cr, &a, x, p95, n);
-	set_style(cr, LG_THIN, C_BLACK);
-	curve(cr, &a, x, p50, n);
-	set_style(cr, LG_LINE, C_VERMILLION);
-	curve(cr, &a, x, p05, n);
+	plot_style(cr, LG_DASH, C_BLACK);
+	plot_curve(cr, &a, x, p95, n);
+	plot_style(cr, LG_THIN, C_BLACK);
+	plot_curve(cr, &a, x, p50, n);
+	plot_style(cr, LG_LINE, C_VERMILLION);
+	plot_curve(cr, &a, x, p05, n);
 	cairo_set_dash(cr, NULL, 0, 0);
 	for (int i = 0; i < n; i++) {
 		if (!isfinite(p05[i]))
 			continue;
-		cairo_arc(cr, ax_x(&a, x[i]), ax_y(&a, p05[i]), 2.6, 0,
+		cairo_arc(cr, plot_x(&a, x[i]), plot_y(&a, p05[i]), 2.6, 0,
 			  2 * M_PI);
 		cairo_fill(cr);
 	}
@@ -2238,17 +1616,17 @@ static void draw_sweep(struct fig *f, const struct rctx *c)
 		{LG_DASH, C_BLACK, "p95"},
 	};
 	/* the legend on the side where the curves are low */
-	legend(f, &a, it, 4, p95[0] < p95[n - 1] || !isfinite(p95[0]) ?
-	       LG_LEFT : 0);
+	plot_legend(f, &a, it, 4, p95[0] < p95[n - 1] || !isfinite(p95[0]) ?
+		    LG_LEFT : 0);
 	if (s->caption)
-		caption(f, PLOT_H + 6, s->caption);
+		plot_caption(f, PLOT_H + 6, s->caption);
 	free(x);
 }
 
 static double h_sweep(const struct rctx *c)
 {
 	(void)c;
-	return fig_height(1);
+	return plot_height(1);
 }
 
 enum sw_status report_write_sweep(const struct report_sweep *s,

@@ -52,6 +52,7 @@
 
 #include "lp.h"
 #include "slipwall/solve.h"
+#include "slipwall/sys.h"
 #include "statics.h"
 
 #define GLOBAL_EPS_WORK 1e-6
@@ -113,14 +114,6 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 		return sw_fail(err, SW_EANALYSIS, "the solver failed (%s)",
 			       sample_status_text(s));
 	}
-}
-
-static double elapsed(const struct timespec *t0)
-{
-	struct timespec t1;
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	return (double)(t1.tv_sec - t0->tv_sec) +
-	       1e-9 * (double)(t1.tv_nsec - t0->tv_nsec);
 }
 
 /* Column indices of the global problem. */
@@ -215,42 +208,27 @@ static double max_total_normal(const struct statics *st, double lam_hi)
 /* lp_thread_progress's hook: the caller's, in seconds and user's units */
 struct progress {
 	const struct solve_opts *o;
-	struct timespec t0;
+	double t0;
 	double scale;		/* the program's units to the user's */
 	const char *what;	/* the step being solved */
 };
 static void progress(void *ctx, double incumbent, double bound)
 {
 	struct progress *p = ctx;
-	p->o->progress(p->o->progress_ctx, p->what, elapsed(&p->t0),
+	p->o->progress(p->o->progress_ctx, p->what, sys_now() - p->t0,
 		       incumbent * p->scale, bound * p->scale);
 }
 
-static enum sw_status solve_global(const struct wall *w,
-				   const struct solve_opts *o,
-				   struct sample_ws *ws, const double *xi,
-				   double lam_std, struct solve_result *r,
-				   char *err, struct progress *prog)
+/* The global program's x columns: equilibrium, yield and the
+ * complementarity rows (bounds M on the normal forces, mumax M on the
+ * shear), and the bounds of the equilibrium and friction rows. */
+static void global_statics(struct lp *P, const struct glayout *gp,
+			   const struct wall *w, const struct statics *st,
+			   double M, double mumax)
 {
-	const struct statics *st = sample_statics(ws);
-	int m = w->nifaces, R = st->nrows;
-	struct glayout g;
-	glayout(&g, m, R);
-	double lam_hi = lam_std / st->S;	/* scaled */
-	double M = max_total_normal(st, lam_hi * (1 + 1e-9) + 1e-12);
-	r->bounds_derived = isfinite(M);
-	if (!r->bounds_derived)
-		M = 1e3 * w->nfree;	/* mean block weight = 1 */
-	M = M * (1 + 1e-6) + 1e-9;
-	double mumax = 0;
-	for (int k = 0; k < m; k++)
-		mumax = fmax(mumax, w->ifaces[k].mu);
-	double Mf = 2 * mumax * M + 1e-9;
-
-	struct lp *P = lp_new(g.nrows, g.ncols);
-	int rows[16];
+	const struct glayout g = *gp;
+	int m = w->nifaces, rows[16];
 	double vals[16];
-	/* statics: x columns with equilibrium, yield and complementarity */
 	for (int j = 0; j < 3 * m; j++) {
 		int k = j / 3, e = j % 3, n = statics_column(st, j, rows, vals);
 		double mu = w->ifaces[k].mu;
@@ -270,76 +248,94 @@ static enum sw_status solve_global(const struct wall *w,
 		}
 		lp_set_col(P, j, n, rows, vals);
 	}
-	for (int i = 0; i < R; i++)
+	for (int i = 0; i < st->nrows; i++)
 		lp_set_row_bounds(P, g.eq + i, -st->fD[i], -st->fD[i]);
 	for (int q = 0; q < 2 * m; q++)
 		lp_set_row_bounds(P, g.fr + q, -HUGE_VAL, 0);
-	/* lambda */
-	{
-		int n = 0;
-		int *lr = sw_xmalloc(sizeof(int) * (size_t)(R + 1));
-		double *lv = sw_xmalloc(sizeof(double) * (size_t)(R + 1));
-		for (int i = 0; i < R; i++)
-			if (st->fL[i] != 0) {
-				lr[n] = i;
-				lv[n++] = st->fL[i];
-			}
-		lp_set_col(P, g.lam, n, lr, lv);
-		lp_set_col_bounds(P, g.lam, 0, lam_hi * (1 + 1e-9) + 1e-12);
-		lp_set_obj(P, g.lam, 1);
-		/* velocities: kinematic rows are A^T; build column-wise */
-		free(lr);
-		free(lv);
+}
+
+/* The load factor's column, bounded by the standard solution. */
+static void global_lambda(struct lp *P, const struct glayout *g,
+			  const struct statics *st, double lam_hi)
+{
+	int R = st->nrows;
+	int n = 0;
+	int *lr = sw_xmalloc(sizeof(int) * (size_t)(R + 1));
+	double *lv = sw_xmalloc(sizeof(double) * (size_t)(R + 1));
+	for (int i = 0; i < R; i++)
+		if (st->fL[i] != 0) {
+			lr[n] = i;
+			lv[n++] = st->fL[i];
+		}
+	lp_set_col(P, g->lam, n, lr, lv);
+	lp_set_col_bounds(P, g->lam, 0, lam_hi * (1 + 1e-9) + 1e-12);
+	lp_set_obj(P, g->lam, 1);
+	free(lr);
+	free(lv);
+}
+
+/* The velocity columns: the entries of A^T in the kinematic rows, plus
+ * the normalisation (sum of the normal-force columns) and the work. */
+static void global_velocities(struct lp *P, const struct glayout *g,
+			      const struct statics *st, int m)
+{
+	int R = st->nrows, rows[16];
+	double vals[16];
+	int *cnt = sw_xcalloc((size_t)R + 1, sizeof(int));
+	int cap = 8 * m + 8;
+	int **vr = sw_xcalloc((size_t)R + 1, sizeof(int *));
+	double **vv = sw_xcalloc((size_t)R + 1, sizeof(double *));
+	double *norm = sw_xcalloc((size_t)R + 1, sizeof(double));
+	for (int i = 0; i < R; i++) {
+		vr[i] = sw_xmalloc(sizeof(int) * (size_t)(cap + 4));
+		vv[i] = sw_xmalloc(sizeof(double) * (size_t)(cap + 4));
 	}
-	/* velocity columns: entries of A^T in the kinematic rows, plus the
-	 * normalisation (sum of the normal-force columns) and the work */
-	{
-		int *cnt = sw_xcalloc((size_t)R + 1, sizeof(int));
-		int cap = 8 * m + 8;
-		int **vr = sw_xcalloc((size_t)R + 1, sizeof(int *));
-		double **vv = sw_xcalloc((size_t)R + 1, sizeof(double *));
-		double *norm = sw_xcalloc((size_t)R + 1, sizeof(double));
-		for (int i = 0; i < R; i++) {
-			vr[i] = sw_xmalloc(sizeof(int) * (size_t)(cap + 4));
-			vv[i] = sw_xmalloc(sizeof(double) * (size_t)(cap + 4));
-		}
-		for (int j = 0; j < 3 * m; j++) {
-			int k = j / 3, e = j % 3, n = statics_column(st, j, rows, vals);
-			for (int t = 0; t < n; t++) {
-				int i = rows[t];
-				if (cnt[i] + 3 > cap)
-					continue;	/* cannot happen: <= 3 per column */
-				if (e == 2) {
-					vr[i][cnt[i]] = g.ks + k;
-					vv[i][cnt[i]++] = vals[t];
-				} else {
-					vr[i][cnt[i]] = g.kn0 + 2 * k + e;
-					vv[i][cnt[i]++] = vals[t];
-					vr[i][cnt[i]] = g.kn1 + 2 * k + e;
-					vv[i][cnt[i]++] = vals[t];
-					norm[i] += vals[t];
-				}
+	for (int j = 0; j < 3 * m; j++) {
+		int k = j / 3, e = j % 3, n = statics_column(st, j, rows, vals);
+		for (int t = 0; t < n; t++) {
+			int i = rows[t];
+			if (cnt[i] + 3 > cap)
+				continue;	/* cannot happen: <= 3 per column */
+			if (e == 2) {
+				vr[i][cnt[i]] = g->ks + k;
+				vv[i][cnt[i]++] = vals[t];
+			} else {
+				vr[i][cnt[i]] = g->kn0 + 2 * k + e;
+				vv[i][cnt[i]++] = vals[t];
+				vr[i][cnt[i]] = g->kn1 + 2 * k + e;
+				vv[i][cnt[i]++] = vals[t];
+				norm[i] += vals[t];
 			}
 		}
-		for (int i = 0; i < R; i++) {
-			if (norm[i] != 0) {
-				vr[i][cnt[i]] = g.norm;
-				vv[i][cnt[i]++] = norm[i];
-			}
-			if (st->fL[i] != 0) {
-				vr[i][cnt[i]] = g.work;
-				vv[i][cnt[i]++] = st->fL[i];
-			}
-			lp_set_col(P, g.v + i, cnt[i], vr[i], vv[i]);
-			lp_set_col_bounds(P, g.v + i, -HUGE_VAL, HUGE_VAL);
-			free(vr[i]);
-			free(vv[i]);
-		}
-		free(vr);
-		free(vv);
-		free(cnt);
-		free(norm);
 	}
+	for (int i = 0; i < R; i++) {
+		if (norm[i] != 0) {
+			vr[i][cnt[i]] = g->norm;
+			vv[i][cnt[i]++] = norm[i];
+		}
+		if (st->fL[i] != 0) {
+			vr[i][cnt[i]] = g->work;
+			vv[i][cnt[i]++] = st->fL[i];
+		}
+		lp_set_col(P, g->v + i, cnt[i], vr[i], vv[i]);
+		lp_set_col_bounds(P, g->v + i, -HUGE_VAL, HUGE_VAL);
+		free(vr[i]);
+		free(vv[i]);
+	}
+	free(vr);
+	free(vv);
+	free(cnt);
+	free(norm);
+}
+
+/* The slip and opening columns, their binaries and their rows; the
+ * normalisation and the work rows. */
+static void global_binaries(struct lp *P, const struct glayout *gp, int m,
+			    double M, double Mf)
+{
+	const struct glayout g = *gp;
+	int rows[4];
+	double vals[4];
 	for (int k = 0; k < m; k++) {
 		/* slips */
 		rows[0] = g.ks + k; vals[0] = -1;
@@ -381,13 +377,19 @@ static enum sw_status solve_global(const struct wall *w,
 	lp_set_row_bounds(P, g.norm, 1, 1);
 	lp_set_row_bounds(P, g.work, GLOBAL_EPS_WORK, HUGE_VAL);
 	lp_set_maximize(P, 0);
+}
 
-	double gap = NAN;
-	prog->scale = st->S;	/* the program's objective is lambda */
-	prog->what = "the mixed-integer program";
-	enum lp_mip_status ms = lp_solve_mip(P, o->time_limit, &gap);
-	prog->scale = 1;
-	prog->what = "the exact LPs of its pattern";
+/* What the program found: its pattern checked by exact LPs (see the
+ * top) into r; SW_OK, or SW_EANALYSIS with the message. */
+static enum sw_status global_result(struct lp *P, const struct glayout *gp,
+				    enum lp_mip_status ms, double gap,
+				    struct sample_ws *ws, const double *xi,
+				    double lam_std, struct solve_result *r,
+				    double time_limit, char *err)
+{
+	const struct glayout g = *gp;
+	const struct statics *st = sample_statics(ws);
+	int m = g.m;
 	enum sw_status ret = SW_OK;
 	if (ms == LP_MIP_OPTIMAL || ms == LP_MIP_FEASIBLE) {
 		/* the pattern, checked by exact LPs (see the top) */
@@ -446,8 +448,46 @@ static enum sw_status solve_global(const struct wall *w,
 		r->status = SAMPLE_NUMERICAL;
 		ret = sw_fail(err, SW_EANALYSIS,
 			      "the mixed-integer solver found no solution within %g s",
-			      o->time_limit);
+			      time_limit);
 	}
+	return ret;
+}
+
+static enum sw_status solve_global(const struct wall *w,
+				   const struct solve_opts *o,
+				   struct sample_ws *ws, const double *xi,
+				   double lam_std, struct solve_result *r,
+				   char *err, struct progress *prog)
+{
+	const struct statics *st = sample_statics(ws);
+	int m = w->nifaces, R = st->nrows;
+	struct glayout g;
+	glayout(&g, m, R);
+	double lam_hi = lam_std / st->S;	/* scaled */
+	double M = max_total_normal(st, lam_hi * (1 + 1e-9) + 1e-12);
+	r->bounds_derived = isfinite(M);
+	if (!r->bounds_derived)
+		M = 1e3 * w->nfree;	/* mean block weight = 1 */
+	M = M * (1 + 1e-6) + 1e-9;
+	double mumax = 0;
+	for (int k = 0; k < m; k++)
+		mumax = fmax(mumax, w->ifaces[k].mu);
+	double Mf = 2 * mumax * M + 1e-9;
+
+	struct lp *P = lp_new(g.nrows, g.ncols);
+	global_statics(P, &g, w, st, M, mumax);
+	global_lambda(P, &g, st, lam_hi);
+	global_velocities(P, &g, st, m);
+	global_binaries(P, &g, m, M, Mf);
+
+	double gap = NAN;
+	prog->scale = st->S;	/* the program's objective is lambda */
+	prog->what = "the mixed-integer program";
+	enum lp_mip_status ms = lp_solve_mip(P, o->time_limit, &gap);
+	prog->scale = 1;
+	prog->what = "the exact LPs of its pattern";
+	enum sw_status ret = global_result(P, &g, ms, gap, ws, xi, lam_std, r,
+					   o->time_limit, err);
 	lp_free(P);
 	return ret;
 }
@@ -455,8 +495,7 @@ static enum sw_status solve_global(const struct wall *w,
 enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			 struct solve_result *r, char *err)
 {
-	struct timespec t0;
-	clock_gettime(CLOCK_MONOTONIC, &t0);
+	double t0 = sys_now();
 	struct progress prog = { o, t0, 1, "the standard solution (LP-max)" };
 	memset(r, 0, sizeof *r);
 	r->method = o->method;
@@ -519,7 +558,7 @@ out:
 	}
 	if (o->stop)
 		lp_thread_stop_flag(NULL);
-	r->seconds = elapsed(&t0);
+	r->seconds = sys_now() - t0;
 	free(xi);
 	sample_ws_free(ws);
 	/* the solver's environment of this thread goes with its last

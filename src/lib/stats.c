@@ -49,13 +49,24 @@
  * (phi(8.5) / phi(0) < 2e-16). */
 #define STATS_KDE_CUT 8.5
 
-/* A sorted private copy of x[0..n-1] (n >= 1). */
-static double *sorted_copy(const double *x, size_t n)
+void stats_sort(double *x, size_t n)
 {
-	double *s = sw_xmalloc(n * sizeof *s);
-	memcpy(s, x, n * sizeof *s);
-	gsl_sort(s, 1, n);
+	if (n > 1)
+		gsl_sort(x, 1, n);
+}
+
+double *stats_sorted_copy(const double *x, size_t n)
+{
+	double *s = sw_xmalloc(sizeof(double) * (n ? n : 1));
+	memcpy(s, x, sizeof(double) * n);
+	stats_sort(s, n);
 	return s;
+}
+
+int stats_bin(double x, double lo, double width, int nbins)
+{
+	double k = floor((x - lo) / width);
+	return k < 0 ? 0 : k >= nbins ? nbins - 1 : (int)k;
 }
 
 /* ---- quantiles -------------------------------------------------------- */
@@ -186,7 +197,7 @@ void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 	if (n == 0)
 		return;
 
-	double *v = sorted_copy(x, n);
+	double *v = stats_sorted_copy(x, n);
 	s->min = v[0];
 	s->max = v[n - 1];
 	s->p05 = stats_quantile_sorted(v, n, 0.05);
@@ -261,9 +272,7 @@ void stats_histogram(const double *sorted, size_t n, double width,
 	h->nbins = nbins;
 	h->count = sw_xcalloc((size_t)nbins, sizeof *h->count);
 	for (size_t i = 0; i < n; i++) {
-		double k = floor((sorted[i] - lo) / width);
-		int b = k < 0 ? 0 : k >= nbins ? nbins - 1 : (int)k;
-		h->count[b]++;
+		h->count[stats_bin(sorted[i], lo, width, nbins)]++;
 	}
 }
 
@@ -297,7 +306,7 @@ double stats_kde_bandwidth(const double *x, size_t n)
 {
 	if (n == 0)
 		return NAN;
-	double *v = sorted_copy(x, n);
+	double *v = stats_sorted_copy(x, n);
 	double h = silverman_sorted(v, n);
 	free(v);
 	return h;
@@ -342,7 +351,7 @@ void stats_kde(const double *x, size_t n, double bw, int reflect_at_zero,
 			out[k] = NAN;
 		return;
 	}
-	double *v = sorted_copy(x, n);
+	double *v = stats_sorted_copy(x, n);
 	double h = bw > 0 && isfinite(bw) ? bw : silverman_sorted(v, n);
 	double scale = 1 / ((double)n * h);
 	for (size_t k = 0; k < ng; k++) {

@@ -8,11 +8,10 @@
 
 #include "slipwall/status.h"
 
-static const struct {
-	int exit_code;
-	const char *text;
-} status_info[] = {
-#define SW_X(name, code, text) {code, text},
+/* The exit status of each code (the table's text names the code for a
+ * reader of status.h). */
+static const int status_exit[] = {
+#define SW_X(name, code, text) code,
 	SW_STATUS_TABLE(SW_X)
 #undef SW_X
 };
@@ -21,14 +20,7 @@ int sw_status_exit(enum sw_status st)
 {
 	if ((unsigned)st >= SW_STATUS_COUNT)
 		return 1;
-	return status_info[st].exit_code;
-}
-
-const char *sw_status_text(enum sw_status st)
-{
-	if ((unsigned)st >= SW_STATUS_COUNT)
-		return "unknown status";
-	return status_info[st].text;
+	return status_exit[st];
 }
 
 enum sw_status sw_fail(char *err, enum sw_status st, const char *fmt, ...)

@@ -133,17 +133,6 @@ char *text_clean(const char *s)
 	return out;
 }
 
-void text_put(FILE *f, const char *s)
-{
-	if (text_is_clean(s)) {
-		fputs(s, f);
-		return;
-	}
-	char *c = text_clean(s);
-	fputs(c, f);
-	free(c);
-}
-
 int text_parse_long(const char *s, long lo, long hi, long *out)
 {
 	char *end;

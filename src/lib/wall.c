@@ -210,13 +210,19 @@ static int duplicate_id(const struct wall *w)
 	return dup;
 }
 
-enum sw_status wall_finish(struct wall *w, char *err)
+/* What wall_finish finds in its first pass: the wall's extent (for the
+ * ground) and the most vertices of a block. */
+struct extent {
+	double x0, y0, x1, y1, span;
+	int maxnv;
+};
+
+/* wall_finish: every vertex finite, the extents, the friction. */
+static enum sw_status finish_extent(struct wall *w, struct extent *e,
+				    char *err)
 {
 	char where[SW_ERRLEN / 2];
 	struct wall_mark none = {0, 0};
-	if (w->finished)
-		return SW_OK;
-
 	/* the extent of the wall (for the ground) and of each block (for
 	 * its tolerances) */
 	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -260,6 +266,7 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		return sw_fail(err, SW_EINPUT, "%sthe wall has no blocks",
 			       WHERE(none));
 	double span = fmax(x1 - x0, y1 - y0);
+	*e = (struct extent){x0, y0, x1, y1, span, maxnv};
 	if (!isfinite(span) || !isfinite(1.2 * span + fmax(fabs(x0), fabs(x1))))
 		return sw_fail(err, SW_EINPUT,
 			       "%sthe wall is too large: its coordinates span "
@@ -275,11 +282,17 @@ enum sw_status wall_finish(struct wall *w, char *err)
 				       WHERE(w->friction_mark[f]), mu,
 				       WALL_FRICTION_MAX, WALL_FRICTION_MAX);
 	}
+	return SW_OK;
+}
 
-	/* each polygon: convex, counter-clockwise; ids unique.  Area and
-	 * centroid of its corners alone (geom_prune), so that a vertex in
-	 * the middle of an edge does not change them by a rounding. */
-	double *corners = sw_xmalloc(sizeof(double) * 2 * (size_t)(maxnv + 1));
+/* Each polygon: convex, counter-clockwise; ids unique.  Area and
+ * centroid of its corners alone (geom_prune), so that a vertex in the
+ * middle of an edge does not change them by a rounding. */
+static enum sw_status finish_polygons(struct wall *w, const struct extent *e,
+				      char *err)
+{
+	char where[SW_ERRLEN / 2];
+	double *corners = sw_xmalloc(sizeof(double) * 2 * (size_t)(e->maxnv + 1));
 	for (int k = 0; k < w->nblocks; k++) {
 		struct wall_block *b = &w->blocks[k];
 		double tol = GEOM_PRUNE_REL * b->size;
@@ -318,37 +331,49 @@ enum sw_status wall_finish(struct wall *w, char *err)
 	if (dup >= 0)
 		return sw_fail(err, SW_EINPUT, "%sblock id '%s' is used twice",
 			       WHERE(w->blocks[dup].mark), w->blocks[dup].id);
+	return SW_OK;
+}
 
-	/* the ground: a fixed slab under the whole wall */
-	if (w->has_ground) {
-		for (int k = 0; k < w->nblocks; k++) {
-			const struct wall_block *b = &w->blocks[k];
-			double tol = GEOM_PRUNE_REL * b->size;
-			for (int i = 0; i < b->nv && !b->fixed; i++)
-				if (b->xy[2 * i + 1] < w->ground_y - tol)
-					return sw_fail(err, SW_EINPUT,
-						       "%sblock '%s' reaches below the ground (y = %g)",
-						       WHERE(b->mark), b->id,
-						       w->ground_y);
-		}
-		double pad = 0.1 * span, depth = 0.1 * span;
-		if (!isfinite(w->ground_y - depth))
-			return sw_fail(err, SW_EINPUT,
-				       "%sthe ground at y = %g is too far down: "
-				       "its slab overflows a double",
-				       WHERE(w->ground_mark), w->ground_y);
-		double g[8] = {x0 - pad, w->ground_y - depth,
-			       x1 + pad, w->ground_y - depth,
-			       x1 + pad, w->ground_y,
-			       x0 - pad, w->ground_y};
-		w->ground_block = wall_add_block(w, "ground", g, 4, 1,
-						 w->ground_mark);
-		struct wall_block *gb = &w->blocks[w->ground_block];
-		gb->size = fmax(x1 - x0 + 2 * pad, depth);
-		gb->area = geom_area(g, 4);
-		geom_centroid(g, 4, &gb->cx, &gb->cy);
+/* The ground: a fixed slab under the whole wall. */
+static enum sw_status finish_ground(struct wall *w, const struct extent *e,
+				    char *err)
+{
+	char where[SW_ERRLEN / 2];
+	if (!w->has_ground)
+		return SW_OK;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		double tol = GEOM_PRUNE_REL * b->size;
+		for (int i = 0; i < b->nv && !b->fixed; i++)
+			if (b->xy[2 * i + 1] < w->ground_y - tol)
+				return sw_fail(err, SW_EINPUT,
+					       "%sblock '%s' reaches below the ground (y = %g)",
+					       WHERE(b->mark), b->id,
+					       w->ground_y);
 	}
+	double pad = 0.1 * e->span, depth = 0.1 * e->span;
+	if (!isfinite(w->ground_y - depth))
+		return sw_fail(err, SW_EINPUT,
+			       "%sthe ground at y = %g is too far down: "
+			       "its slab overflows a double",
+			       WHERE(w->ground_mark), w->ground_y);
+	double g[8] = {e->x0 - pad, w->ground_y - depth,
+		       e->x1 + pad, w->ground_y - depth,
+		       e->x1 + pad, w->ground_y,
+		       e->x0 - pad, w->ground_y};
+	w->ground_block = wall_add_block(w, "ground", g, 4, 1,
+					 w->ground_mark);
+	struct wall_block *gb = &w->blocks[w->ground_block];
+	gb->size = fmax(e->x1 - e->x0 + 2 * pad, depth);
+	gb->area = geom_area(g, 4);
+	geom_centroid(g, 4, &gb->cx, &gb->cy);
+	return SW_OK;
+}
 
+/* No two blocks overlap. */
+static enum sw_status finish_overlap(struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
 	int oi, oj;
 	if (geom_find_overlap(w, 1e-6, &oi, &oj)) {
 		const struct wall_block *b = &w->blocks[oj];
@@ -358,8 +383,14 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			       WHERE(b->mark), b->id,
 			       w->blocks[b == &w->blocks[oi] ? oj : oi].id);
 	}
+	return SW_OK;
+}
 
-	/* weights and equation numbers */
+/* Weights and equation numbers. */
+static enum sw_status finish_weights(struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
+	struct wall_mark none = {0, 0};
 	w->nfree = 0;
 	w->total_weight = 0;
 	double area_sum = 0;
@@ -400,8 +431,15 @@ enum sw_status wall_finish(struct wall *w, char *err)
 		return sw_fail(err, SW_EINPUT,
 			       "%sthe blocks weigh nothing (unit weight %g N/m^3, thickness %g m)",
 			       WHERE(none), w->unit_weight, w->thickness);
+	return SW_OK;
+}
 
-	/* interfaces; tolerance relative to the blocks involved */
+/* The interfaces (tolerance relative to the blocks involved); every
+ * block rests on a support. */
+static enum sw_status finish_supports(struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
+	struct wall_mark none = {0, 0};
 	free(w->ifaces);
 	w->nifaces = geom_contacts(w, 1e-6, &w->ifaces);
 	int nsupports = 0;
@@ -422,8 +460,15 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			       touches ? "does not rest on any support (through the blocks it touches)"
 				       : "touches nothing");
 	}
+	return SW_OK;
+}
 
-	/* loads */
+/* The loads: directions, magnitudes, the blocks they act on, and the
+ * reference live load against the weights. */
+static enum sw_status finish_loads(struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
+	struct wall_mark none = {0, 0};
 	if (w->nloads == 0)
 		return sw_fail(err, SW_EINPUT,
 			       "%sthe wall has no live load (add a `loads` entry)",
@@ -485,18 +530,25 @@ enum sw_status wall_finish(struct wall *w, char *err)
 			       "for a double: use a magnitude nearer the "
 			       "weights", WHERE(w->loads[0].mark), live,
 			       w->mean_weight);
-	w->finished = 1;
 	return SW_OK;
 }
 
-double wall_live_reference(const struct wall *w)
+enum sw_status wall_finish(struct wall *w, char *err)
 {
-	double s = 0;
-	for (int l = 0; l < w->nloads; l++)
-		s += w->loads[l].kind == LOAD_POINT
-			     ? w->loads[l].magnitude
-			     : w->loads[l].magnitude * w->total_weight;
-	return s;
+	if (w->finished)
+		return SW_OK;
+	struct extent e = {0};
+	enum sw_status st;
+	if ((st = finish_extent(w, &e, err)) != SW_OK ||
+	    (st = finish_polygons(w, &e, err)) != SW_OK ||
+	    (st = finish_ground(w, &e, err)) != SW_OK ||
+	    (st = finish_overlap(w, err)) != SW_OK ||
+	    (st = finish_weights(w, err)) != SW_OK ||
+	    (st = finish_supports(w, err)) != SW_OK ||
+	    (st = finish_loads(w, err)) != SW_OK)
+		return st;
+	w->finished = 1;
+	return SW_OK;
 }
 
 struct wall *wall_copy(const struct wall *w)

@@ -937,6 +937,100 @@ static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
 	return out;
 }
 
+/* What one component of an edit's path did (edit_step_*). */
+enum edit_step { STEP_ON, STEP_DONE, STEP_FAIL, STEP_OOM };
+
+/* The component comp of edit k in the mapping cur: put the value val
+ * there when it is the last, else find or make the mapping it names
+ * (*child). */
+static enum edit_step edit_step_mapping(struct reader *r, int k,
+					yaml_document_t *val, int cur,
+					char *comp, int last, int *child)
+{
+	yaml_node_t *n = yaml_document_get_node(&r->doc, cur);
+	yaml_node_pair_t *pair = NULL;
+	for (yaml_node_pair_t *q = n->data.mapping.pairs.start;
+	     q < n->data.mapping.pairs.top; q++) {
+		yaml_node_t *kn = yaml_document_get_node(&r->doc, q->key);
+		if (kn && kn->type == YAML_SCALAR_NODE && key_is(kn, comp))
+			pair = q;
+	}
+	if (last) {
+		int v = edit_copy(r, val, 1, k, 0);
+		if (!v)
+			return STEP_OOM;
+		n = yaml_document_get_node(&r->doc, cur);
+		if (pair) {
+			/* (the array did not move: no pair was added to
+			 * this mapping) */
+			for (yaml_node_pair_t *q = n->data.mapping.pairs.start;
+			     q < n->data.mapping.pairs.top; q++) {
+				yaml_node_t *kn =
+				    yaml_document_get_node(&r->doc, q->key);
+				if (kn->type == YAML_SCALAR_NODE &&
+				    key_is(kn, comp))
+					q->value = v;
+			}
+		} else {
+			int kc = yaml_document_add_scalar(&r->doc, NULL,
+				(yaml_char_t *)comp, -1,
+				YAML_PLAIN_SCALAR_STYLE);
+			if (!kc || !yaml_document_append_mapping_pair(&r->doc,
+								      cur, kc,
+								      v))
+				return STEP_OOM;
+			edit_mark(r, kc, k);
+		}
+		return STEP_DONE;
+	}
+	if (pair) {
+		*child = pair->value;
+		return STEP_ON;
+	}
+	int kc = yaml_document_add_scalar(&r->doc, NULL, (yaml_char_t *)comp,
+					  -1, YAML_PLAIN_SCALAR_STYLE);
+	int c = yaml_document_add_mapping(&r->doc, NULL,
+					  YAML_BLOCK_MAPPING_STYLE);
+	if (!kc || !c || !yaml_document_append_mapping_pair(&r->doc, cur, kc, c))
+		return STEP_OOM;
+	edit_mark(r, kc, k);
+	edit_mark(r, c, k);
+	*child = c;
+	return STEP_ON;
+}
+
+/* The component comp of edit k in the list cur: an index, where the
+ * value val goes when it is the last, else the node to go on in
+ * (*child). */
+static enum edit_step edit_step_sequence(struct reader *r, int k,
+					 yaml_document_t *val, int cur,
+					 const char *comp, int last,
+					 int *child)
+{
+	yaml_node_t *n = yaml_document_get_node(&r->doc, cur);
+	long len = (long)(n->data.sequence.items.top -
+			  n->data.sequence.items.start);
+	char *end;
+	errno = 0;
+	long idx = strtol(comp, &end, 10);
+	if (!isdigit((unsigned char)*comp) || *end || errno || idx >= len) {
+		sw_fail(r->err, SW_EINPUT, "%s: '%s' is not an item of a list "
+			"of %ld (items count from 0)", r->edits[k].label, comp,
+			len);
+		return STEP_FAIL;
+	}
+	if (last) {
+		int v = edit_copy(r, val, 1, k, 0);
+		if (!v)
+			return STEP_OOM;
+		n = yaml_document_get_node(&r->doc, cur);
+		n->data.sequence.items.start[idx] = v;
+		return STEP_DONE;
+	}
+	*child = n->data.sequence.items.start[idx];
+	return STEP_ON;
+}
+
 /* Apply edit k: parse its value, find or make the path, put the value
  * there. */
 static int edit_apply(struct reader *r, int k)
@@ -975,94 +1069,25 @@ static int edit_apply(struct reader *r, int k)
 	while (comp) {
 		char *next = strtok_r(NULL, ".", &save);
 		yaml_node_t *n = yaml_document_get_node(&r->doc, cur);
-		int child = 0;
+		enum edit_step st;
 		if (n->type == YAML_MAPPING_NODE) {
-			yaml_node_pair_t *pair = NULL;
-			for (yaml_node_pair_t *q = n->data.mapping.pairs.start;
-			     q < n->data.mapping.pairs.top; q++) {
-				yaml_node_t *kn = yaml_document_get_node(&r->doc,
-									 q->key);
-				if (kn && kn->type == YAML_SCALAR_NODE &&
-				    key_is(kn, comp))
-					pair = q;
-			}
-			if (!next) {
-				int v = edit_copy(r, &val, 1, k, 0);
-				if (!v)
-					goto oom;
-				n = yaml_document_get_node(&r->doc, cur);
-				if (pair) {
-					/* (the array did not move: no pair
-					 * was added to this mapping) */
-					for (yaml_node_pair_t *q =
-					     n->data.mapping.pairs.start;
-					     q < n->data.mapping.pairs.top; q++) {
-						yaml_node_t *kn =
-						    yaml_document_get_node(&r->doc,
-									   q->key);
-						if (kn->type == YAML_SCALAR_NODE &&
-						    key_is(kn, comp))
-							q->value = v;
-					}
-				} else {
-					int kc = yaml_document_add_scalar(&r->doc,
-						NULL, (yaml_char_t *)comp, -1,
-						YAML_PLAIN_SCALAR_STYLE);
-					if (!kc || !yaml_document_append_mapping_pair(
-						    &r->doc, cur, kc, v))
-						goto oom;
-					edit_mark(r, kc, k);
-				}
-				rc = 0;
-				goto out;
-			}
-			if (pair) {
-				child = pair->value;
-			} else {
-				int kc = yaml_document_add_scalar(&r->doc, NULL,
-					(yaml_char_t *)comp, -1,
-					YAML_PLAIN_SCALAR_STYLE);
-				child = yaml_document_add_mapping(&r->doc, NULL,
-					YAML_BLOCK_MAPPING_STYLE);
-				if (!kc || !child ||
-				    !yaml_document_append_mapping_pair(&r->doc,
-								       cur, kc,
-								       child))
-					goto oom;
-				edit_mark(r, kc, k);
-				edit_mark(r, child, k);
-			}
+			st = edit_step_mapping(r, k, &val, cur, comp, !next,
+					       &cur);
 		} else if (n->type == YAML_SEQUENCE_NODE) {
-			long len = (long)(n->data.sequence.items.top -
-					  n->data.sequence.items.start);
-			long idx;
-			char *end;
-			errno = 0;
-			idx = strtol(comp, &end, 10);
-			if (!isdigit((unsigned char)*comp) || *end || errno ||
-			    idx >= len) {
-				sw_fail(r->err, SW_EINPUT, "%s: '%s' is not an "
-					"item of a list of %ld (items count from "
-					"0)", e->label, comp, len);
-				goto out;
-			}
-			if (!next) {
-				int v = edit_copy(r, &val, 1, k, 0);
-				if (!v)
-					goto oom;
-				n = yaml_document_get_node(&r->doc, cur);
-				n->data.sequence.items.start[idx] = v;
-				rc = 0;
-				goto out;
-			}
-			child = n->data.sequence.items.start[idx];
+			st = edit_step_sequence(r, k, &val, cur, comp, !next,
+						&cur);
 		} else {
 			sw_fail(r->err, SW_EINPUT, "%s: '%s' is inside a "
 				"single value, which has no keys", e->label,
 				comp);
 			goto out;
 		}
-		cur = child;
+		if (st == STEP_OOM)
+			goto oom;
+		if (st != STEP_ON) {
+			rc = st == STEP_DONE ? 0 : -1;
+			goto out;
+		}
 		comp = next;
 	}
 	sw_fail(r->err, SW_EINPUT, "%s: not a key of a wall file", e->label);

@@ -178,7 +178,7 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	t->solve = tui_solve_new();
 	if (t->solve)
 		tui_solve_wall(t->solve, w);
-	t->solve_t0 = tui_now();
+	t->solve_t0 = sys_now();
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
 }
 
@@ -222,7 +222,7 @@ static void tui_loop(struct tui *t)
 		if (more)
 			timeout = 0;
 		else if (dirty) {
-			double left = last_draw + TUI_FRAME - tui_now();
+			double left = last_draw + TUI_FRAME - sys_now();
 			timeout = left <= 0 ? 0 : (int)(left * 1000) + 1;
 		}
 		if (poll(pf, 2, timeout) < 0 && errno != EINTR)
@@ -233,11 +233,11 @@ static void tui_loop(struct tui *t)
 			dirty = 1;
 		/* the clocks of slow samples and of the solve thread tick */
 		if ((t->run.mc || (t->solve && !t->solve_done)) &&
-		    tui_now() - last_draw >= 1)
+		    sys_now() - last_draw >= 1)
 			dirty = 1;
-		if (dirty && tui_now() - last_draw >= TUI_FRAME) {
+		if (dirty && sys_now() - last_draw >= TUI_FRAME) {
 			tui_draw(t);
-			last_draw = tui_now();
+			last_draw = sys_now();
 			dirty = 0;
 		}
 	}

@@ -35,6 +35,7 @@
 #include "slipwall/history.h"
 #include "slipwall/mc.h"
 #include "slipwall/runlog.h"
+#include "slipwall/sys.h"
 #include "slipwall/tally.h"
 #include "slipwall/undo.h"
 #include "slipwall/wall.h"
@@ -136,7 +137,6 @@ struct tui {
 };
 
 /* tui_draw.c: the leaf */
-double tui_now(void);	/* seconds, monotonic */
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
 /* A file the session wrote (kind: "samples", "wall", ...), printed at q. */

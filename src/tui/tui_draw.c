@@ -15,13 +15,6 @@
 #include "slipwall/text.h"
 #include "tui.h"
 
-double tui_now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 {
 	va_list ap;

@@ -40,7 +40,7 @@ void tui_edit_set_wall(struct tui *t, struct wall *nw)
 	tui_run_start(t);
 	if (t->solve)
 		tui_solve_wall(t->solve, nw);
-	t->solve_t0 = tui_now();
+	t->solve_t0 = sys_now();
 }
 
 /* Finish nw and switch to it (the current wall goes on the undo stack;

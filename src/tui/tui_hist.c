@@ -130,11 +130,7 @@ static size_t tui_hist_bin(const double *x, size_t n, double lo, double width,
 {
 	size_t maxc = 0;
 	for (size_t i = 0; i < n; i++) {
-		int b = (int)((x[i] - lo) / width);
-		if (b < 0)
-			b = 0;
-		if (b >= nb)
-			b = nb - 1;
+		int b = stats_bin(x[i], lo, width, nb);
 		if (++count[b] > maxc)
 			maxc = count[b];
 	}

@@ -41,7 +41,7 @@ static void tui_run_free_pool(struct tui *t)
 	r->mc = NULL;
 	free(r->table);
 	r->table = NULL;
-	r->active += tui_now() - r->t_start;
+	r->active += sys_now() - r->t_start;
 }
 
 /* One popped sample: to the file, to the tally. */
@@ -123,7 +123,7 @@ static void tui_run_spawn(struct tui *t)
 		r->paused = 1;
 		return;
 	}
-	r->t_start = tui_now();
+	r->t_start = sys_now();
 	tui_signal_watch(r->mc);
 }
 
@@ -181,7 +181,7 @@ void tui_run_end(struct tui *t)
 int tui_run_pump(struct tui *t, double budget)
 {
 	struct tui_run *r = &t->run;
-	double t0 = tui_now();
+	double t0 = sys_now();
 	int n = 0;
 
 	while (r->mc) {
@@ -200,7 +200,7 @@ int tui_run_pump(struct tui *t, double budget)
 			tui_run_drain(t);
 			break;
 		}
-		if ((n & 63) == 0 && tui_now() - t0 > budget)
+		if ((n & 63) == 0 && sys_now() - t0 > budget)
 			return -1;
 	}
 	return n;
@@ -256,7 +256,7 @@ void tui_duration(char *buf, size_t len, double s)
 double tui_run_rate(const struct tui *t)
 {
 	const struct tui_run *r = &t->run;
-	double s = r->active + (r->mc ? tui_now() - r->t_start : 0);
+	double s = r->active + (r->mc ? sys_now() - r->t_start : 0);
 	return s > 0 ? (double)r->done / s : NAN;
 }
 

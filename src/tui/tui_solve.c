@@ -181,7 +181,7 @@ int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len)
 {
 	char d[32];
 	if (!t->solve_done) {
-		tui_duration(d, sizeof d, tui_now() - t->solve_t0);
+		tui_duration(d, sizeof d, sys_now() - t->solve_t0);
 		snprintf(sv, len, "computing%s %s", t->utf8 ? "\u2026" : "...", d);
 		gv[0] = 0;
 		return 0;

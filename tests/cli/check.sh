@@ -68,6 +68,16 @@ done
 "$bin" solve walls/single-block.yaml --method magic > /dev/null 2>&1
 [ $? = 2 ]
 ok_if $? "solve with an unknown method exits 2"
+# check and solve keep their own words (src/cli/cli_opts.c, posix mode)
+"$bin" solve walls/single-block.yaml --method 2> "$tmp/err"
+[ $? = 2 ] && grep -qF "unknown option or missing value: '--method'" "$tmp/err"
+ok_if $? "solve --method without a value: exit 2, 'unknown option or missing value'"
+"$bin" solve -m standard -- walls/single-block.yaml > "$tmp/m.txt" 2>&1
+[ $? = 0 ] && grep -q "standard" "$tmp/m.txt"
+ok_if $? "solve -m standard -- WALL: '--' ends the options, -m is --method"
+"$bin" check walls/single-block.yaml walls/demo.yaml --json 2> "$tmp/err"
+[ $? = 2 ] && grep -qF "expected one wall file" "$tmp/err"
+ok_if $? "check with two walls: exit 2, 'expected one wall file'"
 
 # a load pushing a block into an abutment: no finite collapse load
 cat > "$tmp/boxed.yaml" <<'Y'

@@ -48,6 +48,15 @@ bad "unknown option" "unknown option '--bogus'" $demo --bogus
 bad "two walls" "one wall file only" $demo $demo
 bad "--positions with --seed" "do not apply" $demo --positions x.csv --seed 3
 bad "missing wall file" "nonexistent.yaml" "$tmp/nonexistent.yaml"
+# the option table's kinds (src/cli/cli_opts.c): NAME=VALUE, an empty
+# string, a value that looks like an option, a choice, a range from 0
+bad "--seed=x" "--seed: 'x' is not a whole number" $demo --seed=x
+bad "--samples=" "--samples: empty file name" $demo --samples=
+bad "-n --json (the value is the next argument)" "-n: '--json'" $demo -n --json
+bad "--slp fancy" "--slp: 'fancy' is not plain or anderson" $demo --slp fancy
+bad "--at -1" "--at: '-1' is not a load >= 0" $demo --at -1
+bad "--json=1 (a flag takes no value)" "unknown option '--json=1'" $demo --json=1
+bad "the first bad option is the message" "--threads: '0'" $demo --threads 0 -n 0
 printf 'sample,status\n' >"$tmp/notsamples.csv"
 bad "a --positions file that is not a samples file" "notsamples.csv:1:" \
 	$demo --positions "$tmp/notsamples.csv"

@@ -582,8 +582,38 @@ static void test_collapse_probability(void)
 	       "a band 0.7 times as wide holds it in only %zu", in_narrow);
 }
 
+/* stats_bin: the one binning of the histogram, the report's classes and
+ * the workbench's histogram; stats_sorted_copy. */
+static void test_bin_and_sort(void)
+{
+	/* bins [0,1) [1,2) [2,3] of width 1 from 0: 0.999 is in bin 0, 1 in
+	 * bin 1 (half-open), 3 in the closed last bin, -0.5 below lo in
+	 * the first, 7 beyond the top in the last, 2.5 in bin 2 */
+	tap_ok(stats_bin(0.999, 0, 1, 3) == 0 && stats_bin(1, 0, 1, 3) == 1,
+	       "stats_bin: bins are half-open [lo + k w, lo + (k+1) w)");
+	tap_ok(stats_bin(3, 0, 1, 3) == 2 && stats_bin(7, 0, 1, 3) == 2,
+	       "stats_bin: the top value and beyond fall in the last bin");
+	tap_ok(stats_bin(-0.5, 0, 1, 3) == 0,
+	       "stats_bin: a value below lo falls in the first bin");
+	/* lo = 10, width 0.25: 10.6 is 2.4 widths up: bin 2 */
+	tap_ok(stats_bin(10.6, 10, 0.25, 8) == 2 &&
+		       stats_bin(1e300, 10, 0.25, 8) == 7,
+	       "stats_bin: 10.6 from 10 by 0.25 is bin 2; 1e300 the last (8)");
+	const double x[] = {3, -1, 2.5, 0, 2.5};
+	double *s = stats_sorted_copy(x, N_OF(x));
+	tap_ok(s[0] == -1 && s[1] == 0 && s[2] == 2.5 && s[3] == 2.5 &&
+		       s[4] == 3 && x[0] == 3 && x[1] == -1,
+	       "stats_sorted_copy: {3,-1,2.5,0,2.5} -> {-1,0,2.5,2.5,3}, "
+	       "the input untouched");
+	free(s);
+	s = stats_sorted_copy(x, 0);
+	tap_ok(s != NULL, "stats_sorted_copy of nothing is a valid pointer");
+	free(s);
+}
+
 int main(void)
 {
+	test_bin_and_sort();
 	test_collapse_probability();
 	test_quantiles();
 	test_ci_ranks();

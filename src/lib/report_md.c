@@ -1,0 +1,225 @@
+/*
+ * report_md.c - report.md, the Markdown summary of a report: the
+ * characteristic values (the paper's Table 1), the Kolmogorov-Smirnov
+ * test, the single solutions, the run's settings and the list of
+ * figures.  Called by report_write (report.c) with the context it
+ * computed (report_fig.h); written whole or not at all, as the figures.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "report_fig.h"
+#include "slipwall/sample.h"
+#include "slipwall/text.h"
+
+static void md_num(FILE *o, double v, const char *unit)
+{
+	if (isfinite(v))
+		fprintf(o, "%.5g%s", v, unit);
+	else
+		fprintf(o, "—");
+}
+
+static void md_ci(FILE *o, const struct stats_summary *s, const char *unit)
+{
+	if (s->has_ci)
+		fprintf(o, "[%.5g, %.5g]%s", s->p05_lo, s->p05_hi, unit);
+	else
+		fprintf(o, "none (n = %zu < 90)", s->n);
+}
+
+/* A copy of s for report.md (text_clean); NULL stays NULL. */
+static char *md_clean(const char *s)
+{
+	return s ? text_clean(s) : NULL;
+}
+
+/* A row of the table of characteristic values. */
+static void md_row(FILE *f, const char *what, size_t n,
+		   const struct stats_summary *s, const char *u)
+{
+	fprintf(f, "| %s | %zu | ", what, n);
+	md_num(f, s->p05, u);
+	fprintf(f, " | ");
+	md_ci(f, s, u);
+	fprintf(f, " | ");
+	md_num(f, s->mean, u);
+	fprintf(f, " | ");
+	md_num(f, s->std, u);
+	fprintf(f, " |\n");
+}
+
+/* The names and paths of a report as they may be printed: no control
+ * character (a newline would end a table row, an ESC reach a
+ * terminal).  NULL where the input has none. */
+struct md_text {
+	char *name, *wall_path, *command, *samples_file, *tests_source, *note;
+};
+
+static void md_values(FILE *f, const struct rctx *c)
+{
+	fprintf(f, "## Characteristic values (the paper's Table 1)\n\n");
+	fprintf(f, "| | values | 5 %% percentile (p05) | 99 %% confidence "
+		"interval of p05 | mean | std |\n|---|---:|---:|---|---:|---:|\n");
+	md_row(f, "Numerical model", c->n, &c->ms, c->unit);
+	if (c->m)
+		md_row(f, "Experimental tests", c->m, &c->ts, c->unit);
+	fprintf(f, "\nPercentiles are of type 7; the interval is "
+		"distribution-free (order statistics, coverage ≥ 99 %%) and "
+		"exists from 90 values on (docs/statistics.md).\n");
+	if (!c->m)
+		fprintf(f, "\n**No experimental loads** (the wall has no `tests:` "
+			"key and no `--tests` file was given): the figures show "
+			"the model alone, and there is no Kolmogorov-Smirnov "
+			"test.\n");
+}
+
+static void md_ks(FILE *f, const struct rctx *c)
+{
+	if (c->ks_ok) {
+		fprintf(f, "\n## Model against tests: two-sample "
+			"Kolmogorov–Smirnov\n\n");
+		fprintf(f, "x = model (%zu), y = tests (%zu), %s p-values.\n\n",
+			c->n, c->m, c->ks.exact ? "exact" : "asymptotic");
+		fprintf(f, "| statistic | value | p | hypotheses |\n"
+			"|---|---:|---:|---|\n");
+		fprintf(f, "| D | %.4g | %.4g | H1: the distributions differ |\n",
+			c->ks.d, c->ks.p_two_sided);
+		fprintf(f, "| D+ = max(F_model − F_tests) | %.4g | %.4g | "
+			"`p_greater`, H1: model < tests |\n", c->ks.d_plus,
+			c->ks.p_greater);
+		fprintf(f, "| D− = max(F_tests − F_model) | %.4g | %.4g | "
+			"`p_less`, H0: model ≤ tests (the paper's 0.994) |\n",
+			c->ks.d_minus, c->ks.p_less);
+	}
+}
+
+static void md_single(FILE *f, const struct rctx *c)
+{
+	const struct report_input *in = c->in;
+	fprintf(f, "\n## Single-solution methods (classical contact, d = 0)\n\n");
+	if (in->nsol == 0)
+		fprintf(f, "None computed.\n");
+	else
+		fprintf(f, "| method | load | note |\n|---|---:|---|\n");
+	for (int i = 0; i < in->nsol; i++) {
+		const struct report_solution *s = &in->sol[i];
+		fprintf(f, "| %s | ", s->method);
+		if (s->found)
+			md_num(f, s->lambda, c->unit);
+		else
+			fprintf(f, "—");
+		fprintf(f, " | %s |\n", *s->note ? s->note :
+			s->ran ? "" : "not run");
+	}
+}
+
+static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
+{
+	const struct report_input *in = c->in;
+	const struct report_run *r = &in->run;
+	fprintf(f, "\n## Run\n\n| setting | value |\n|---|---|\n");
+	fprintf(f, "| wall file | `%s` |\n", t->wall_path ? t->wall_path : "?");
+	fprintf(f, "| slipwall version | %s |\n", r->version ? r->version : "?");
+	if (t->samples_file)
+		fprintf(f, "| loads read from | `%s` |\n", t->samples_file);
+	if (r->seed_known)
+		fprintf(f, "| seed | %lu |\n", r->seed);
+	else
+		fprintf(f, "| seed | not recorded in the samples file |\n");
+	if (r->requested > 0)
+		fprintf(f, "| samples requested | %ld |\n", r->requested);
+	if (r->threads > 0)
+		fprintf(f, "| threads | %d (the results do not depend on it) |\n",
+			r->threads);
+	if (r->anywhere)
+		fprintf(f, "| contact points | anywhere (sorted pair of U(0, 1)) |\n");
+	else if (isfinite(r->depth))
+		fprintf(f, "| contact depth d | %g |\n", r->depth);
+	if (r->has_counts) {
+		fprintf(f, "| samples computed | %ld |\n", r->samples);
+		fprintf(f, "| accepted | %ld (%.1f %%) |\n", r->accepted,
+			r->samples ? 100.0 * (double)r->accepted /
+			(double)r->samples : 0.0);
+		long rej = r->samples - r->accepted;
+		fprintf(f, "| rejected | %ld |\n", rej);
+		for (int k = 0; k < SAMPLE_STATUS_COUNT; k++)
+			if (k != SAMPLE_ACCEPTED && r->rejected[k])
+				fprintf(f, "| rejected: %s | %ld |\n",
+					sample_status_text(k), r->rejected[k]);
+	}
+	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
+	if (in->mech)
+		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
+	if (c->m)
+		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
+			t->tests_source ? t->tests_source : "?");
+	if (t->note)
+		fprintf(f, "\n%s\n", t->note);
+}
+
+static void md_figures(FILE *f, const struct rctx *c,
+		       const struct report_opts *o)
+{
+	fprintf(f, "\n## Figures\n\n");
+	for (int i = 0; i < report_nfigures; i++) {
+		if (!report_figure_wanted(c, i)) {
+			fprintf(f, "### %s\n\nNot drawn: no mechanisms were "
+				"recorded for these loads.\n\n", report_figures[i].title);
+			continue;
+		}
+		fprintf(f, "### %s\n\n", report_figures[i].title);
+		if (o->formats & REPORT_PNG)
+			fprintf(f, "![%s](%s.png)\n\n", report_figures[i].name,
+				report_figures[i].name);
+		int any = 0;
+		if (o->formats & REPORT_SVG)
+			fprintf(f, "%s[SVG](%s.svg)", any++ ? " · " : "",
+				report_figures[i].name);
+		if (o->formats & REPORT_PDF)
+			fprintf(f, "%s[PDF](%s.pdf)", any++ ? " · " : "",
+				report_figures[i].name);
+		if (any)
+			fprintf(f, "\n\n");
+	}
+}
+
+enum sw_status report_md_write(const struct rctx *c, const char *dir,
+			       const struct report_opts *o, char *err)
+{
+	const struct report_run *r = &c->in->run;
+	char path[4096];
+	snprintf(path, sizeof path, "%s/report.md", dir);
+	struct sw_whole out;
+	enum sw_status st = sw_whole_open(&out, path, err);
+	if (st != SW_OK)
+		return st;
+	FILE *f = out.f;
+	struct md_text t = {
+		md_clean(c->w->name), md_clean(r->wall_path),
+		md_clean(r->command), md_clean(r->samples_file),
+		md_clean(r->tests_source), md_clean(r->note),
+	};
+	fprintf(f, "# slipwall report: %s\n\n", t.name ? t.name :
+		(t.wall_path ? t.wall_path : "wall"));
+	fprintf(f, "Written by slipwall %s from `%s`.", r->version ? r->version :
+		"(unknown version)", t.wall_path ? t.wall_path : "?");
+	if (t.command)
+		fprintf(f, " To reproduce it:\n\n    %s\n\n", t.command);
+	else
+		fprintf(f, "\n\n");
+	fprintf(f, "Loads: %s.\n\n", c->axis);
+	md_values(f, c);
+	md_ks(f, c);
+	md_single(f, c);
+	md_run(f, c, &t);
+	md_figures(f, c, o);
+	free(t.name);
+	free(t.wall_path);
+	free(t.command);
+	free(t.samples_file);
+	free(t.tests_source);
+	free(t.note);
+	return sw_whole_close(&out, err);
+}
