@@ -307,9 +307,9 @@ static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
 		return SW_EANALYSIS;
 	int tty = isatty(STDERR_FILENO);
 	struct tally t;
-	struct mc_item it;
+	struct record it;
 	tally_init(&t, cfg->w);
-	mc_item_init(&it, cfg->w);
+	record_init(&it, cfg->w);
 	int got;
 	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
 		if (got > 0)
@@ -320,7 +320,7 @@ static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
 			fflush(stderr);
 		}
 	}
-	mc_item_free(&it);
+	record_free(&it);
 	mc_free(m);
 	p->samples = t.samples;
 	p->accepted = t.accepted;
