@@ -26,7 +26,7 @@
 #ifndef SLIPWALL_RUNLOG_H
 #define SLIPWALL_RUNLOG_H
 
-#include "slipwall/mc.h"
+#include "slipwall/record.h"
 #include "slipwall/wall.h"
 
 struct runlog;

@@ -13,7 +13,7 @@
 #ifndef SLIPWALL_TALLY_H
 #define SLIPWALL_TALLY_H
 
-#include "slipwall/mc.h"
+#include "slipwall/record.h"
 #include "slipwall/sample.h"
 #include "slipwall/stats.h"
 

@@ -16,6 +16,10 @@
  * random numbers), so the profile of the KS distance against d is
  * smooth rather than noisy.  The best d has the least KS distance (ties:
  * the larger two-sided p-value, then the smaller d).
+ *
+ * The model's runs are the library's (run_all, run.h).  SIGINT, SIGTERM
+ * and SIGHUP stop them: the samples done (with --fit-depth, the depths
+ * done) are compared and printed, and the exit status is 1.
  */
 #include <math.h>
 #include <stdio.h>

@@ -14,15 +14,15 @@
  * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
  * Then report_write() (report.c) draws everything.
  *
- * SIGINT, SIGTERM and SIGHUP stop the command at once wherever it is
- * (the pool is stopped, report_write is cancelled between two files),
+ * SIGINT, SIGTERM and SIGHUP (run.h's handlers, for the whole command)
+ * stop it at once wherever it is (the pool is stopped, report_write is
+ * cancelled between two files),
  * and the report directory is then as it was: report_write writes into
  * a directory beside it and puts it in place only when everything is
  * written.  The exit status is 1, "interrupted", as for `run`.
  */
 #include <ctype.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -19,7 +19,6 @@
  * does all of the above; the other ranks only send.
  */
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
