@@ -59,6 +59,9 @@
 #include "slipwall/collapse.h"
 /* report    the paper's figures (cairo) and the Markdown summary */
 #include "slipwall/report.h"
+/* wedit     the edits of a wall: an editable copy, layout changes, a
+ *           block put back or added, the load's stations on the outline */
+#include "slipwall/wedit.h"
 /* undo      the undo and redo stacks of a wall being edited */
 #include "slipwall/undo.h"
 /* history   the run history of the workbench (history.tsv) */

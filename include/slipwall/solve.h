@@ -13,11 +13,22 @@
  *             pattern is then checked, and its load found, by exact LPs.
  *
  * The result's load factor is in the user's units (N for a point load of
- * 1 N).  Runs on the calling thread, in that thread's GLPK environment;
- * the thread calls lp_thread_done() when it has finished with GLPK.
+ * 1 N).  Runs on the calling thread; solve_run() frees the LP solver's
+ * environment of that thread when it returns.
+ *
+ * Interruption: with o->stop set, another thread may store a non-zero
+ * value there to end the solve early (the workbench does, when the wall
+ * it solves is replaced).  An LP in progress stops within about a second
+ * and no new one starts; solve_run() then returns SW_EINTR ("interrupted")
+ * and r->status is SAMPLE_NUMERICAL: the result means nothing.  Building
+ * the operator of a large wall is not interrupted (a few seconds at most
+ * for a thousand blocks).  global's mixed-integer search is not either:
+ * it has its own time limit.
  */
 #ifndef SLIPWALL_SOLVE_H
 #define SLIPWALL_SOLVE_H
+
+#include <stdatomic.h>
 
 #include "slipwall/sample.h"
 #include "slipwall/wall.h"
@@ -36,6 +47,9 @@ struct solve_opts {
 	void (*progress)(void *ctx, const char *what, double seconds,
 			 double incumbent, double bound);
 	void *progress_ctx;
+	/* Non-zero *stop ends the solve (SW_EINTR; see above).  NULL:
+	 * never (the default). */
+	const atomic_int *stop;
 };
 void solve_opts_default(struct solve_opts *o, enum solve_method m);
 /* "standard" -> SOLVE_STANDARD; -1 for an unknown name. */
@@ -64,7 +78,8 @@ struct solve_result {
 };
 
 /* Solve; SW_OK when the method ran (r->status says what it found),
- * SW_EANALYSIS with a message when it could not give a load. */
+ * SW_EANALYSIS with a message when it could not give a load, SW_EINTR
+ * when *o->stop ended it. */
 enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			 struct solve_result *r, char *err);
 void solve_result_free(struct solve_result *r);

@@ -50,13 +50,13 @@
  * and one LP of a very large wall runs for minutes, so a stop request
  * (Ctrl-C, a new edit in the workbench) could not reach a worker inside
  * it.  The simplex runs with messages on but delayed (out_dly): GLPK
- * prints nothing during the first half second of a solve, then a
- * progress line every half second - to the terminal hook, which looks
+ * prints nothing during the first tenth of a second of a solve, then a
+ * progress line every tenth - to the terminal hook, which looks
  * at the thread's stop flag and, if it is set, leaves the solve by the
  * same longjmp and recovery as an error.  Only whether a sample is
  * abandoned depends on the clock, never a value: an interrupted sample
- * is discarded, not reported (lp_thread_interrupted).  The same
- * half-second lines call the thread's progress hook (lp_thread_progress),
+ * is discarded, not reported (lp_thread_interrupted).  Those lines
+ * call the thread's progress hook (lp_thread_progress) every half second,
  * and so does the branch-and-cut callback, about once a second.
  */
 #include <glpk.h>
@@ -160,8 +160,11 @@ static int term_hook(void *info, const char *s)
 	(void)info;
 	if (tl_in_simplex && stop_requested())
 		longjmp(tl_jump, 2);	/* see "Interruption" above */
-	if (tl_in_simplex)
-		progress(NAN, NAN);	/* every half second of a long solve */
+	/* every half second of a long solve (the lines come every tenth) */
+	if (tl_in_simplex && tl_progress && now() - tl_progress_last >= 0.5) {
+		tl_progress_last = now();
+		progress(NAN, NAN);
+	}
 	/* GLPK's allocator's words (env/alloc.c); the error's last line is
 	 * "Error detected in file ...", so the mark is kept apart */
 	if (strstr(s, "memory allocation") || strstr(s, "no memory available"))
@@ -291,6 +294,10 @@ struct lp *lp_new(int nrows, int ncols)
 	int n = (nrows > ncols ? nrows : ncols) + 1;
 	p->ind = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
 	p->val = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	if (stop_requested()) {	/* a dead problem (stopped_writing) */
+		tl_interrupted = 1;
+		return p;
+	}
 	if (setjmp(tl_jump)) {	/* out of memory: a dead problem (top) */
 		recover();
 		p->P = NULL;
@@ -373,10 +380,28 @@ void lp_set_row_bounds(struct lp *p, int row, double lo, double hi)
 			 isfinite(lo) ? lo : 0, isfinite(hi) ? hi : 0);
 }
 
+/* A stop request (lp_thread_stop_flag) while a problem is being written
+ * kills it, as an error would: writing the problems of a large wall
+ * takes most of a second (6 problems of 9,000 columns on
+ * walls/large.yaml), and the workbench waits for its workers to stop at
+ * every edit.  The next solve of the problem reports the interruption. */
+static int stopped_writing(struct lp *p)
+{
+	if (!stop_requested())
+		return 0;
+	if (alive(p))
+		glp_delete_prob(p->P);
+	p->P = NULL;
+	tl_interrupted = 1;
+	return 1;
+}
+
 void lp_set_col(struct lp *p, int col, int n, const int *rows,
 		const double *vals)
 {
 	p->held = 0;
+	if (stopped_writing(p))
+		return;
 	for (int i = 0; i < n; i++) {
 		p->ind[i + 1] = rows[i] + 1;
 		p->val[i + 1] = vals[i];
@@ -388,6 +413,8 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 		const double *vals)
 {
 	p->held = 0;
+	if (stopped_writing(p))
+		return;
 	for (int i = 0; i < n; i++) {
 		p->ind[i + 1] = cols[i] + 1;
 		p->val[i + 1] = vals[i];
@@ -542,11 +569,11 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	}
 	glp_smcp parm;
 	glp_init_smcp(&parm);
-	/* messages on, but none before half a second, then one every half
-	 * second: the terminal hook's chance to see a stop request */
+	/* messages on, but none before a tenth of a second, then one every
+	 * tenth: the terminal hook's chance to see a stop request */
 	parm.msg_lev = GLP_MSG_ON;
-	parm.out_dly = 500;
-	parm.out_frq = 500;
+	parm.out_dly = 100;
+	parm.out_frq = 100;
 	parm.presolve = GLP_OFF;
 	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
 	parm.it_lim = tl_it_lim > 0 ? tl_it_lim :

@@ -27,7 +27,11 @@
  * `slipwall run WALL -n N --threads 1`'s elapsed time per sample on
  * this project's (loaded, shared) build machine: see the constants.
  * It is a guide to tell seconds from minutes, not a promise.
+ *
+ * The workers are named "sw-mc" (pthread_setname_np, on Linux), so that
+ * a test or a person can count them (/proc/PID/task/TID/comm, top -H).
  */
+#define _GNU_SOURCE	/* pthread_setname_np */
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -190,6 +194,9 @@ static void *worker(void *arg)
 {
 	struct mc *m = arg;
 	const struct wall *w = m->cfg.w;
+#ifdef __linux__
+	pthread_setname_np(pthread_self(), "sw-mc");
+#endif
 	pthread_mutex_lock(&m->mu);
 	int id = m->nextid++;
 	m->since[id] = now();

@@ -458,11 +458,17 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	struct timespec t0;
 	clock_gettime(CLOCK_MONOTONIC, &t0);
 	struct progress prog = { o, t0, 1, "the standard solution (LP-max)" };
-	if (o->progress)
-		lp_thread_progress(progress, &prog);
 	memset(r, 0, sizeof *r);
 	r->method = o->method;
 	r->lambda = r->lambda_onset = r->gap = r->lower_bound = NAN;
+	if (o->stop && atomic_load(o->stop)) {
+		r->status = SAMPLE_NUMERICAL;
+		return sw_fail(err, SW_EINTR, "the solve was stopped");
+	}
+	if (o->stop)
+		lp_thread_stop_flag(o->stop);
+	if (o->progress)
+		lp_thread_progress(progress, &prog);
 	sample_result_init(&r->mech, w);
 	struct sample_ws *ws = sample_ws_new(w);
 	double *xi = sw_xmalloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
@@ -504,6 +510,15 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	}
 out:
 	lp_thread_progress(NULL, NULL);
+	if (o->stop && lp_thread_interrupted()) {
+		/* whatever was found is incomplete (solve.h) */
+		r->status = SAMPLE_NUMERICAL;
+		r->lambda = r->lambda_onset = NAN;
+		r->has_mechanism = 0;
+		ret = sw_fail(err, SW_EINTR, "the solve was stopped");
+	}
+	if (o->stop)
+		lp_thread_stop_flag(NULL);
 	r->seconds = elapsed(&t0);
 	free(xi);
 	sample_ws_free(ws);

@@ -1,6 +1,6 @@
 /*
- * tui.c - the workbench: tui_main, the event loop, signals, and the
- * dispatcher of screens (main, help).
+ * tui.c - the workbench: tui_main, the terminal, the event loop and the
+ * dispatcher of screens (main, help, history).
  *
  * One thread (this one) owns the terminal.  It sleeps in poll() on stdin
  * and on the sampler's wake pipe (mc_wake_fd) for at most 100 ms, then
@@ -10,23 +10,16 @@
  * frame is at least TUI_FRAME old: at most 10 frames a second, a key
  * answered within 100 ms.
  *
- * Signals: SIGINT, SIGTERM and SIGHUP set a flag and stop the current
- * pool (mc_stop is async-signal-safe); the loop sees the flag, drains
- * the samples finished in order into the CSV, closes it, restores
- * the terminal and returns 0.  The handlers are installed before curses
- * starts, so ncurses keeps its hands off them; SIGWINCH stays with
- * ncurses, which turns it into KEY_RESIZE.  Workers block every signal
- * (mc_start, tui_solve_start), so the handler always runs on this thread
- * and the pool pointer it reads is never being freed under it.
+ * Signals (tui_signal.c): SIGINT, SIGTERM and SIGHUP end the loop the
+ * way q does.  Quitting never waits for a computation: the pool is
+ * stopped and drained (tui_run_end), the solve thread stopped and
+ * joined (tui_solve_free); their LPs see the stop within a second.
  */
 #include <errno.h>
-#include <fcntl.h>
 #include <langinfo.h>
 #include <locale.h>
 #include <math.h>
 #include <poll.h>
-#include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,150 +28,16 @@
 
 #include <curses.h>
 
-#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "tui.h"
 #include "workbench.h"
 
-/* Set by the signal handler, read by the loop. */
-static volatile sig_atomic_t tui_signalled;
-/* The pool the handler stops; written only by the UI thread, which is
- * also the only thread the handler can interrupt. */
-static struct mc *volatile tui_signal_mc;
-
 static const struct tui_screen tui_screens[TUI_SCREEN_COUNT] = {
-	[TUI_SCREEN_MAIN] = {tui_main_init, tui_main_key, tui_main_draw},
+	[TUI_SCREEN_MAIN] = {tui_home_init, tui_home_key, tui_home_draw},
 	[TUI_SCREEN_HELP] = {tui_help_init, tui_help_key, tui_help_draw},
 	[TUI_SCREEN_HISTORY] = {tui_history_init, tui_history_key,
 				tui_history_draw},
 };
-
-static void tui_on_signal(int sig)
-{
-	struct mc *m = tui_signal_mc;
-	tui_signalled = sig;
-	if (m)
-		mc_stop(m);
-}
-
-void tui_signal_watch(struct mc *m)
-{
-	tui_signal_mc = m;
-}
-
-int tui_signal_pending(void)
-{
-	return tui_signalled != 0;
-}
-
-double tui_now(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-void tui_message(struct tui *t, int is_err, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(t->msg, sizeof t->msg, fmt, ap);
-	va_end(ap);
-	t->msg_err = is_err;
-}
-
-void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii)
-{
-	mvaddstr(y, x, t->utf8 ? utf8 : ascii);
-}
-
-void tui_text(int y, int x, int w, const char *s)
-{
-	/* names and paths come from files: a control character would move
-	 * the cursor or reach the terminal (curses passes ESC through) */
-	if (!text_is_clean(s)) {
-		char *c = text_clean(s);
-		tui_text(y, x, w, c);
-		free(c);
-		return;
-	}
-	int cols = 0;
-	size_t n = 0;
-	while (s[n]) {
-		if (((unsigned char)s[n] & 0xc0) != 0x80) {
-			if (cols == w)
-				break;
-			cols++;
-		}
-		n++;
-	}
-	if (n)
-		mvaddnstr(y, x, s, (int)n);
-}
-
-int tui_cols(const char *s)
-{
-	int n = 0;
-	for (; *s; s++)
-		n += ((unsigned char)*s & 0xc0) != 0x80;
-	return n;
-}
-
-const char *tui_lam(const struct tui *t)
-{
-	return t->utf8 ? "\u03bb" : "lam";
-}
-
-const char *tui_mu(const struct tui *t)
-{
-	return t->utf8 ? "\u03bc" : "mu";
-}
-
-void tui_note_file(struct tui *t, const char *kind, const char *path)
-{
-	char *line;
-	for (int k = 0; k < t->nfiles; k++) {
-		const char *c = strchr(t->files[k], ':');
-		if (c && !strncmp(t->files[k], kind, (size_t)(c - t->files[k])) &&
-		    !strcmp(c + 2, path))
-			return;	/* written again: listed once */
-	}
-	size_t len = strlen(kind) + strlen(path) + 3;
-	line = malloc(len);
-	if (!line)
-		return;
-	snprintf(line, len, "%s: %s", kind, path);
-	char **v = realloc(t->files, sizeof *v * (size_t)(t->nfiles + 1));
-	if (!v) {
-		free(line);
-		return;
-	}
-	t->files = v;
-	t->files[t->nfiles++] = line;
-}
-
-const char *tui_load_unit(const struct wall *w)
-{
-	for (int l = 0; l < w->nloads; l++)
-		if (w->loads[l].kind == LOAD_BODY)
-			return "load factor";
-	return "N";
-}
-
-void tui_set_wall(struct tui *t, struct wall *nw)
-{
-	tui_run_end(t);
-	if (t->solve)
-		tui_solve_abandon(t->solve);
-	t->solve = NULL;
-	wall_free(t->w);
-	t->w = nw;
-	t->has_std = t->has_gil = t->solve_done = 0;
-	t->mech_sel = 0;
-	tui_run_start(t);
-	t->solve = tui_solve_start(nw);
-	t->solve_t0 = tui_now();
-}
 
 static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
 {
@@ -273,55 +132,12 @@ static void tui_stderr_end(int saved, const char *path)
 	unlink(path);
 }
 
-static int tui_signals(void)
+/* curses on the terminal, set up; NULL if it cannot start. */
+static SCREEN *tui_terminal(struct tui *t)
 {
-	struct sigaction sa;
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = tui_on_signal;
-	sigemptyset(&sa.sa_mask);
-	/* no SA_RESTART: poll() returns EINTR and the loop looks */
-	if (sigaction(SIGINT, &sa, NULL) || sigaction(SIGTERM, &sa, NULL) ||
-	    sigaction(SIGHUP, &sa, NULL))
-		return -1;
-	signal(SIGPIPE, SIG_IGN);
-	return 0;
-}
-
-int tui_main(const char *path)
-{
-	struct tui tt, *t = &tt;
-	char err[SW_ERRLEN];
-	struct wall *w;
-
-	memset(t, 0, sizeof *t);
-	if (wallfile_load(path, &w, err) != SW_OK) {
-		fprintf(stderr, "%s\n", err);
-		return 2;
-	}
-	if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
-		fprintf(stderr, "slipwall: the workbench needs a terminal "
-				"(use 'slipwall run' for batch work)\n");
-		wall_free(w);
-		return 2;
-	}
-	setlocale(LC_ALL, "");
-	t->utf8 = !strcmp(nl_langinfo(CODESET), "UTF-8");
-	t->threads = mc_ncpu();
-	if (tui_signals()) {
-		fprintf(stderr, "slipwall: cannot install signal handlers\n");
-		wall_free(w);
-		return 1;
-	}
-	char errpath[PATH_MAX];
-	int saved_err = tui_stderr_begin(errpath, sizeof errpath);
 	SCREEN *scr = newterm(NULL, stdout, stdin);
-	if (!scr) {
-		tui_stderr_end(saved_err, errpath);
-		fprintf(stderr, "slipwall: cannot start the terminal (TERM=%s)\n",
-			getenv("TERM") ? getenv("TERM") : "");
-		wall_free(w);
-		return 2;
-	}
+	if (!scr)
+		return NULL;
 	cbreak();
 	noecho();
 	nonl();
@@ -335,32 +151,68 @@ int tui_main(const char *path)
 		  BUTTON3_CLICKED, NULL);
 	mouseinterval(0);
 	getmaxyx(stdscr, t->rows, t->cols);
+	return scr;
+}
+
+/* The session's state for wall w (t takes it): undo, history, the
+ * first run and its solve. */
+static void tui_session(struct tui *t, struct wall *w, const char *path)
+{
+	char err[SW_ERRLEN], dir[PATH_MAX];
+	time_t now = time(NULL);
+	struct tm tm;
 
 	t->w = w;
 	undo_init(&t->undo, TUI_UNDO_STEPS);
 	snprintf(t->next_what, sizeof t->next_what, "opened %s",
 		 w->path ? w->path : path);
 	t->cur_x = t->cur_y = NAN;	/* placed on a block by Tab */
-	{
-		time_t now = time(NULL);
-		struct tm tm;
-		char dir[PATH_MAX];
-		localtime_r(&now, &tm);
-		strftime(t->session, sizeof t->session, "%Y%m%d-%H%M%S", &tm);
-		if (history_runs_dir(dir, sizeof dir, err) != 0 ||
-		    history_index_path(dir, t->hist_path, sizeof t->hist_path))
-			t->hist_path[0] = 0;
-	}
+	localtime_r(&now, &tm);
+	strftime(t->session, sizeof t->session, "%Y%m%d-%H%M%S", &tm);
+	if (history_runs_dir(dir, sizeof dir, err) != 0 ||
+	    history_index_path(dir, t->hist_path, sizeof t->hist_path))
+		t->hist_path[0] = 0;
 	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
 		    t->threads);
 	tui_run_start(t);
-	t->solve = tui_solve_start(w);
+	t->solve = tui_solve_new();
+	if (t->solve)
+		tui_solve_wall(t->solve, w);
 	t->solve_t0 = tui_now();
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
+}
 
+/* One turn of the loop after poll(): keys, samples, the solve thread;
+ * returns whether the screen changed. */
+static int tui_tick(struct tui *t, int *more)
+{
+	int ch, dirty = 0;
+	while (!t->quit && (ch = getch()) != ERR) {
+		dirty = 1;
+		if (ch == KEY_RESIZE)
+			getmaxyx(stdscr, t->rows, t->cols);
+		else
+			tui_key(t, ch);
+	}
+	/* pop for at most 50 ms, then come back for the keys */
+	int n = tui_run_pump(t, 0.05);
+	*more = n < 0;
+	if (n != 0)
+		dirty = 1;
+	if (t->solve && !t->solve_done &&
+	    tui_solve_poll(t->solve, &t->has_std, &t->lam_std, &t->has_gil,
+			   &t->lam_gil)) {
+		t->solve_done = 1;
+		dirty = 1;
+	}
+	return dirty;
+}
+
+static void tui_loop(struct tui *t)
+{
 	double last_draw = -1;
 	int dirty = 1, more = 0;
-	while (!t->quit && !tui_signalled) {
+	while (!t->quit && !tui_signal_pending()) {
 		struct pollfd pf[2];
 		pf[0].fd = STDIN_FILENO;
 		pf[0].events = POLLIN;
@@ -375,28 +227,10 @@ int tui_main(const char *path)
 		}
 		if (poll(pf, 2, timeout) < 0 && errno != EINTR)
 			break;
-		if (tui_signalled)
+		if (tui_signal_pending())
 			break;
-
-		int ch;
-		while (!t->quit && (ch = getch()) != ERR) {
+		if (tui_tick(t, &more))
 			dirty = 1;
-			if (ch == KEY_RESIZE)
-				getmaxyx(stdscr, t->rows, t->cols);
-			else
-				tui_key(t, ch);
-		}
-		/* pop for at most 50 ms, then come back for the keys */
-		int n = tui_run_pump(t, 0.05);
-		more = n < 0;
-		if (n != 0)
-			dirty = 1;
-		if (t->solve && !t->solve_done &&
-		    tui_solve_poll(t->solve, &t->has_std, &t->lam_std,
-				   &t->has_gil, &t->lam_gil)) {
-			t->solve_done = 1;
-			dirty = 1;
-		}
 		/* the clocks of slow samples and of the solve thread tick */
 		if ((t->run.mc || (t->solve && !t->solve_done)) &&
 		    tui_now() - last_draw >= 1)
@@ -407,13 +241,12 @@ int tui_main(const char *path)
 			dirty = 0;
 		}
 	}
+}
 
-	tui_run_end(t);
-	endwin();
-	delscreen(scr);
-	tui_stderr_end(saved_err, errpath);
-	if (t->solve)
-		tui_solve_abandon(t->solve);
+/* After the terminal is back: the history and the files of the session
+ * on stdout, everything freed. */
+static void tui_finish(struct tui *t)
+{
 	tui_history_print(t, stdout);
 	if (t->nfiles)
 		printf("files written:\n");
@@ -430,5 +263,49 @@ int tui_main(const char *path)
 	tui_history_free();
 	undo_free(&t->undo);
 	wall_free(t->w);
+}
+
+int tui_main(const char *path)
+{
+	struct tui tt, *t = &tt;
+	char err[SW_ERRLEN], errpath[PATH_MAX];
+	struct wall *w;
+
+	memset(t, 0, sizeof *t);
+	if (wallfile_load(path, &w, err) != SW_OK) {
+		fprintf(stderr, "%s\n", err);
+		return 2;
+	}
+	if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {
+		fprintf(stderr, "slipwall: the workbench needs a terminal "
+				"(use 'slipwall run' for batch work)\n");
+		wall_free(w);
+		return 2;
+	}
+	setlocale(LC_ALL, "");
+	t->utf8 = !strcmp(nl_langinfo(CODESET), "UTF-8");
+	t->threads = mc_ncpu();
+	if (tui_signal_install()) {
+		fprintf(stderr, "slipwall: cannot install signal handlers\n");
+		wall_free(w);
+		return 1;
+	}
+	int saved_err = tui_stderr_begin(errpath, sizeof errpath);
+	SCREEN *scr = tui_terminal(t);
+	if (!scr) {
+		tui_stderr_end(saved_err, errpath);
+		fprintf(stderr, "slipwall: cannot start the terminal (TERM=%s)\n",
+			getenv("TERM") ? getenv("TERM") : "");
+		wall_free(w);
+		return 2;
+	}
+	tui_session(t, w, path);
+	tui_loop(t);
+	tui_run_end(t);
+	tui_solve_free(t->solve);
+	endwin();
+	delscreen(scr);
+	tui_stderr_end(saved_err, errpath);
+	tui_finish(t);
 	return 0;
 }

@@ -2,22 +2,28 @@
  * tui.h - the workbench's internal map: one state struct, one file per
  * screen or pane, one UI thread.
  *
- * Who does what:
- *   tui.c        tui_main, the poll() loop, signals, the screen dispatcher
- *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
- *   tui_solve.c  the one-shot thread that computes standard and gilbert
- *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
- *   tui_hist.c   the histogram pane
- *   tui_stats.c  the statistics pane
- *   tui_edit.c   the main screen's keys: edits, the prompt line
- *   tui_file.c   save (YAML + JSON) and open
+ * Who does what, from the top of the calls down (a file calls only
+ * files below it; tui_draw.c and tui_signal.c call none):
+ *   tui.c        tui_main: the terminal, the poll() loop, the screens
+ *   tui_home.c   the main screen: its key table, its layout
  *   tui_help.c   the help screen
  *   tui_history.c the run history: its rows, the H screen, what q prints
+ *   tui_io.c     the keys that read and write files: save, open, report
+ *   tui_edit.c   the edits of the wall (through src/lib/wedit.c), undo
+ *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
+ *   tui_stats.c  the statistics pane
+ *   tui_hist.c   the histogram pane
+ *   tui_solve.c  the one solve thread: standard and gilbert of the wall
+ *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
+ *   tui_file.c   where the samples files go, and their names
+ *   tui_prompt.c the prompt line
+ *   tui_signal.c SIGINT, SIGTERM, SIGHUP
+ *   tui_draw.c   text helpers, the message line, the clock
  *
  * Threads: only the UI thread (the one in tui_main) calls curses, reads
  * or writes `struct tui`.  The sampler's workers and the solve thread
- * never see it: they read a finished wall and publish through mc_pop()
- * and tui_solve_poll().
+ * never see it: they read a finished wall (the solve thread its own
+ * copy) and publish through mc_pop() and tui_solve_poll().
  */
 #ifndef SLIPWALL_TUI_H
 #define SLIPWALL_TUI_H
@@ -101,7 +107,7 @@ struct tui {
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
 
-	struct tui_solve *solve;/* standard/gilbert for this wall */
+	struct tui_solve *solve;/* the solve thread (standard, gilbert) */
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */
@@ -112,7 +118,7 @@ struct tui {
 	int rows, cols;
 	enum tui_screen_id screen;
 
-	/* the prompt line (owned by tui_edit.c) */
+	/* the prompt line (owned by tui_prompt.c) */
 	int prompting;
 	char plabel[64];
 	char pbuf[PATH_MAX];
@@ -129,18 +135,12 @@ struct tui {
 	int quit;
 };
 
-/* tui.c */
-/* A file the session wrote (kind: "samples", "wall", ...), printed at q. */
-void tui_note_file(struct tui *t, const char *kind, const char *path);
+/* tui_draw.c: the leaf */
+double tui_now(void);	/* seconds, monotonic */
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
-/* Replace the wall (t takes nw, finished) and restart sampling on it. */
-void tui_set_wall(struct tui *t, struct wall *nw);
-/* The pool a signal handler should stop (NULL: none). */
-void tui_signal_watch(struct mc *m);
-/* A terminating signal has arrived: start nothing new. */
-int tui_signal_pending(void);
-double tui_now(void);
+/* A file the session wrote (kind: "samples", "wall", ...), printed at q. */
+void tui_note_file(struct tui *t, const char *kind, const char *path);
 /* Draw a UTF-8 or an ASCII string depending on the locale. */
 void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii);
 /* Draw s at (y, x), at most w columns (UTF-8 aware: one column per code
@@ -150,11 +150,35 @@ void tui_text(int y, int x, int w, const char *s);
 const char *tui_skip(const char *s, int k);
 /* Columns of a UTF-8 string (one per code point). */
 int tui_cols(const char *s);
+/* s in at most w columns, its middle cut ("/home/…/demo-1.csv"). */
+void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s,
+		int w);
+/* Row y as a full-width bar (title and status lines). */
+void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
 /* The unit of λ: "N" (point loads) or "load factor" (a body load). */
 const char *tui_load_unit(const struct wall *w);
+
+/* tui_signal.c */
+int tui_signal_install(void);	/* before curses starts; -1 on failure */
+/* The pool a signal handler should stop (NULL: none). */
+void tui_signal_watch(struct mc *m);
+/* A terminating signal has arrived: start nothing new. */
+int tui_signal_pending(void);
+
+/* tui_prompt.c */
+void tui_prompt(struct tui *t, const char *label, const char *initial,
+		tui_prompt_done done);
+void tui_prompt_key(struct tui *t, int ch);	/* while t->prompting */
+void tui_prompt_draw(struct tui *t, int y);
+
+/* tui_file.c */
+/* The wall's short name: file name without directory and .yaml. */
+void tui_file_stem(const struct wall *w, char *out, size_t len);
+/* The directory and name of the next samples file. */
+int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err);
 
 /* tui_run.c */
 void tui_run_start(struct tui *t);	/* new CSV, new tally, sample */
@@ -169,30 +193,26 @@ int tui_run_progress(struct tui *t, struct mc_progress *p);
 void tui_duration(char *buf, size_t len, double s);
 const char *tui_run_state(const struct tui *t);	/* "running", ... */
 
-/* tui_solve.c: standard and gilbert on a private copy of the wall */
-struct tui_solve *tui_solve_start(const struct wall *w);
-/* 1 when finished (values filled; has_* say which exist), else 0. */
+/* tui_solve.c: standard and gilbert of the wall, on one thread */
+struct tui_solve *tui_solve_new(void);
+/* Solve w (copied) next: a solve still running is stopped, and w's
+ * starts when it has ended (walls handed over meanwhile replace w). */
+void tui_solve_wall(struct tui_solve *s, const struct wall *w);
+/* Every tick: 1 when the latest wall's values are known (has_* say
+ * which exist), else 0; starts the waiting wall's thread. */
 int tui_solve_poll(struct tui_solve *s, int *has_std, double *std,
 		   int *has_gil, double *gil);
 /* The values as text: 1 with both filled ("235.4", "n/a"), or 0 with
  * sv saying how long they have been computing ("computing... 12 s"). */
 int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len);
-/* The caller lets go: the thread frees everything when it ends. */
-void tui_solve_abandon(struct tui_solve *s);
+/* Stop the thread, join it (quick once stopped), free; NULL is fine. */
+void tui_solve_free(struct tui_solve *s);
 
 /* tui_wall.c */
 void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w);
-/* Move the first point load to the next boundary station in direction
- * (dx, dy) (one of the arrow keys); 0 if there is none. */
-int tui_wall_load_step(const struct wall *w, int dx, int dy, double at[2]);
-/* Move at to the nearest boundary station of w, preferring faces that a
- * load of direction dir acts across; 0 if there is none. */
-int tui_wall_load_nearest(const struct wall *w, const double dir[2],
-			  double at[2]);
 /* The mechanism shown: joint states and velocities, label; 0 if none. */
 int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w);
-int tui_wall_block_at(const struct wall *w, double x, double y);
 /* The wall point under screen cell (y, x) in the last drawing; 0 if
  * none has been drawn. */
 int tui_wall_point(int y, int x, double *wx, double *wy);
@@ -204,30 +224,31 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w);
 /* Returns the rows it used. */
 int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w);
 
-/* tui_edit.c: the main screen */
-void tui_main_init(struct tui *t);
-enum tui_screen_id tui_main_key(struct tui *t, int ch);
-void tui_main_draw(struct tui *t);
-void tui_prompt(struct tui *t, const char *label, const char *initial,
-		tui_prompt_done done);
-/* A copy of w to edit: unfinished, without the generated ground, marks
- * cleared.  regen (or NULL): a layout whose blocks replace the generated
- * ones (layout_generate; the other blocks are kept); skip: a block index
- * to leave out (-1: none).  NULL + err on failure. */
-struct wall *tui_edit_copy(const struct wall *w,
-			   const struct wall_layout *regen, int skip, char *err);
-/* Finish nw and switch to it (the current wall goes on the undo stack;
- * `what` names the edit in the message and the history); on failure
- * show the message, free nw and keep the current wall.  Returns 0 on
- * success. */
-int tui_edit_apply(struct tui *t, struct wall *nw, const char *what);
+/* tui_edit.c: the edits; the tui_edit_key_* are the main screen's
+ * handlers of their keys (tui_home.c's table) */
+/* Replace the wall (t takes nw, finished): a new run, a new solve. */
+void tui_edit_set_wall(struct tui *t, struct wall *nw);
+void tui_edit_key_undo(struct tui *t, int ch);		/* u, U, Ctrl-R */
+void tui_edit_key_friction(struct tui *t, int ch);	/* f, F */
+void tui_edit_key_depth(struct tui *t, int ch);		/* e, E, i */
+void tui_edit_key_turn(struct tui *t, int ch);		/* d, D */
+void tui_edit_key_bond(struct tui *t, int ch);		/* b, B */
+void tui_edit_key_prompt(struct tui *t, int ch);	/* g, P, c, L, w */
+void tui_edit_key_block(struct tui *t, int ch);		/* a, x, Delete */
+/* The point load to the next station in direction (dx, dy). */
+void tui_edit_load_step(struct tui *t, int dx, int dy);
+/* The point load to the station nearest (x, y) (a right click). */
+void tui_edit_load_to(struct tui *t, double x, double y);
 
-/* tui_file.c */
-void tui_file_save(struct tui *t);	/* asks for a path */
-void tui_file_open(struct tui *t);	/* asks for a path */
-void tui_file_report(struct tui *t);	/* asks for a directory */
-/* The directory and name of the next samples file. */
-int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err);
+/* tui_io.c: each asks for a path on the prompt line */
+void tui_io_save(struct tui *t);	/* s: the wall and a summary */
+void tui_io_open(struct tui *t);	/* o: another wall */
+void tui_io_report(struct tui *t);	/* R: a directory */
+
+/* tui_home.c: the main screen */
+void tui_home_init(struct tui *t);
+enum tui_screen_id tui_home_key(struct tui *t, int ch);
+void tui_home_draw(struct tui *t);
 
 /* tui_history.c */
 void tui_history_record(struct tui *t);	/* the current run ends */
@@ -238,10 +259,6 @@ void tui_history_free(void);
 void tui_history_init(struct tui *t);
 enum tui_screen_id tui_history_key(struct tui *t, int ch);
 void tui_history_draw(struct tui *t);
-/* s in at most w columns, its middle cut ("/home/…/demo-1.csv"). */
-void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s,
-		int w);
-
 /* tui_help.c */
 void tui_help_init(struct tui *t);
 enum tui_screen_id tui_help_key(struct tui *t, int ch);

@@ -43,19 +43,20 @@ static const char *tui_hist_level(const struct tui *t, int eighths)
 	return eighths >= 4 ? "+" : ".";
 }
 
-void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
-{
-	const struct stats_sorted *s = &t->run.tally.lam;
-	const struct wall *wall = t->w;
+/* The axis: lo .. hi over the data of both runs and the markers; the
+ * single-solution values far beyond the data go in far[]. */
+struct tui_hist_axis {
+	double lo, hi;
 	struct tui_mark mk[64];
-	int nmk = 0, nfar = 0;
+	int nmk;
 	const char *far[2];
-	char buf[256];
-	size_t n = s->n;
+	int nfar;
+};
 
-	const double *px = t->prev_lam;
-	size_t pn = t->prev_n;
-	if (pn) {
+static void tui_hist_title(struct tui *t, int y0, int x0, int w, size_t n)
+{
+	char buf[256];
+	if (t->prev_n) {
 		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted; %s run %d)",
 			 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
 		if (tui_cols(buf) > w)
@@ -67,11 +68,18 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	attron(A_BOLD);
 	tui_text(y0, x0, w, buf);
 	attroff(A_BOLD);
-	int rows = h - 4;
-	if (rows < 1 || w < 10)
-		return;
+}
 
+/* The axis of the histogram; 0 when there is nothing to draw yet. */
+static int tui_hist_range(const struct tui *t, struct tui_hist_axis *a)
+{
+	const struct stats_sorted *s = &t->run.tally.lam;
+	const struct wall *wall = t->w;
+	const double *px = t->prev_lam;
+	size_t n = s->n, pn = t->prev_n;
 	double lo = INFINITY, hi = -INFINITY;
+
+	a->nmk = a->nfar = 0;
 	if (n) {
 		lo = s->x[0];
 		hi = s->x[n - 1];
@@ -80,11 +88,11 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 		lo = fmin(lo, px[0]);
 		hi = fmax(hi, px[pn - 1]);
 	}
-	for (int i = 0; i < wall->ntests && nmk < 60; i++)
-		mk[nmk++] = (struct tui_mark){wall->tests[i], "T"};
-	for (int i = 0; i < nmk; i++) {
-		lo = fmin(lo, mk[i].v);
-		hi = fmax(hi, mk[i].v);
+	for (int i = 0; i < wall->ntests && a->nmk < 60; i++)
+		a->mk[a->nmk++] = (struct tui_mark){wall->tests[i], "T"};
+	for (int i = 0; i < a->nmk; i++) {
+		lo = fmin(lo, a->mk[i].v);
+		hi = fmax(hi, a->mk[i].v);
 	}
 	/* the single-solution values: on the axis unless far beyond */
 	struct tui_mark one[2];
@@ -96,48 +104,33 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	double span = isfinite(hi - lo) ? hi - lo : 0;
 	for (int i = 0; i < none; i++) {
 		if (n && span > 0 && one[i].v > hi + 0.5 * span) {
-			far[nfar++] = one[i].g;
+			a->far[a->nfar++] = one[i].g;
 			continue;
 		}
-		mk[nmk++] = one[i];
+		a->mk[a->nmk++] = one[i];
 		lo = fmin(lo, one[i].v);
 		hi = fmax(hi, one[i].v);
 	}
-	if (!isfinite(lo)) {
-		tui_text(y0 + 1, x0, w, "waiting for accepted samples...");
-		return;
-	}
+	if (!isfinite(lo))
+		return 0;
 	if (!(hi > lo)) {
 		double d = fabs(lo) > 0 ? 0.05 * fabs(lo) : 0.5;
 		lo -= d;
 		hi += d;
 	}
+	a->lo = lo;
+	a->hi = hi;
+	return 1;
+}
 
-	int nb = w;
-	if (n >= 2) {
-		double fd = stats_fd_width(s->x, n);
-		if (fd > 0 && isfinite(fd))
-			nb = (int)ceil((hi - lo) / fd);
-	}
-	if (nb < 8)
-		nb = 8;
-	if (nb > w)
-		nb = w;
-	int cpb = w / nb;
-	nb = w / cpb;
-	int cols = nb * cpb;
-	double width = (hi - lo) / nb;
-
-	size_t *count = calloc((size_t)nb, sizeof *count);
-	size_t *pcount = calloc((size_t)nb, sizeof *pcount);
-	if (!count || !pcount) {
-		free(count);
-		free(pcount);
-		return;
-	}
+/* How many of the n values x fall in each of nb bins of width from lo
+ * (the ends clamped); returns the largest count. */
+static size_t tui_hist_bin(const double *x, size_t n, double lo, double width,
+			   size_t *count, int nb)
+{
 	size_t maxc = 0;
 	for (size_t i = 0; i < n; i++) {
-		int b = (int)((s->x[i] - lo) / width);
+		int b = (int)((x[i] - lo) / width);
 		if (b < 0)
 			b = 0;
 		if (b >= nb)
@@ -145,17 +138,19 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (++count[b] > maxc)
 			maxc = count[b];
 	}
+	return maxc;
+}
+
+/* The previous run's outline, then this run's bars, in rows rows above
+ * y0 + rows + 1; nb bins of cpb columns each. */
+static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
+			   int cpb, const size_t *count, const size_t *pcount,
+			   size_t maxc)
+{
+	size_t n = t->run.tally.lam.n, pn = t->prev_n;
+	int cols = nb * cpb;
 	/* both runs on one scale of relative frequency */
 	double maxf = n ? (double)maxc / (double)n : 0;
-	if (n)
-		for (size_t i = 0; i < pn; i++) {
-			int b = (int)((px[i] - lo) / width);
-			if (b < 0)
-				b = 0;
-			if (b >= nb)
-				b = nb - 1;
-			pcount[b]++;
-		}
 	for (int b = 0; b < nb && pn; b++)
 		maxf = fmax(maxf, (double)pcount[b] / (double)pn);
 	int pattr = t->colors ? COLOR_PAIR(4) : A_DIM;
@@ -183,28 +178,68 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	}
 	if (attr)
 		attroff(attr);
+}
+
+/* The bins (Freedman-Diaconis, whole columns each) and the bars;
+ * returns the columns used, or -1. */
+static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
+			 const struct tui_hist_axis *a)
+{
+	const struct stats_sorted *s = &t->run.tally.lam;
+	size_t n = s->n;
+	int nb = w;
+	if (n >= 2) {
+		double fd = stats_fd_width(s->x, n);
+		if (fd > 0 && isfinite(fd))
+			nb = (int)ceil((a->hi - a->lo) / fd);
+	}
+	if (nb < 8)
+		nb = 8;
+	if (nb > w)
+		nb = w;
+	int cpb = w / nb;
+	nb = w / cpb;
+	double width = (a->hi - a->lo) / nb;
+
+	size_t *count = calloc((size_t)nb, sizeof *count);
+	size_t *pcount = calloc((size_t)nb, sizeof *pcount);
+	if (!count || !pcount) {
+		free(count);
+		free(pcount);
+		return -1;
+	}
+	size_t maxc = tui_hist_bin(s->x, n, a->lo, width, count, nb);
+	if (n)
+		tui_hist_bin(t->prev_lam, t->prev_n, a->lo, width, pcount, nb);
+	tui_hist_paint(t, y0, x0, rows, nb, cpb, count, pcount, maxc);
 	free(count);
 	free(pcount);
+	return nb * cpb;
+}
 
-	int ya = y0 + rows + 1;
+/* The axis line at row ya with its markers, the numbers under it. */
+static void tui_hist_axis(struct tui *t, int ya, int x0, int w, int cols,
+			  const struct tui_hist_axis *a)
+{
 	for (int c = 0; c < cols; c++)
 		tui_put(t, ya, x0 + c, "─", "-");
-	attr = (t->colors ? COLOR_PAIR(4) : 0) | A_BOLD;
+	int attr = (t->colors ? COLOR_PAIR(4) : 0) | A_BOLD;
 	attron(attr);
-	for (int i = 0; i < nmk; i++) {
-		int c = (int)lround((mk[i].v - lo) / (hi - lo) * (cols - 1));
-		mvaddstr(ya, x0 + c, mk[i].g);
+	for (int i = 0; i < a->nmk; i++) {
+		int c = (int)lround((a->mk[i].v - a->lo) / (a->hi - a->lo) *
+				    (cols - 1));
+		mvaddstr(ya, x0 + c, a->mk[i].g);
 	}
-	for (int i = 0; i < nfar; i++) {
-		mvaddstr(ya, x0 + cols - 2 - 2 * i, far[i]);
+	for (int i = 0; i < a->nfar; i++) {
+		mvaddstr(ya, x0 + cols - 2 - 2 * i, a->far[i]);
 		mvaddstr(ya, x0 + cols - 1 - 2 * i, ">");
 	}
 	attroff(attr);
 
 	char l[32], m[32], r[32];
-	snprintf(l, sizeof l, "%.4g", lo);
-	snprintf(m, sizeof m, "%.4g", 0.5 * (lo + hi));
-	snprintf(r, sizeof r, "%.4g", hi);
+	snprintf(l, sizeof l, "%.4g", a->lo);
+	snprintf(m, sizeof m, "%.4g", 0.5 * (a->lo + a->hi));
+	snprintf(r, sizeof r, "%.4g", a->hi);
 	tui_text(ya + 1, x0, w, l);
 	int mc = (cols - (int)strlen(m)) / 2;
 	if (mc > (int)strlen(l))
@@ -212,6 +247,27 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	int rc = cols - (int)strlen(r);
 	if (rc > mc + (int)strlen(m))
 		tui_text(ya + 1, x0 + rc, w - rc, r);
+}
+
+void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
+{
+	const struct wall *wall = t->w;
+	struct tui_hist_axis a;
+	char buf[256];
+
+	tui_hist_title(t, y0, x0, w, t->run.tally.lam.n);
+	int rows = h - 4;
+	if (rows < 1 || w < 10)
+		return;
+	if (!tui_hist_range(t, &a)) {
+		tui_text(y0 + 1, x0, w, "waiting for accepted samples...");
+		return;
+	}
+	int cols = tui_hist_bars(t, y0, x0, rows, w, &a);
+	if (cols < 0)
+		return;
+	int ya = y0 + rows + 1;
+	tui_hist_axis(t, ya, x0, w, cols, &a);
 
 	char sv[32], gv[32];
 	int len;

@@ -126,35 +126,6 @@ void tui_history_lines(const struct tui *t, const struct history_row *h,
 		 h->load == 1 ? "(load factor)" : "N");
 }
 
-/* s shortened to w columns by cutting its middle ("ab…yz"). */
-const char *tui_skip(const char *s, int k)
-{
-	for (; *s; s++)
-		if (((unsigned char)*s & 0xc0) != 0x80 && k-- == 0)
-			break;
-	return s;
-}
-
-void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s, int w)
-{
-	int n = tui_cols(s);
-	if (w < 0)
-		w = 0;
-	if (n <= w) {
-		snprintf(out, len, "%s", s);
-		return;
-	}
-	if (w < 5) {
-		snprintf(out, len, "%.*s", (int)(tui_skip(s, w) - s), s);
-		return;
-	}
-	/* keep more of the end: a path's file name */
-	const char *dots = t->utf8 ? "\u2026" : "~";
-	int keep = w - 1, head = keep / 3, tail = keep - head;
-	snprintf(out, len, "%.*s%s%s", (int)(tui_skip(s, head) - s), s, dots,
-		 tui_skip(s, n - tail));
-}
-
 void tui_history_print(const struct tui *t, FILE *f)
 {
 	char a[256], b[256];

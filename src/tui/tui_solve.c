@@ -1,19 +1,28 @@
 /*
  * tui_solve.c - the single-solution values (standard, gilbert) of the
- * wall on screen, computed once per wall on a one-shot thread so that the
- * UI never waits for an LP.
+ * wall on screen, computed on a thread of their own ("sw-solve") so that
+ * the UI never waits for an LP.
  *
- * The thread works on its own copy of the wall; solve_run() keeps the LP
- * solver's text off the screen and frees its environment of the thread
- * when it returns.  It blocks every signal, like the sampler's workers.
+ * At most one solve thread exists at a time.  tui_solve_wall() hands
+ * over a new wall (a copy: the UI frees its own when the wall changes
+ * again); if a thread is still solving an older wall, its stop flag is
+ * set (solve_opts.stop: the LP in progress ends within about a second,
+ * solve_run() returns SW_EINTR) and the new wall waits as `next`.
+ * tui_solve_poll(), called by the event loop every tick, joins a thread
+ * that has ended - at once, it has ended - and only then starts the
+ * thread of the waiting wall.  Walls handed over while one waits replace
+ * it: holding a key that edits solves the first wall (briefly) and the
+ * last one, never the ones between, and never two at a time.
  *
- * Ownership: the UI either collects the result (tui_solve_poll) and later
- * abandons the job, or abandons it early (a new wall, quit).  Whichever
- * of "the thread has finished" and "the UI has let go" happens last frees
- * the job, so the UI never joins, never waits.
+ * The thread works on its copy of the wall and writes its values under
+ * the mutex; everything else belongs to the UI thread.  It blocks every
+ * signal, like the sampler's workers.  tui_solve_free() (quit) stops the
+ * thread and joins it.
  */
+#define _GNU_SOURCE	/* pthread_setname_np */
 #include <pthread.h>
 #include <signal.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,20 +32,18 @@
 
 struct tui_solve {
 	pthread_mutex_t mu;
-	struct wall *w;		/* private copy */
-	int finished, abandoned;
+	pthread_t th;
+	int running;		/* th exists and is not joined yet */
+	atomic_int stop;	/* read by the thread's LPs */
+	struct wall *w;		/* the thread's wall (its copy) */
+	struct wall *next;	/* the wall to solve next, or NULL */
+	/* under mu: written by the thread once, when it ends */
+	int finished;
 	int has_std, has_gil;
 	double std, gil;
 };
 
-static void tui_solve_free(struct tui_solve *s)
-{
-	pthread_mutex_destroy(&s->mu);
-	wall_free(s->w);
-	free(s);
-}
-
-static int tui_solve_one(const struct wall *w, enum solve_method m,
+static int tui_solve_one(struct tui_solve *s, enum solve_method m,
 			 double *lambda)
 {
 	struct solve_opts o;
@@ -46,7 +53,8 @@ static int tui_solve_one(const struct wall *w, enum solve_method m,
 
 	memset(&r, 0, sizeof r);
 	solve_opts_default(&o, m);
-	ok = solve_run(w, &o, &r, err) == SW_OK &&
+	o.stop = &s->stop;
+	ok = solve_run(s->w, &o, &r, err) == SW_OK &&
 	     r.status == SAMPLE_ACCEPTED;
 	if (ok)
 		*lambda = r.lambda;
@@ -58,8 +66,12 @@ static void *tui_solve_thread(void *arg)
 {
 	struct tui_solve *s = arg;
 	double std = 0, gil = 0;
-	int has_std = tui_solve_one(s->w, SOLVE_STANDARD, &std);
-	int has_gil = tui_solve_one(s->w, SOLVE_GILBERT, &gil);
+#ifdef __linux__
+	pthread_setname_np(pthread_self(), "sw-solve");
+#endif
+	int has_std = tui_solve_one(s, SOLVE_STANDARD, &std);
+	int has_gil = !atomic_load(&s->stop) &&
+		      tui_solve_one(s, SOLVE_GILBERT, &gil);
 
 	pthread_mutex_lock(&s->mu);
 	s->has_std = has_std;
@@ -67,63 +79,102 @@ static void *tui_solve_thread(void *arg)
 	s->has_gil = has_gil;
 	s->gil = gil;
 	s->finished = 1;
-	int gone = s->abandoned;
 	pthread_mutex_unlock(&s->mu);
-	if (gone)
-		tui_solve_free(s);
 	return NULL;
 }
 
-struct tui_solve *tui_solve_start(const struct wall *w)
+/* Start the thread on w (s takes it); no thread may be running.  On
+ * failure the values are "n/a" at once. */
+static int tui_solve_begin(struct tui_solve *s, struct wall *w)
 {
-	struct tui_solve *s = calloc(1, sizeof *s);
-	pthread_attr_t attr;
-	pthread_t th;
 	sigset_t all, old;
 
+	s->w = w;
+	s->finished = 0;
+	s->has_std = s->has_gil = 0;
+	atomic_store(&s->stop, 0);
+	sigfillset(&all);
+	pthread_sigmask(SIG_SETMASK, &all, &old);
+	int rc = pthread_create(&s->th, NULL, tui_solve_thread, s);
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	if (rc != 0) {
+		wall_free(s->w);
+		s->w = NULL;
+		return -1;
+	}
+	s->running = 1;
+	return 0;
+}
+
+struct tui_solve *tui_solve_new(void)
+{
+	struct tui_solve *s = calloc(1, sizeof *s);
 	if (!s)
 		return NULL;
 	pthread_mutex_init(&s->mu, NULL);
-	s->w = wall_copy(w);
-	pthread_attr_init(&attr);
-	pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-	sigfillset(&all);
-	pthread_sigmask(SIG_SETMASK, &all, &old);
-	int rc = pthread_create(&th, &attr, tui_solve_thread, s);
-	pthread_sigmask(SIG_SETMASK, &old, NULL);
-	pthread_attr_destroy(&attr);
-	if (rc != 0) {
-		tui_solve_free(s);
-		return NULL;
-	}
+	atomic_init(&s->stop, 0);
 	return s;
+}
+
+void tui_solve_wall(struct tui_solve *s, const struct wall *w)
+{
+	struct wall *c = wall_copy(w);
+	if (!s->running) {
+		tui_solve_begin(s, c);
+		return;
+	}
+	atomic_store(&s->stop, 1);
+	wall_free(s->next);
+	s->next = c;
+}
+
+/* Join the thread if it has ended (it has, so this does not wait). */
+static int tui_solve_reap(struct tui_solve *s)
+{
+	if (!s->running)
+		return 1;
+	pthread_mutex_lock(&s->mu);
+	int fin = s->finished;
+	pthread_mutex_unlock(&s->mu);
+	if (!fin)
+		return 0;
+	pthread_join(s->th, NULL);
+	s->running = 0;
+	wall_free(s->w);
+	s->w = NULL;
+	return 1;
 }
 
 int tui_solve_poll(struct tui_solve *s, int *has_std, double *std,
 		   int *has_gil, double *gil)
 {
-	pthread_mutex_lock(&s->mu);
-	int fin = s->finished;
-	if (fin) {
-		*has_std = s->has_std;
-		*std = s->std;
-		*has_gil = s->has_gil;
-		*gil = s->gil;
+	if (!tui_solve_reap(s))
+		return 0;
+	if (s->next) {
+		struct wall *n = s->next;
+		s->next = NULL;
+		if (tui_solve_begin(s, n) == 0)
+			return 0;
 	}
-	pthread_mutex_unlock(&s->mu);
-	return fin;
+	*has_std = s->has_std;
+	*std = s->std;
+	*has_gil = s->has_gil;
+	*gil = s->gil;
+	return 1;
 }
 
-void tui_solve_abandon(struct tui_solve *s)
+void tui_solve_free(struct tui_solve *s)
 {
 	if (!s)
 		return;
-	pthread_mutex_lock(&s->mu);
-	s->abandoned = 1;
-	int fin = s->finished;
-	pthread_mutex_unlock(&s->mu);
-	if (fin)
-		tui_solve_free(s);
+	if (s->running) {
+		atomic_store(&s->stop, 1);
+		pthread_join(s->th, NULL);
+	}
+	wall_free(s->w);
+	wall_free(s->next);
+	pthread_mutex_destroy(&s->mu);
+	free(s);
 }
 
 int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len)

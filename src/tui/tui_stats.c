@@ -69,22 +69,15 @@ static void tui_stats_nums(struct tui_lines *p, const char *fmt, int pad,
 	tui_stats_text(p, line);
 }
 
-int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
+/* Speed: samples per second, or seconds per sample when they are slow;
+ * samples in progress with their age and the time left when one takes
+ * more than a second (a large wall: minutes a sample). */
+static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 {
 	const struct tally *ta = &t->run.tally;
 	const struct wall *wall = t->w;
-	struct stats_summary s;
-	struct tui_lines p = {y0, y0 + h, x0, w};
+	int w = p->w;
 	char line[512], a[32], b[32];
-
-	tally_summary(ta, &s);
-	snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
-		 t->run.target, tui_run_state(t));
-	tui_stats_text(&p, line);
-
-	/* Speed: samples per second, or seconds per sample when they are
-	 * slow; samples in progress with their age and the time left when
-	 * one takes more than a second (a large wall: minutes a sample). */
 	double rate = tui_run_rate(t);
 	struct mc_progress pg;
 	tui_run_progress(t, &pg);
@@ -93,14 +86,14 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		v[0] = 1 / rate;
 		snprintf(line, sizeof line, "speed    %%s s a sample, %d threads",
 			 t->threads);
-		tui_stats_nums(&p, line, 0, 1, v);
+		tui_stats_nums(p, line, 0, 1, v);
 	} else if (ta->samples > 0 || pg.oldest < 1) {
 		tui_stats_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
 		snprintf(line, sizeof line, "speed    %s /s on %d threads", a,
 			 t->threads);
-		tui_stats_text(&p, line);
+		tui_stats_text(p, line);
 	} else {
-		tui_stats_text(&p, "speed    none finished yet");
+		tui_stats_text(p, "speed    none finished yet");
 	}
 	/* a wall whose first sample will be slow says so from the start,
 	 * with the a-priori estimate (rough: src/lib/mc.c, "Estimate") */
@@ -111,14 +104,14 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 			 "interfaces; rough)", a, wall->nifaces);
 		if (tui_cols(line) > w)
 			snprintf(line, sizeof line, "first    %s (estimate)", a);
-		tui_stats_text(&p, line);
+		tui_stats_text(p, line);
 	}
 	if (pg.busy > 0 && pg.oldest >= 1) {
 		long left = t->run.target - ta->samples;
 		tui_duration(a, sizeof a, pg.oldest);
 		snprintf(line, sizeof line, "working  %d sample%s, oldest %s",
 			 pg.busy, pg.busy == 1 ? "" : "s", a);
-		tui_stats_text(&p, line);
+		tui_stats_text(p, line);
 		if (ta->samples > 0) {
 			tui_duration(b, sizeof b, (double)left / rate);
 			snprintf(line, sizeof line, "left     ~%s (estimate)", b);
@@ -129,14 +122,21 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 			tui_duration(b, sizeof b, (double)rounds * pg.oldest);
 			snprintf(line, sizeof line, "left     > %s (at least)", b);
 		}
-		tui_stats_text(&p, line);
+		tui_stats_text(p, line);
 	}
+}
+
+/* Accepted, and the rejections by reason, wrapped. */
+static void tui_stats_counts(struct tui *t, struct tui_lines *p)
+{
+	const struct tally *ta = &t->run.tally;
+	int w = p->w;
+	char line[512];
 	snprintf(line, sizeof line, "accepted %ld (%.1f %%)", ta->accepted,
 		 ta->samples ? 100.0 * (double)ta->accepted / (double)ta->samples
 			     : 0.0);
-	tui_stats_text(&p, line);
+	tui_stats_text(p, line);
 
-	/* rejections by reason, wrapped */
 	long rej = ta->samples - ta->accepted;
 	int len = snprintf(line, sizeof line, "rejected %ld", rej);
 	const char *sep = ": ";
@@ -147,8 +147,8 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		int il = snprintf(item, sizeof item, "%s%s %ld", sep,
 				  sample_status_name(k), ta->rejected[k]);
 		sep = ", ";
-		if (len + il > w && p.y < p.end - 1) {
-			tui_stats_text(&p, line);
+		if (len + il > w && p->y < p->end - 1) {
+			tui_stats_text(p, line);
 			len = snprintf(line, sizeof line, "        ");
 			memmove(item, item + 2, strlen(item + 2) + 1);
 			il -= 2;
@@ -156,34 +156,45 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (len + il < (int)sizeof line)
 			len += snprintf(line + len, sizeof line - (size_t)len, "%s", item);
 	}
-	tui_stats_text(&p, line);
+	tui_stats_text(p, line);
 
+}
+
+/* The loads: order statistics, the characteristic value and its
+ * interval, the probability of collapse at the design load. */
+static void tui_stats_loads(struct tui *t, struct tui_lines *p,
+			    const struct stats_summary *s)
+{
+	const struct tally *ta = &t->run.tally;
+	const struct wall *wall = t->w;
+	char line[512];
+	double v[4];
 	const char *lam = tui_lam(t);
 	int ind = t->utf8 ? 1 : 3;	/* columns of lam */
 	snprintf(line, sizeof line, "%s min  %%s max  %%s", lam);
-	v[0] = s.min;
-	v[1] = s.max;
-	tui_stats_nums(&p, line, 10, 2, v);
+	v[0] = s->min;
+	v[1] = s->max;
+	tui_stats_nums(p, line, 10, 2, v);
 	snprintf(line, sizeof line, "%*s p05  %%s p50  %%s", ind, "");
-	v[0] = s.p05;
-	v[1] = s.p50;
-	tui_stats_nums(&p, line, 10, 2, v);
+	v[0] = s->p05;
+	v[1] = s->p50;
+	tui_stats_nums(p, line, 10, 2, v);
 	snprintf(line, sizeof line, "%*s p95  %%s mean %%s", ind, "");
-	v[0] = s.p95;
-	v[1] = s.mean;
-	tui_stats_nums(&p, line, 10, 2, v);
+	v[0] = s->p95;
+	v[1] = s->mean;
+	tui_stats_nums(p, line, 10, 2, v);
 	snprintf(line, sizeof line, "%*s  sd  %%s (%s)", ind, "",
 		 tui_load_unit(wall));
-	v[0] = s.std;
-	tui_stats_nums(&p, line, 10, 1, v);
-	v[0] = s.p05;
-	tui_stats_nums(&p, "characteristic value (p05) %s", 0, 1, v);
-	if (s.has_ci) {
-		v[0] = s.p05_lo;
-		v[1] = s.p05_hi;
-		tui_stats_nums(&p, "  99 %% interval [%s, %s]", 0, 2, v);
+	v[0] = s->std;
+	tui_stats_nums(p, line, 10, 1, v);
+	v[0] = s->p05;
+	tui_stats_nums(p, "characteristic value (p05) %s", 0, 1, v);
+	if (s->has_ci) {
+		v[0] = s->p05_lo;
+		v[1] = s->p05_hi;
+		tui_stats_nums(p, "  99 %% interval [%s, %s]", 0, 2, v);
 	} else {
-		tui_stats_text(&p, "  99 % interval: needs 90 accepted");
+		tui_stats_text(p, "  99 % interval: needs 90 accepted");
 	}
 	if (wall->design_load > 0) {
 		struct collapse c;
@@ -194,25 +205,35 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 			 lam, c.k, c.n);
 		v[0] = c.load;
 		v[1] = c.p;
-		tui_stats_nums(&p, line, 0, 2, v);
+		tui_stats_nums(p, line, 0, 2, v);
 		if (c.n > 0) {
 			v[0] = c.lo;
 			v[1] = c.hi;
-			tui_stats_nums(&p, "  99 %% interval [%s, %s] (binomial)",
+			tui_stats_nums(p, "  99 %% interval [%s, %s] (binomial)",
 				       0, 2, v);
 		}
 	}
 
+}
+
+/* The single-solution values, the KS test against the tests, the
+ * mechanisms. */
+static void tui_stats_tail(struct tui *t, struct tui_lines *p)
+{
+	const struct tally *ta = &t->run.tally;
+	const struct wall *wall = t->w;
+	char line[512];
+	double v[4];
 	char sv[32], gv[32];
 	if (tui_solve_text(t, sv, gv, sizeof sv)) {
 		v[0] = t->has_std ? t->lam_std : NAN;
 		v[1] = t->has_gil ? t->lam_gil : NAN;
 		snprintf(line, sizeof line, "standard %s  gilbert %s",
 			 t->has_std ? "%s" : "n/a%.0s", t->has_gil ? "%s" : "n/a%.0s");
-		tui_stats_nums(&p, line, 0, 2, v);
+		tui_stats_nums(p, line, 0, 2, v);
 	} else {
 		snprintf(line, sizeof line, "standard, gilbert: %s", sv);
-		tui_stats_text(&p, line);
+		tui_stats_text(p, line);
 	}
 
 	if (wall->ntests > 0) {
@@ -226,13 +247,30 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 			v[0] = ks.d;
 			v[1] = ks.p_two_sided;
 			v[2] = ks.p_greater;
-			tui_stats_nums(&p, line, 0, 3, v);
+			tui_stats_nums(p, line, 0, 3, v);
 		} else {
 			snprintf(line, sizeof line, "KS vs %d tests: -", wall->ntests);
-			tui_stats_text(&p, line);
+			tui_stats_text(p, line);
 		}
 	}
 	snprintf(line, sizeof line, "%d mechanisms; m/M shows them", ta->nmech);
+	tui_stats_text(p, line);
+}
+
+int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
+{
+	const struct tally *ta = &t->run.tally;
+	struct stats_summary s;
+	struct tui_lines p = {y0, y0 + h, x0, w};
+	char line[512];
+
+	tally_summary(ta, &s);
+	snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
+		 t->run.target, tui_run_state(t));
 	tui_stats_text(&p, line);
+	tui_stats_speed(t, &p);
+	tui_stats_counts(t, &p);
+	tui_stats_loads(t, &p, &s);
+	tui_stats_tail(t, &p);
 	return p.y - y0;
 }

@@ -14,9 +14,8 @@
  * load arrow, the block cursor.  Cells are about twice as tall as wide,
  * so x is scaled twice as much as y.
  *
- * The load moves between "stations": points spread along the parts of
- * the free blocks' edges that touch no other body (the wall's outline).
- * An arrow key picks the nearest station in its direction.
+ * The load moves between "stations" of the wall's outline: the library
+ * finds them (wedit.h), tui_edit.c moves the load.
  */
 #include <math.h>
 #include <stdio.h>
@@ -26,6 +25,7 @@
 #include <curses.h>
 
 #include "slipwall/geom.h"
+#include "slipwall/wedit.h"
 #include "tui.h"
 
 enum { CU = 1, CD = 2, CL = 4, CR = 8 };
@@ -181,19 +181,10 @@ static int tui_wall_drawn(const struct wall *w, int k)
 static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
 			 int ch, struct tui_map *m)
 {
-	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	double box[4];
 	int vert = 0;
-	for (int k = 0; k < w->nblocks; k++) {
-		const struct wall_block *b = &w->blocks[k];
-		if (!tui_wall_drawn(w, k))
-			continue;
-		for (int i = 0; i < b->nv; i++) {
-			x0 = fmin(x0, b->xy[2 * i]);
-			x1 = fmax(x1, b->xy[2 * i]);
-			y0 = fmin(y0, b->xy[2 * i + 1]);
-			y1 = fmax(y1, b->xy[2 * i + 1]);
-		}
-	}
+	wedit_bounds(w, 0, box);
+	double x0 = box[0], y0 = box[1], x1 = box[2], y1 = box[3];
 	for (int l = 0; l < w->nloads; l++)
 		if (w->loads[l].kind == LOAD_POINT &&
 		    fabs(w->loads[l].dir[1]) > 0.38)
@@ -276,16 +267,6 @@ int tui_wall_point(int y, int x, double *wx, double *wy)
 	*wx = m->x0 + (c - m->c0) / m->sx;
 	*wy = m->y1 - (r - m->r0) / m->sy;
 	return 1;
-}
-
-int tui_wall_block_at(const struct wall *w, double x, double y)
-{
-	double tol = 1e-6 * w->mean_size;
-	for (int k = 0; k < w->nblocks; k++)
-		if (tui_wall_drawn(w, k) &&
-		    geom_contains(w->blocks[k].xy, w->blocks[k].nv, x, y, tol))
-			return k;
-	return -1;
 }
 
 static void tui_wall_fill(const struct wall *w, struct tui_canvas *cv,
@@ -463,7 +444,7 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 
 	int has = tui_wall_mechanism(t, &joint, &vel, label, sizeof label, w);
 	if (t->cursor_mode) {
-		int k = tui_wall_block_at(wall, t->cur_x, t->cur_y);
+		int k = wedit_block_at(wall, t->cur_x, t->cur_y);
 		snprintf(label, sizeof label, "cursor (%.3g, %.3g): %s  a add  x remove",
 			 t->cur_x, t->cur_y,
 			 k < 0 ? "no block" : wall->blocks[k].id);
@@ -570,139 +551,4 @@ out:
 	free(cv.attr);
 	free(cv.text);
 	free(moving);
-}
-
-/* Load stations: points on the parts of free-block edges that touch no
- * other body, about one per mean block size; x, y and the outward normal
- * of the edge (4 numbers each). */
-static int tui_wall_stations(const struct wall *w, double **out)
-{
-	double tol = 1e-6 * w->mean_size;
-	int n = 0, cap = 64;
-	double *st = malloc(sizeof(double) * 4 * (size_t)cap);
-	double (*iv)[2] = malloc(sizeof *iv * (size_t)(w->nifaces + 1));
-	if (!st || !iv) {
-		free(st);
-		free(iv);
-		*out = NULL;
-		return 0;
-	}
-	for (int k = 0; k < w->nblocks; k++) {
-		const struct wall_block *b = &w->blocks[k];
-		if (b->fixed)
-			continue;
-		for (int i = 0; i < b->nv; i++) {
-			int j = (i + 1) % b->nv;
-			double px = b->xy[2 * i], py = b->xy[2 * i + 1];
-			double L = hypot(b->xy[2 * j] - px, b->xy[2 * j + 1] - py);
-			if (L <= tol)
-				continue;
-			double tx = (b->xy[2 * j] - px) / L, ty = (b->xy[2 * j + 1] - py) / L;
-			int ni = 0;
-			for (int f = 0; f < w->nifaces; f++) {
-				const struct wall_interface *fi = &w->ifaces[f];
-				if (fi->a != k && fi->b != k)
-					continue;
-				double d1 = fabs((fi->p1[0] - px) * ty - (fi->p1[1] - py) * tx);
-				double d2 = fabs((fi->p2[0] - px) * ty - (fi->p2[1] - py) * tx);
-				if (d1 > 1e3 * tol || d2 > 1e3 * tol)
-					continue;
-				double s1 = (fi->p1[0] - px) * tx + (fi->p1[1] - py) * ty;
-				double s2 = (fi->p2[0] - px) * tx + (fi->p2[1] - py) * ty;
-				iv[ni][0] = fmin(s1, s2);
-				iv[ni][1] = fmax(s1, s2);
-				ni++;
-			}
-			/* walk [0, L] and take the uncovered pieces */
-			double s = 0;
-			while (s < L - tol) {
-				double next = L;
-				int moved = 0;
-				for (int q = 0; q < ni; q++)
-					if (iv[q][0] <= s + tol && iv[q][1] > s + tol) {
-						s = iv[q][1];
-						moved = 1;
-					}
-				if (moved)
-					continue;
-				for (int q = 0; q < ni; q++)
-					if (iv[q][0] > s + tol && iv[q][0] < next)
-						next = iv[q][0];
-				double len = next - s;
-				int cnt = (int)floor(len / w->mean_size + 0.5);
-				if (cnt < 1)
-					cnt = 1;
-				for (int c = 0; c < cnt; c++) {
-					if (n == cap) {
-						cap *= 2;
-						double *ns = realloc(st, sizeof(double) * 4 * (size_t)cap);
-						if (!ns)
-							goto done;
-						st = ns;
-					}
-					double u = s + len * (c + 0.5) / cnt;
-					st[4 * n] = px + tx * u;
-					st[4 * n + 1] = py + ty * u;
-					st[4 * n + 2] = ty;	/* outward normal */
-					st[4 * n + 3] = -tx;
-					n++;
-				}
-				s = next;
-			}
-		}
-	}
-done:
-	free(iv);
-	*out = st;
-	return n;
-}
-
-int tui_wall_load_step(const struct wall *w, int dx, int dy, double at[2])
-{
-	double *st;
-	int n = tui_wall_stations(w, &st);
-	double tol = 1e-6 * w->mean_size, best = INFINITY;
-	int bi = -1;
-	for (int i = 0; i < n; i++) {
-		double ex = st[4 * i] - at[0], ey = st[4 * i + 1] - at[1];
-		double along = ex * dx + ey * dy;
-		double perp = fabs(ex * dy - ey * dx);
-		if (along <= tol)
-			continue;
-		double score = along + 3 * perp;
-		if (score < best) {
-			best = score;
-			bi = i;
-		}
-	}
-	if (bi >= 0) {
-		at[0] = st[4 * bi];
-		at[1] = st[4 * bi + 1];
-	}
-	free(st);
-	return bi >= 0;
-}
-
-int tui_wall_load_nearest(const struct wall *w, const double dir[2],
-			  double at[2])
-{
-	double *st;
-	int n = tui_wall_stations(w, &st), bi = -1;
-	double best = INFINITY;
-	for (int i = 0; i < n; i++) {
-		/* prefer faces the load acts across (normal along dir) */
-		double d = hypot(st[4 * i] - at[0], st[4 * i + 1] - at[1]) +
-			   w->mean_size * (1 - fabs(st[4 * i + 2] * dir[0] +
-						    st[4 * i + 3] * dir[1]));
-		if (d < best) {
-			best = d;
-			bi = i;
-		}
-	}
-	if (bi >= 0) {
-		at[0] = st[4 * bi];
-		at[1] = st[4 * bi + 1];
-	}
-	free(st);
-	return bi >= 0;
 }

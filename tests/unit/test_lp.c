@@ -11,6 +11,7 @@
  * b1 > 3 b2 row 1 is slack and the optimum is x = 0, y = b2.
  */
 #include <math.h>
+#include <stdatomic.h>
 
 #include "lp.h"
 #include "tap.h"
@@ -95,6 +96,38 @@ int main(void)
 	       "y free again: primal feasible but dual infeasible, the simplex");
 	tap_near(lp_obj(p), 6, 1e-12, "optimum back at (0, 6), not 3 at (2, 0)");
 	lp_free(p);
+
+	/* a stop request while problems are written (the workbench stops
+	 * its workers at every edit): a problem written or made after it is
+	 * dead at once, not half-written: once the stop is withdrawn its
+	 * solve fails (LP_ERROR), where a whole problem would solve */
+	atomic_int stop = 0;
+	lp_thread_stop_flag(&stop);
+	int col_rows[1] = {0};
+	double col_vals[1] = {1};
+	p = lp_new(1, 2);
+	lp_set_col(p, 0, 1, col_rows, col_vals);
+	lp_set_col(p, 1, 1, col_rows, col_vals);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_OPTIMAL,
+	       "written whole before any stop: solved");
+	lp_free(p);
+	p = lp_new(1, 2);
+	lp_set_col(p, 0, 1, col_rows, col_vals);
+	atomic_store(&stop, 1);
+	lp_set_col(p, 1, 1, col_rows, col_vals);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_STOPPED && lp_thread_interrupted(),
+	       "stopped while its columns were written: the solve says so");
+	atomic_store(&stop, 0);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
+	       "... and the problem is dead, not half-written");
+	lp_free(p);
+	atomic_store(&stop, 1);
+	p = lp_new(1, 2);
+	atomic_store(&stop, 0);
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
+	       "made after the stop: dead");
+	lp_free(p);
+	lp_thread_stop_flag(NULL);
 
 	lp_thread_done();
 	return tap_done();

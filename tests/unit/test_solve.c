@@ -4,7 +4,7 @@
  * involves one joint), the published Ferris & Tin-Loi values, and on
  * random small walls the global method's load (an onset of collapse
  * checked by exact LPs) and bound (below every onset load found
- * otherwise).
+ * otherwise).  And the stop flag: a solve stopped returns SW_EINTR.
  */
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -311,8 +311,59 @@ static void scale(void)
 	}
 }
 
+/* The stop flag (solve_opts.stop): set before, nothing is solved; set
+ * during a long LP of walls/large.yaml (from the progress hook, which
+ * runs only after half a second of one LP), the solve ends with
+ * SW_EINTR instead of running for minutes. */
+static void stop_flag_set(void *ctx, const char *what, double seconds,
+			  double incumbent, double bound)
+{
+	(void)what;
+	(void)seconds;
+	(void)incumbent;
+	(void)bound;
+	atomic_store((atomic_int *)ctx, 1);
+}
+
+static void stops(void)
+{
+	char err[SW_ERRLEN];
+	struct solve_opts o;
+	struct solve_result r;
+	atomic_int stop;
+	struct wall *w = tw_load_file("walls/ferris-tinloi-1.yaml");
+
+	solve_opts_default(&o, SOLVE_STANDARD);
+	atomic_init(&stop, 0);
+	o.stop = &stop;
+	enum sw_status st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_OK && r.status == SAMPLE_ACCEPTED,
+	       "a stop flag left at 0 changes nothing (%.6g)", r.lambda);
+	solve_result_free(&r);
+	atomic_store(&stop, 1);
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EINTR && r.status == SAMPLE_NUMERICAL && isnan(r.lambda),
+	       "a stop flag set before: SW_EINTR, no load (%s)", err);
+	solve_result_free(&r);
+	wall_free(w);
+
+	struct wall *big = tw_load_file("walls/large.yaml");
+	solve_opts_default(&o, SOLVE_GILBERT);
+	atomic_store(&stop, 0);
+	o.stop = &stop;
+	o.progress = stop_flag_set;
+	o.progress_ctx = &stop;
+	st = solve_run(big, &o, &r, err);
+	tap_ok(st == SW_EINTR && r.status == SAMPLE_NUMERICAL,
+	       "large.yaml, stopped during its first long LP: SW_EINTR (%s)",
+	       err);
+	solve_result_free(&r);
+	wall_free(big);
+}
+
 int main(void)
 {
+	stops();
 	scale();
 	stacks();
 	published();

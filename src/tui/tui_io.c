@@ -1,0 +1,281 @@
+/*
+ * tui_io.c - the main screen's keys that read and write files: save (s),
+ * open (o), report (R).  Each asks for a path on the prompt line.
+ *
+ * Save asks for the wall's path (default: the samples file's with
+ * .yaml) and writes the wall with wallfile_save (PATH.tmp then rename)
+ * and a JSON summary of the run beside it (.json, same way).  Open asks
+ * for a path; a file that does not load leaves the current wall and
+ * shows the reader's FILE:LINE:COLUMN message.  Report writes what
+ * `slipwall report` writes, for the current run.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "slipwall/json.h"
+#include "slipwall/stats.h"
+#include "slipwall/report.h"
+#include "slipwall/wallfile.h"
+#include "tui.h"
+
+static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
+{
+	const struct tally *ta = &t->run.tally;
+	const struct wall *w = t->w;
+	struct stats_summary s;
+	struct json j;
+
+	tally_summary(ta, &s);
+	json_init(&j, f, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, wallpath);
+	json_key(&j, "source");
+	if (w->path)
+		json_string(&j, w->path);
+	else
+		json_null(&j);
+	json_key(&j, "samples_file");
+	if (t->run.csv[0])
+		json_string(&j, t->run.csv);
+	else
+		json_null(&j);
+	json_key(&j, "seed");
+	json_uint(&j, w->seed);
+	json_key(&j, "threads");
+	json_int(&j, t->threads);
+	json_key(&j, "target");
+	json_int(&j, t->run.target);
+	tally_json(ta, &j);
+	json_key(&j, "samples_per_second");
+	json_double(&j, tui_run_rate(t));
+	json_key(&j, "mechanisms");
+	json_int(&j, ta->nmech);
+	json_key(&j, "standard");
+	if (t->solve_done && t->has_std)
+		json_double(&j, t->lam_std);
+	else
+		json_null(&j);
+	json_key(&j, "gilbert");
+	if (t->solve_done && t->has_gil)
+		json_double(&j, t->lam_gil);
+	else
+		json_null(&j);
+	if (w->ntests > 0) {
+		struct stats_ks ks;
+		json_key(&j, "ks");
+		if (ta->lam.n > 0 &&
+		    stats_ks2(ta->lam.x, ta->lam.n, w->tests, (size_t)w->ntests,
+			      &ks) == 0) {
+			json_object_begin(&j);
+			json_key(&j, "statistic");
+			json_double(&j, ks.d);
+			json_key(&j, "p_two_sided");
+			json_double(&j, ks.p_two_sided);
+			json_key(&j, "p_less");
+			json_double(&j, ks.p_less);
+			json_key(&j, "p_greater");
+			json_double(&j, ks.p_greater);
+			json_object_end(&j);
+		} else {
+			json_null(&j);
+		}
+	}
+	json_object_end(&j);
+	json_end(&j);
+}
+
+/* Write the summary whole or not at all (PATH.tmp, then renamed). */
+static int tui_io_summary(struct tui *t, const char *path,
+			    const char *wallpath, char *err)
+{
+	struct sw_whole out;
+	if (sw_whole_open(&out, path, err) != SW_OK)
+		return -1;
+	tui_io_json(t, out.f, wallpath);
+	return sw_whole_close(&out, err) == SW_OK ? 0 : -1;
+}
+
+static void tui_io_save_to(struct tui *t, const char *path)
+{
+	char err[SW_ERRLEN], json[PATH_MAX];
+	if (!path[0]) {
+		tui_message(t, 1, "save: no path given");
+		return;
+	}
+	/* analysis.samples follows the target the user set */
+	struct wall *c = wall_copy(t->w);
+	c->samples = t->run.target > 0x7fffffffL ? 0x7fffffff : (int)t->run.target;
+	enum sw_status st = wallfile_save(c, path, err);
+	wall_free(c);
+	if (st != SW_OK) {
+		tui_message(t, 1, "save: %s", err);
+		return;
+	}
+	snprintf(json, sizeof json, "%s", path);
+	char *dot = strrchr(json, '.');
+	char *slash = strrchr(json, '/');
+	if (dot && (!slash || dot > slash) &&
+	    (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
+		*dot = 0;
+	if (strlen(json) + 6 > sizeof json) {
+		tui_message(t, 1, "save: path too long");
+		return;
+	}
+	strcat(json, ".json");
+	if (tui_io_summary(t, json, path, err)) {
+		tui_message(t, 1, "saved %s; summary: %s", path, err);
+		return;
+	}
+	undo_saved(&t->undo);
+	tui_note_file(t, "wall", path);
+	tui_note_file(t, "summary", json);
+	tui_message(t, 0, "saved %s and %s; samples: %s", path, json,
+		    t->run.csv[0] ? t->run.csv : "(none)");
+}
+
+void tui_io_save(struct tui *t)
+{
+	char def[PATH_MAX];
+	if (t->run.csv[0]) {
+		snprintf(def, sizeof def, "%s", t->run.csv);
+		char *dot = strrchr(def, '.');
+		if (dot && !strcmp(dot, ".csv"))
+			*dot = 0;
+		if (strlen(def) + 6 < sizeof def)
+			strcat(def, ".yaml");
+	} else {
+		char stem[128];
+		tui_file_stem(t->w, stem, sizeof stem);
+		snprintf(def, sizeof def, "%s-edited.yaml", stem);
+	}
+	tui_prompt(t, "save wall as", def, tui_io_save_to);
+}
+
+static void tui_io_open_path(struct tui *t, const char *path)
+{
+	char err[SW_ERRLEN];
+	struct wall *nw;
+	if (!path[0]) {
+		tui_message(t, 1, "open: no path given");
+		return;
+	}
+	/* stat first: opening a FIFO or a terminal for reading would
+	 * block the UI thread (a FIFO until a writer comes) */
+	struct stat st;
+	if (stat(path, &st) != 0) {
+		tui_message(t, 1, "open: %s: %s", path, strerror(errno));
+		return;
+	}
+	if (!S_ISREG(st.st_mode)) {
+		tui_message(t, 1, "open: %s: not a regular file (%s)", path,
+			    S_ISDIR(st.st_mode) ? "a directory" :
+			    S_ISFIFO(st.st_mode) ? "a FIFO" :
+			    S_ISCHR(st.st_mode) ? "a device" : "not a file");
+		return;
+	}
+	if (wallfile_load(path, &nw, err) != SW_OK) {
+		tui_message(t, 1, "%s", err);
+		return;
+	}
+	undo_reset(&t->undo);
+	snprintf(t->next_what, sizeof t->next_what, "opened %s", path);
+	tui_edit_set_wall(t, nw);
+	tui_message(t, 0, "opened %s: sampling (run %d)", path, t->runno);
+}
+
+void tui_io_open(struct tui *t)
+{
+	tui_prompt(t, "open wall file", "", tui_io_open_path);
+}
+
+/* R: the figures and summary of `slipwall report` for the current run,
+ * written by the library (report_write) from the run's samples file (its
+ * accepted loads in sample order) and tally (its mechanisms). */
+static void tui_io_report_to(struct tui *t, const char *dir)
+{
+	char err[SW_ERRLEN];
+	double *lam = NULL;
+	long n = 0;
+	if (!dir[0]) {
+		tui_message(t, 1, "report: no directory given");
+		return;
+	}
+	if (!t->run.csv[0] ||
+	    runlog_read_loads(t->run.csv, t->w, &lam, &n, NULL, err) != SW_OK) {
+		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
+		return;
+	}
+	if (n < 1) {
+		free(lam);
+		tui_message(t, 1, "report: no accepted sample yet");
+		return;
+	}
+	struct report_solution sol[2];
+	memset(sol, 0, sizeof sol);
+	sol[0].method = "standard";
+	sol[0].ran = sol[0].found = t->has_std;
+	sol[0].lambda = t->lam_std;
+	sol[1].method = "gilbert";
+	sol[1].ran = sol[1].found = t->has_gil;
+	sol[1].lambda = t->lam_gil;
+	for (int i = 0; i < 2; i++)
+		if (!sol[i].ran)
+			snprintf(sol[i].note, sizeof sol[i].note,
+				 "not computed yet");
+	struct report_input in;
+	memset(&in, 0, sizeof in);
+	in.w = t->w;
+	in.lam = lam;
+	in.nlam = n;
+	in.mech = &t->run.tally;
+	in.tests = t->w->ntests ? t->w->tests : NULL;
+	in.ntests = t->w->ntests;
+	in.sol = sol;
+	in.nsol = 2;
+	in.run.wall_path = t->w->path ? t->w->path : "(edited wall)";
+	in.run.version = sw_version();
+	in.run.samples_file = t->run.csv;
+	in.run.seed_known = 1;
+	in.run.seed = t->run.cfg.seed;
+	in.run.requested = t->run.target;
+	in.run.threads = t->threads;
+	in.run.depth = t->w->depth;
+	in.run.anywhere = t->w->anywhere;
+	in.run.has_counts = 1;
+	in.run.samples = t->run.tally.samples;
+	in.run.accepted = t->run.tally.accepted;
+	memcpy(in.run.rejected, t->run.tally.rejected, sizeof in.run.rejected);
+	in.run.note = "written from the workbench (key R) while sampling";
+	enum sw_status st = report_write(&in, dir, NULL, err);
+	free(lam);
+	if (st != SW_OK)
+		tui_message(t, 1, "report: %s", err);
+	else
+	{
+		char md[PATH_MAX + 16];
+		snprintf(md, sizeof md, "%s/report.md", dir);
+		tui_note_file(t, "report", md);
+		tui_message(t, 0, "report of %ld accepted samples in %s", n, md);
+	}
+}
+
+void tui_io_report(struct tui *t)
+{
+	char def[PATH_MAX];
+	if (!t->run.csv[0]) {
+		tui_message(t, 1, "report: no samples file");
+		return;
+	}
+	snprintf(def, sizeof def, "%s", t->run.csv);
+	char *dot = strrchr(def, '.');
+	if (dot && !strcmp(dot, ".csv"))
+		*dot = 0;
+	if (strlen(def) + 8 < sizeof def)
+		strcat(def, "-report");
+	tui_prompt(t, "write report to directory", def, tui_io_report_to);
+}
