@@ -63,9 +63,9 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 		return 1;
 	}
 	struct tally t;
-	struct mc_item it;
+	struct record it;
 	tally_init(&t, w);
-	mc_item_init(&it, w);
+	record_init(&it, w);
 	while (mc_pop(m, &it, -1) > 0)
 		tally_add(&t, &it);
 	double elapsed = now() - t0;
@@ -73,7 +73,7 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	struct mc_counters c;
 	mc_counters(m, &c);
 	mc_free(m);
-	mc_item_free(&it);
+	record_free(&it);
 
 	struct stats_summary s;
 	tally_summary(&t, &s);

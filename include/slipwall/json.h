@@ -34,4 +34,10 @@ void json_null(struct json *j);
 /* Finish: newline after the top-level value. */
 void json_end(struct json *j);
 
+/* A key and its value: json_key() then json_string(), json_double(),
+ * json_int(). */
+void json_key_string(struct json *j, const char *k, const char *s);
+void json_key_double(struct json *j, const char *k, double v);
+void json_key_int(struct json *j, const char *k, long long v);
+
 #endif

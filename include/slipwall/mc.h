@@ -9,8 +9,9 @@
  * into a reorder window; the consumer (one thread: the `run` command, or
  * the workbench's UI thread) takes them out strictly in index order with
  * mc_pop().  A pool may compute a share of the indices only (first,
- * first + stride, ...: one MPI rank's, src/cli/cluster.c); "in order" is
- * then the order of that share.  Workers wait when they are more than
+ * first + stride, ...: one MPI rank's, src/cli/cluster.c; or, with
+ * first = k and stride 1, a run resumed at sample k); "in order" is then
+ * the order of that share.  Samples are struct record (record.h).  Workers wait when they are more than
  * the window ahead of the consumer, so memory stays bounded.
  *
  * Signals: mc_start() blocks every asynchronous signal in the workers
@@ -23,6 +24,7 @@
 
 #include <stdint.h>
 
+#include "slipwall/record.h"
 #include "slipwall/sample.h"
 #include "slipwall/wall.h"
 
@@ -52,7 +54,8 @@ struct mc_config {
 	unsigned long seed;
 	long n;			/* samples of the run (indices 0..n-1) */
 	/* this pool's share: indices first, first + stride, ... < n (an MPI
-	 * rank's; 0 and 1 = every index; stride 0 counts as 1) */
+	 * rank's, or a resumed run's; 0 and 1 = every index; stride 0 counts
+	 * as 1) */
 	long first, stride;
 	int threads;		/* >= 1 */
 	double depth;		/* < 0: the wall's contacts.depth */
@@ -61,21 +64,6 @@ struct mc_config {
 	const double *positions;
 };
 void mc_config_default(struct mc_config *c, const struct wall *w);
-
-/* One finished sample, as the consumer sees it. */
-struct mc_item {
-	long index;
-	enum sample_status status;
-	double lambda_lpmax, lambda_max, lambda_min;
-	double vw_residual;
-	int iterations, lps;
-	double seconds;		/* compute time of this sample */
-	double *xi;		/* 2 * nifaces */
-	char *joint;		/* nifaces + 1 (mechanism, accepted only) */
-	double *vel;		/* 3 * nblocks (accepted only) */
-};
-void mc_item_init(struct mc_item *it, const struct wall *w);
-void mc_item_free(struct mc_item *it);
 
 struct mc;
 
@@ -86,7 +74,7 @@ struct mc *mc_start(const struct mc_config *c, char *err);
  * wait_ms milliseconds (< 0: forever).  Returns 1 with a sample, 0 on
  * timeout, -1 when no more samples will come (all n done, or stopped and
  * the finished ones in order all taken). */
-int mc_pop(struct mc *m, struct mc_item *it, int wait_ms);
+int mc_pop(struct mc *m, struct record *it, int wait_ms);
 
 /* A file descriptor that becomes readable when a sample may be ready
  * (one byte per notification; mc_pop drains it).  For poll() loops. */

@@ -26,7 +26,7 @@
 #ifndef SLIPWALL_RUNLOG_H
 #define SLIPWALL_RUNLOG_H
 
-#include "slipwall/mc.h"
+#include "slipwall/record.h"
 #include "slipwall/wall.h"
 
 struct runlog;
@@ -41,7 +41,7 @@ enum sw_status runlog_create(struct runlog **l, const char *path,
 			     const struct wall *w, const char *const *keep,
 			     char *err);
 /* Append one sample's row.  SW_EIO + err on a write error (disk full). */
-enum sw_status runlog_write(struct runlog *l, const struct mc_item *it,
+enum sw_status runlog_write(struct runlog *l, const struct record *it,
 			    char *err);
 /* Close; SW_EIO if anything failed to reach the file. */
 enum sw_status runlog_close(struct runlog *l, char *err);

@@ -40,6 +40,9 @@
 #include "slipwall/sample.h"
 /* solve     the single-solution methods: standard, gilbert, global */
 #include "slipwall/solve.h"
+/* record    one sample's record: the pool's, the MPI wire's, the tally's
+ *           and the samples file's, declared once */
+#include "slipwall/record.h"
 /* mc        the sampler: a pool of worker threads, results in sample
  *           order, the same for any thread count */
 #include "slipwall/mc.h"
@@ -48,6 +51,9 @@
 #include "slipwall/tally.h"
 /* runlog    the samples file: one CSV row a sample, streamed, read back */
 #include "slipwall/runlog.h"
+/* run       one run: a source of samples in order to the samples file and
+ *           the tally; --until-ci; the write-error and signal policies */
+#include "slipwall/run.h"
 /* stats     statistics of the loads: quantiles with intervals, the
  *           histogram, the KDE, the exact two-sample KS test */
 #include "slipwall/stats.h"

@@ -13,7 +13,7 @@
 #ifndef SLIPWALL_TALLY_H
 #define SLIPWALL_TALLY_H
 
-#include "slipwall/mc.h"
+#include "slipwall/record.h"
 #include "slipwall/sample.h"
 #include "slipwall/stats.h"
 
@@ -41,7 +41,7 @@ struct tally {
 
 void tally_init(struct tally *t, const struct wall *w);
 void tally_free(struct tally *t);
-void tally_add(struct tally *t, const struct mc_item *it);
+void tally_add(struct tally *t, const struct record *it);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */
 int tally_top(const struct tally *t, int *idx, int max);

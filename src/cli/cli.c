@@ -15,6 +15,35 @@
 #include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 
+int cli_tests(const char *file, const struct wall *w, double **tests,
+	      long *ntests)
+{
+	char err[SW_ERRLEN];
+	*tests = NULL;
+	*ntests = 0;
+	if (file) {
+		if (cli_read_tests(file, tests, ntests, err) != SW_OK) {
+			cli_errorf("%s", err);
+			return 2;
+		}
+	} else if (w->ntests > 0) {
+		*ntests = w->ntests;
+		*tests = sw_xmalloc(sizeof(double) * (size_t)*ntests);
+		memcpy(*tests, w->tests, sizeof(double) * (size_t)*ntests);
+	}
+	return 0;
+}
+
+int cli_check_depth(const char *cmd, const struct wall *w, const char *path,
+		    double depth)
+{
+	if (depth >= 0 && w->anywhere)
+		return cli_usage_error(cmd, "--depth: %s draws its contact "
+				       "points anywhere (contacts.positions): "
+				       "there is no depth", path);
+	return 0;
+}
+
 int cli_load_wall(const char *path, struct wall **w)
 {
 	char err[SW_ERRLEN];

@@ -24,6 +24,10 @@ int cmd_sweep(int argc, char **argv);
 /* Load and finish a wall file; on failure print the message to stderr
  * and return the exit status (2), else 0. */
 int cli_load_wall(const char *path, struct wall **w);
+/* --depth D (D >= 0: given) of a wall whose contact points are drawn
+ * anywhere (contacts.positions): a usage error, returns 2; else 0. */
+int cli_check_depth(const char *cmd, const struct wall *w, const char *path,
+		    double depth);
 /* The bundled demo wall: from the build tree when the program runs from
  * it, else the installed copy.  Never NULL (may not exist). */
 const char *cli_demo_wall(void);
@@ -51,6 +55,11 @@ int cli_parse_time_limit(const char *s, double *out);
  * "FILE:LINE:COLUMN: what is wrong" in err. */
 enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			      char *err);
+/* The experimental loads of compare and report: FILE (--tests) when
+ * given, else the wall's tests: key (none: *ntests = 0).  Returns 0, or
+ * 2 after printing the file's error. */
+int cli_tests(const char *file, const struct wall *w, double **tests,
+	      long *ntests);
 /* Does a loads file call its loads synthetic (the word in a '#'
  * comment, any case)?  Then compare and report say so. */
 int cli_tests_synthetic(const char *path);

@@ -15,8 +15,8 @@
  *
  * Protocol: point to point on MPI_COMM_WORLD, from the main threads only
  * (MPI_THREAD_FUNNELED).  Rank r > 0 sends rank 0
- *   ITEM   one sample, packed (struct wire_head, xi, joint, vel), in its
- *          index order;
+ *   ITEM   one sample, packed (record_pack: its fixed part, xi, vel,
+ *          joint), in its index order;
  *   BEAT   nothing else sent for a second: alive;
  *   DONE   {samples sent, why: share done / stopped / signal, signal},
  *          the last message.
@@ -84,6 +84,7 @@
 #include <unistd.h>
 
 #include "cluster.h"
+#include "slipwall/run.h"
 #include "slipwall/sys.h"
 
 #define WINDOW 128		/* samples a rank may be ahead of the merge, */
@@ -96,14 +97,6 @@
 
 enum tag { TAG_ITEM = 1, TAG_BEAT, TAG_DONE, TAG_CREDIT, TAG_STOP };
 enum done_why { DONE_SHARE, DONE_STOPPED, DONE_SIGNAL };
-
-/* The fixed part of a sample on the wire; xi, joint and vel follow.
- * The same binary runs on every rank (same layout). */
-struct wire_head {
-	long index;
-	int status, iterations, lps, pad;
-	double lambda_lpmax, lambda_max, lambda_min, vw_residual, seconds;
-};
 
 /* Rank 0's view of another rank. */
 struct peer {
@@ -265,10 +258,7 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 	share.stride = c->size;
 	c->w = cfg->w;
 	c->n = cfg->n;
-	c->item_size = sizeof(struct wire_head) +
-		       sizeof(double) * (2 * (size_t)c->w->nifaces +
-					 3 * (size_t)c->w->nblocks) +
-		       (size_t)c->w->nifaces + 1;
+	c->item_size = record_wire_size(c->w);
 	c->buf = sw_xcalloc(1, c->item_size);
 	c->window = WINDOW_BYTES / (long)c->item_size;
 	c->window = c->window > WINDOW ? WINDOW : c->window < WINDOW_MIN ?
@@ -381,56 +371,6 @@ int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
 			"--positions differ): every rank must be given the "
 			"same options and read the same files\n", who);
 	return all;
-}
-
-/* ---- packing a sample ---------------------------------------------------- */
-
-static void pack(const struct cluster *c, const struct mc_item *it,
-		 unsigned char *b)
-{
-	const struct wall *w = c->w;
-	struct wire_head h;
-	memset(&h, 0, sizeof h);
-	h.index = it->index;
-	h.status = (int)it->status;
-	h.iterations = it->iterations;
-	h.lps = it->lps;
-	h.lambda_lpmax = it->lambda_lpmax;
-	h.lambda_max = it->lambda_max;
-	h.lambda_min = it->lambda_min;
-	h.vw_residual = it->vw_residual;
-	h.seconds = it->seconds;
-	size_t nxi = sizeof(double) * 2 * (size_t)w->nifaces;
-	size_t nvel = sizeof(double) * 3 * (size_t)w->nblocks;
-	memcpy(b, &h, sizeof h);
-	b += sizeof h;
-	memcpy(b, it->xi, nxi);
-	memcpy(b + nxi, it->vel, nvel);
-	memcpy(b + nxi + nvel, it->joint, (size_t)w->nifaces + 1);
-}
-
-static void unpack(const struct cluster *c, const unsigned char *b,
-		   struct mc_item *it)
-{
-	const struct wall *w = c->w;
-	struct wire_head h;
-	memcpy(&h, b, sizeof h);
-	b += sizeof h;
-	it->index = h.index;
-	it->status = (enum sample_status)h.status;
-	it->iterations = h.iterations;
-	it->lps = h.lps;
-	it->lambda_lpmax = h.lambda_lpmax;
-	it->lambda_max = h.lambda_max;
-	it->lambda_min = h.lambda_min;
-	it->vw_residual = h.vw_residual;
-	it->seconds = h.seconds;
-	size_t nxi = sizeof(double) * 2 * (size_t)w->nifaces;
-	size_t nvel = sizeof(double) * 3 * (size_t)w->nblocks;
-	memcpy(it->xi, b, nxi);
-	memcpy(it->vel, b + nxi, nvel);
-	memcpy(it->joint, b + nxi + nvel, (size_t)w->nifaces + 1);
-	it->joint[w->nifaces] = 0;
 }
 
 /* ---- sending without waiting -------------------------------------------- */
@@ -669,7 +609,7 @@ static void stop_all(struct cluster *c)
 
 /* The next sample of the stream from where it is: 1, 0 (not yet), -1
  * (the stream ends here).  wait_ms: how long to wait for our own pool. */
-static int take(struct cluster *c, struct mc_item *it, int wait_ms)
+static int take(struct cluster *c, struct record *it, int wait_ms)
 {
 	if (c->next >= c->n)
 		return -1;
@@ -689,7 +629,7 @@ static int take(struct cluster *c, struct mc_item *it, int wait_ms)
 		c->cut_rank = r;
 		return -1;
 	}
-	unpack(c, p->ring + c->item_size * (size_t)p->head, it);
+	record_unpack(it, c->w, p->ring + c->item_size * (size_t)p->head);
 	p->head = (p->head + 1) % c->window;
 	p->queued--;
 	p->taken++;
@@ -735,8 +675,9 @@ static void finish(struct cluster *c)
 	}
 }
 
-int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
+static int cluster_pop(void *cp, struct record *it, int wait_ms)
 {
+	struct cluster *c = cp;
 	if (c->ended)
 		return -1;
 	double until = wait_ms < 0 ? INFINITY : sys_now() + 1e-3 * wait_ms;
@@ -761,8 +702,9 @@ int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
 	}
 }
 
-enum sw_status cluster_status(const struct cluster *c, char *err)
+static enum sw_status cluster_status(void *cp, char *err)
 {
+	const struct cluster *c = cp;
 	if (c->lost)
 		return sw_fail(err, SW_EIO, "%s", c->fault);
 	if (c->cut_rank < 0 || atomic_load(&c->stop))
@@ -775,13 +717,22 @@ enum sw_status cluster_status(const struct cluster *c, char *err)
 		       c->cut_rank, p->sent);
 }
 
-void cluster_stop(struct cluster *c, int sig)
+static void cluster_stop(void *cp, int sig)
 {
+	struct cluster *c = cp;
 	if (sig && !c->stop_sig)
 		c->stop_sig = sig;
 	atomic_store(&c->stop, 1);
 	if (c->pool)
 		mc_stop(c->pool);
+}
+
+void cluster_source(struct cluster *c, struct run_source *s)
+{
+	s->ctx = c;
+	s->pop = cluster_pop;
+	s->stop = cluster_stop;
+	s->status = cluster_status;
 }
 
 /* ---- ranks > 0: computing and sending ----------------------------------- */
@@ -836,8 +787,8 @@ static void listen(struct cluster *c, long *credit_got, double *heard)
 
 enum sw_status cluster_serve(struct cluster *c, char *err)
 {
-	struct mc_item it;
-	mc_item_init(&it, c->w);
+	struct record it;
+	record_init(&it, c->w);
 	long nsent = 0, credit_got = 0;
 	double heard = sys_now(), told = heard;
 	int got = 0;
@@ -856,7 +807,7 @@ enum sw_status cluster_serve(struct cluster *c, char *err)
 			if (got < 0)
 				break;
 			if (got == 1) {
-				pack(c, &it, c->buf);
+				record_pack(&it, c->w, c->buf);
 				MPI_Isend(c->buf, (int)c->item_size, MPI_BYTE, 0,
 					  TAG_ITEM, MPI_COMM_WORLD, &c->rq_item);
 				if (nsent + 1 == c->fault_stop)
@@ -873,7 +824,7 @@ enum sw_status cluster_serve(struct cluster *c, char *err)
 		    post(NULL, 0, MPI_BYTE, 0, TAG_BEAT, &c->rq_beat))
 			told = sys_now();
 	}
-	mc_item_free(&it);
+	record_free(&it);
 	if (c->lost)
 		return sw_fail(err, SW_EIO, "%s", c->fault);
 	int sig = c->stop_sig;

@@ -15,11 +15,11 @@
  *   cluster_start     first: MPI_Init if started by mpirun
  *   cluster_open      start this rank's pool on its share of the indices
  *   cluster_agree     the set-up outcome of the whole job (collective)
- *   rank 0:           cluster_pop until -1, then cluster_status
- *   other ranks:      cluster_serve
+ *   rank 0:           cluster_source: run_pump until -1, run_finish
+ *   other ranks:      cluster_serve (cluster_source: the signal's stop)
  *   cluster_close     join the pool (before the wall is freed)
  *   cluster_end       MPI_Finalize (MPI_Abort after a lost rank); frees
- * cluster_stop may be called at any time, from a signal handler too.
+ * The source's stop may be called at any time, from a signal handler too.
  * On rank > 0, cluster_start sends stdout to /dev/null: only rank 0
  * prints results.
  */
@@ -27,6 +27,7 @@
 #define SLIPWALL_CLUSTER_H
 
 #include "slipwall/mc.h"
+#include "slipwall/record.h"
 
 struct cluster;
 
@@ -59,20 +60,20 @@ enum sw_status cluster_open(struct cluster *c, const struct mc_config *cfg,
 int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
 		  int *root_rc);
 
-/* Rank 0: the next sample of the whole job in index order, as mc_pop
- * (1 a sample, 0 nothing within wait_ms, -1 the end).  After -1, every
- * other rank has finished. */
-int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms);
-/* Why the stream ended, after cluster_pop returned -1: SW_OK (every
- * sample, or a stop asked on this rank), SW_EINTR (another rank was
- * interrupted by a signal: err names the rank and the signal) or SW_EIO
- * (a rank was lost or broke the protocol: err says which). */
-enum sw_status cluster_status(const struct cluster *c, char *err);
-
-/* Stop: the pool stops after its current samples, and rank 0 tells the
- * other ranks.  sig: the signal that asked (0: --until-ci).  Async-
- * signal-safe. */
-void cluster_stop(struct cluster *c, int sig);
+/* The job as a source of samples (run.h), on every rank:
+ *   pop     rank 0: the next sample of the whole job in index order, as
+ *           mc_pop (1 a sample, 0 nothing within wait_ms, -1 the end);
+ *           after -1, every other rank has finished
+ *   stop    the pool stops after its current samples, and rank 0 tells
+ *           the other ranks; sig: the signal that asked (0: --until-ci,
+ *           a write error); async-signal-safe; every rank
+ *   status  why the stream ended, after pop returned -1: SW_OK (every
+ *           sample, or a stop asked on this rank), SW_EINTR (another
+ *           rank was interrupted by a signal: err names the rank and the
+ *           signal) or SW_EIO (a rank was lost or broke the protocol: err
+ *           says which) */
+struct run_source;
+void cluster_source(struct cluster *c, struct run_source *s);
 
 /* Ranks > 0: compute the share and send it to rank 0 until done or
  * stopped.  SW_OK; SW_EINTR after a signal on this rank (rank 0 reports

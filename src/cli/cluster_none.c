@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "slipwall/run.h"
 
 /* Started by a launcher among several processes?  Open MPI's mpirun
  * says OMPI_COMM_WORLD_SIZE, MPICH's mpiexec (and srun --mpi=pmi2)
@@ -91,7 +92,8 @@ int cluster_agree(struct cluster *c, int rc, const struct mc_config *cfg,
 	return rc;
 }
 
-int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
+/* Never called: there is no job to be a source of. */
+static int none_pop(void *c, struct record *it, int wait_ms)
 {
 	(void)c;
 	(void)it;
@@ -99,17 +101,18 @@ int cluster_pop(struct cluster *c, struct mc_item *it, int wait_ms)
 	return -1;
 }
 
-enum sw_status cluster_status(const struct cluster *c, char *err)
-{
-	(void)c;
-	(void)err;
-	return SW_OK;
-}
-
-void cluster_stop(struct cluster *c, int sig)
+static void none_stop(void *c, int sig)
 {
 	(void)c;
 	(void)sig;
+}
+
+void cluster_source(struct cluster *c, struct run_source *s)
+{
+	s->ctx = c;
+	s->pop = none_pop;
+	s->stop = none_stop;
+	s->status = NULL;
 }
 
 enum sw_status cluster_serve(struct cluster *c, char *err)

@@ -16,6 +16,10 @@
  * random numbers), so the profile of the KS distance against d is
  * smooth rather than noisy.  The best d has the least KS distance (ties:
  * the larger two-sided p-value, then the smaller d).
+ *
+ * The model's runs are the library's (run_all, run.h).  SIGINT, SIGTERM
+ * and SIGHUP stop them: the samples done (with --fit-depth, the depths
+ * done) are compared and printed, and the exit status is 1.
  */
 #include <math.h>
 #include <stdio.h>
@@ -28,7 +32,7 @@
 #include "slipwall/collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
-#include "slipwall/mc.h"
+#include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/stats.h"
 
@@ -119,25 +123,18 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 
 /* ---- the model's loads -------------------------------------------------- */
 
-/* Run the pool to the end and keep the accepted loads (no file). */
+/* Run the pool to the end and keep the accepted loads (run_all, no
+ * file).  SW_EINTR when a signal stopped it: md has the samples done. */
 static enum sw_status run_model(const struct mc_config *cfg, struct model *md,
 				char *err)
 {
-	struct mc *m = mc_start(cfg, err);
-	if (!m)
-		return SW_EIO;
-	struct mc_item it;
-	mc_item_init(&it, cfg->w);
-	md->lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
-	md->samples = md->accepted = 0;
-	while (mc_pop(m, &it, -1) > 0) {
-		md->samples++;
-		if (it.status == SAMPLE_ACCEPTED)
-			md->lam[md->accepted++] = it.lambda_min;
-	}
-	mc_item_free(&it);
-	mc_free(m);
-	return SW_OK;
+	struct tally t;
+	tally_init(&t, cfg->w);
+	enum sw_status st = run_all(cfg, &t, &md->lam, &md->accepted, NULL,
+				    NULL, err);
+	md->samples = t.samples;
+	tally_free(&t);
+	return st;
 }
 
 /* Statistics of a model run and its KS test against the tests. */
@@ -213,6 +210,11 @@ static enum sw_status fit_depth(struct mc_config *cfg, const double *tests,
 			md->depth = d;
 			cfg->depth = d;
 			enum sw_status st = run_model(cfg, md, err);
+			if (st == SW_EINTR) {
+				/* a signal: the depths done are the profile */
+				free(md->lam);
+				goto done;
+			}
 			if (st != SW_OK) {
 				for (int i = 0; i <= n; i++)
 					free(p[i].lam);
@@ -230,6 +232,7 @@ static enum sw_status fit_depth(struct mc_config *cfg, const double *tests,
 				b = n - 1;
 		}
 	}
+done:
 	if (verbose)
 		fprintf(stderr, "\r\033[K");
 	double bd = b >= 0 ? p[b].depth : NAN;
@@ -353,249 +356,273 @@ static void json_ks(struct json *j, const struct model *md)
 
 /* ---- the command -------------------------------------------------------- */
 
-int cmd_compare(int argc, char **argv)
+/* What cmd_compare computes and frees. */
+struct compare_data {
+	double *tests;
+	long ntests;
+	struct mc_config cfg;
+	struct model *prof, one, *md;	/* md: the run compared */
+	int nprof, best;
+	struct stats_summary ts;	/* of the tests */
+};
+
+/* The tests, and the options that need the wall.  Returns 0 or the
+ * exit status (message printed). */
+static int setup(const struct compare_args *a, const struct wall *w,
+		 struct compare_data *d)
 {
-	struct compare_args a;
-	int rc = parse_args(argc, argv, &a);
-	struct wall *w = NULL;
-	if (!rc)
-		rc = override_load(CMD, a.wall, &a.ov, &w);
-	if (rc) {
-		override_free(&a.ov);
-		return rc < 0 ? 0 : rc;
-	}
-
-	char err[SW_ERRLEN];
-	int status = 0;
-	double *tests = NULL;
-	long ntests = 0;
-	struct model *prof = NULL, one;
-	int nprof = 0, best = -1;
-	memset(&one, 0, sizeof one);
-
-	if (a.tests) {
-		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			cli_errorf("%s", err);
-			status = 2;
-			goto out;
-		}
-	} else if (w->ntests > 0) {
-		ntests = w->ntests;
-		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
-		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
-	}
-	if (ntests == 0) {
+	if (cli_tests(a->tests, w, &d->tests, &d->ntests))
+		return 2;
+	if (d->ntests == 0)
 		/* w->tests is NULL when the file has no tests: key, an
 		 * empty array when its list of loads is empty */
-		status = cli_usage_error(CMD, "no experimental loads: %s%s%s",
-					 a.tests ? a.tests : a.wall,
-					 a.tests ? " holds no load" :
-					 w->tests ? ": its tests: loads list "
-					 "is empty" : " has no tests: key",
-					 a.tests ? "" : "; give --tests FILE");
-		goto out;
-	}
-	if (a.fit_depth && w->anywhere) {
-		status = cli_usage_error(CMD, "--fit-depth: %s draws its contact "
-					 "points anywhere (contacts.positions): "
-					 "there is no depth to fit", a.wall);
-		goto out;
-	}
-	if (a.depth >= 0 && w->anywhere) {
-		status = cli_usage_error(CMD, "--depth: %s draws its contact "
-					 "points anywhere: there is no depth",
-					 a.wall);
-		goto out;
-	}
+		return cli_usage_error(CMD, "no experimental loads: %s%s%s",
+				       a->tests ? a->tests : a->wall,
+				       a->tests ? " holds no load" :
+				       w->tests ? ": its tests: loads list "
+				       "is empty" : " has no tests: key",
+				       a->tests ? "" : "; give --tests FILE");
+	if (a->fit_depth && w->anywhere)
+		return cli_usage_error(CMD, "--fit-depth: %s draws its contact "
+				       "points anywhere (contacts.positions): "
+				       "there is no depth to fit", a->wall);
+	if (cli_check_depth(CMD, w, a->wall, a->depth))
+		return 2;
+	struct mc_config *cfg = &d->cfg;
+	mc_config_default(cfg, w);
+	if (a->n_set)
+		cfg->n = a->n;
+	if (a->seed_set)
+		cfg->seed = a->seed;
+	cfg->depth = a->depth;
+	if (cfg->n < 1)
+		return cli_usage_error(CMD, "no samples to compute (-n)");
+	return cli_threads(CMD, w, a->threads, mc_ncpu(), cfg->n,
+			   &cfg->threads);
+}
 
-	struct mc_config cfg;
-	mc_config_default(&cfg, w);
-	if (a.n_set)
-		cfg.n = a.n;
-	if (a.seed_set)
-		cfg.seed = a.seed;
-	cfg.depth = a.depth;
-	if (cfg.n < 1) {
-		status = cli_usage_error(CMD, "no samples to compute (-n)");
-		goto out;
-	}
-	if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
-				  &cfg.threads))) {
-		goto out;
-	}
-
-	struct model *md = &one;
-	if (a.samples) {
+/* The model's loads: from the samples file, the depth profile or one
+ * run; d->md the run compared.  Returns 0 or the exit status; *intr is
+ * set when a signal stopped the sampling (what was done is compared). */
+static int model(const struct compare_args *a, const struct wall *w,
+		 struct compare_data *d, int *intr)
+{
+	char err[SW_ERRLEN], warn[SW_ERRLEN];
+	d->md = &d->one;
+	if (a->samples) {
 		long n;
-		char warn[SW_ERRLEN];
-		if (runlog_read_loads(a.samples, w, &one.lam, &n, warn, err) !=
-		    SW_OK) {
+		if (runlog_read_loads(a->samples, w, &d->one.lam, &n, warn,
+				      err) != SW_OK) {
 			cli_errorf("%s", err);
-			status = 2;
-			goto out;
+			return 2;
 		}
 		if (warn[0])
 			cli_errorf("%s", warn);
-		one.samples = one.accepted = n;
-		one.depth = NAN;
-		analyse(&one, tests, ntests);
-	} else if (a.fit_depth) {
-		if (fit_depth(&cfg, tests, ntests, &prof, &nprof, &best,
-			      isatty(STDERR_FILENO), err) != SW_OK) {
+		d->one.samples = d->one.accepted = n;
+		d->one.depth = NAN;
+		analyse(&d->one, d->tests, d->ntests);
+	} else if (a->fit_depth) {
+		if (fit_depth(&d->cfg, d->tests, d->ntests, &d->prof, &d->nprof,
+			      &d->best, isatty(STDERR_FILENO), err) != SW_OK) {
 			cli_errorf("slipwall compare: %s", err);
-			status = 1;
-			goto out;
+			return 1;
 		}
-		if (best < 0) {
+		*intr = run_signal() != 0;
+		if (d->best < 0) {
 			cli_errorf("slipwall compare: no depth gave an "
-				"accepted sample: the analysis failed");
-			status = 1;
-			goto out;
+				"accepted sample%s", *intr ? " before the signal" :
+				": the analysis failed");
+			return *intr ? sw_status_exit(SW_EINTR) : 1;
 		}
-		md = &prof[best];
+		d->md = &d->prof[d->best];
 	} else {
-		if (run_model(&cfg, &one, err) != SW_OK) {
+		enum sw_status st = run_model(&d->cfg, &d->one, err);
+		if (st != SW_OK && st != SW_EINTR) {
 			cli_errorf("slipwall compare: %s", err);
-			status = 1;
-			goto out;
+			return 1;
 		}
-		one.depth = cfg.depth < 0 ? w->depth : cfg.depth;
-		analyse(&one, tests, ntests);
+		*intr = st == SW_EINTR;
+		d->one.depth = d->cfg.depth < 0 ? w->depth : d->cfg.depth;
+		analyse(&d->one, d->tests, d->ntests);
 	}
+	return 0;
+}
 
-	struct stats_summary ts;
-	stats_summarise(tests, (size_t)ntests, &ts);
+static void json_profile(struct json *j, const struct compare_data *d)
+{
+	json_key(j, "fit_depth");
+	json_object_begin(j);
+	json_key_double(j, "best_depth", d->md->depth);
+	json_key(j, "profile");
+	json_array_begin(j);
+	for (int i = 0; i < d->nprof; i++) {
+		const struct model *p = &d->prof[i];
+		json_object_begin(j);
+		json_key_double(j, "depth", p->depth);
+		json_key_int(j, "samples", p->samples);
+		json_key_int(j, "accepted", p->accepted);
+		json_key_double(j, "p05", p->s.p05);
+		json_key_double(j, "ks_statistic", p->ks_ok ? p->ks.d : NAN);
+		json_key_double(j, "p_two_sided", p->ks_ok ? p->ks.p_two_sided : NAN);
+		json_object_end(j);
+	}
+	json_array_end(j);
+	json_object_end(j);
+}
 
-	if (a.json) {
-		struct json j;
-		json_init(&j, stdout, 1);
-		json_object_begin(&j);
-		json_key(&j, "wall");
-		json_string(&j, a.wall);
-		override_json(&a.ov, &j);
-		json_key(&j, "model");
-		json_object_begin(&j);
-		json_key(&j, "source");
-		json_string(&j, a.samples ? a.samples : "run");
-		if (!a.samples) {
-			json_key(&j, "seed");
-			json_uint(&j, cfg.seed);
-			json_key(&j, "depth");
-			if (w->anywhere)
-				json_null(&j);
-			else
-				json_double(&j, md->depth);
-			json_key(&j, "samples");
-			json_int(&j, md->samples);
-		}
-		json_key(&j, "accepted");
-		json_int(&j, md->accepted);
-		json_summary(&j, &md->s);
-		json_object_end(&j);
-		json_key(&j, "tests");
-		json_object_begin(&j);
-		json_key(&j, "source");
-		json_string(&j, a.tests ? a.tests : "wall");
-		json_key(&j, "synthetic");
-		json_bool(&j, a.tests && cli_tests_synthetic(a.tests));
-		json_key(&j, "n");
-		json_int(&j, ntests);
-		json_summary(&j, &ts);
-		json_object_end(&j);
-		json_key(&j, "ks");
-		json_ks(&j, md);
-		if (a.fit_depth) {
-			json_key(&j, "fit_depth");
-			json_object_begin(&j);
-			json_key(&j, "best_depth");
-			json_double(&j, md->depth);
-			json_key(&j, "profile");
-			json_array_begin(&j);
-			for (int i = 0; i < nprof; i++) {
-				json_object_begin(&j);
-				json_key(&j, "depth");
-				json_double(&j, prof[i].depth);
-				json_key(&j, "samples");
-				json_int(&j, prof[i].samples);
-				json_key(&j, "accepted");
-				json_int(&j, prof[i].accepted);
-				json_key(&j, "p05");
-				json_double(&j, prof[i].s.p05);
-				json_key(&j, "ks_statistic");
-				json_double(&j, prof[i].ks_ok ? prof[i].ks.d : NAN);
-				json_key(&j, "p_two_sided");
-				json_double(&j, prof[i].ks_ok ?
-					    prof[i].ks.p_two_sided : NAN);
-				json_object_end(&j);
-			}
-			json_array_end(&j);
-			json_object_end(&j);
-		}
-		json_object_end(&j);
-		json_end(&j);
-	} else {
-		printf("%s  [%s]\n", cli_text(w->name ? w->name : a.wall),
-		       cli_text(a.wall));
-		if (a.ov.n > 0) {
-			char d[1024];
-			override_describe(&a.ov, d, sizeof d);
-			printf("overrides: %s\n", cli_text(d));
-		}
-		if (a.samples)
-			printf("model: %ld accepted loads from %s\n", md->accepted,
-			       cli_text(a.samples));
+static void print_json(const struct compare_args *a, const struct wall *w,
+		       const struct compare_data *d)
+{
+	const struct model *md = d->md;
+	struct json j;
+	json_init(&j, stdout, 1);
+	json_object_begin(&j);
+	json_key(&j, "wall");
+	json_string(&j, a->wall);
+	override_json(&a->ov, &j);
+	json_key(&j, "model");
+	json_object_begin(&j);
+	json_key(&j, "source");
+	json_string(&j, a->samples ? a->samples : "run");
+	if (!a->samples) {
+		json_key(&j, "seed");
+		json_uint(&j, d->cfg.seed);
+		json_key(&j, "depth");
+		if (w->anywhere)
+			json_null(&j);
 		else
-			printf("model: %ld of %ld samples accepted (seed %lu, %s "
-			       "%.4g)\n", md->accepted, md->samples, cfg.seed,
-			       a.fit_depth ? "best depth" : "depth", md->depth);
-		printf("tests: %ld loads from %s%s\nloads: %s\n\n", ntests,
-		       a.tests ? cli_text(a.tests) : "the wall's tests: key",
-		       a.tests && cli_tests_synthetic(a.tests) ?
-		       " (SYNTHETIC: not measurements, the file says so)" : "",
-		       w->nloads && w->loads[0].kind == LOAD_BODY
-			       ? "load factor (a body load: lambda times each block's weight)"
-			       : "N (lambda times the point load's reference magnitude)");
-		if (a.fit_depth) {
-			printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted",
-			       "p05", "KS D", "p two-sided");
-			for (int i = 0; i < nprof; i++) {
-				const struct model *p = &prof[i];
-				printf("%-7.2f %5.1f %%    %-12.6g %-10.4g %-11.4g%s\n",
-				       p->depth, p->samples ? 100.0 *
-				       (double)p->accepted / (double)p->samples : 0.0,
-				       p->s.p05, p->ks_ok ? p->ks.d : NAN,
-				       p->ks_ok ? p->ks.p_two_sided : NAN,
-				       i == best ? "  <- best" : "");
-			}
-			printf("best depth %.2f: KS distance %.4g, p = %.4g "
-			       "(two-sided)\n\n", md->depth, md->ks.d,
-			       md->ks.p_two_sided);
-		}
-		print_table(md, &ts, ntests);
-		if (w->design_load > 0 && md->accepted > 0) {
-			double *sl = sw_xmalloc(sizeof(double) *
-						(size_t)md->accepted);
-			memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
-			qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
-			struct collapse cp;
-			collapse_at(sl, (size_t)md->accepted, w->design_load,
-				    "design_load", &cp);
-			free(sl);
-			collapse_print(stdout, "\nmodel: ", &cp);
-		}
-		print_ks(md);
+			json_double(&j, md->depth);
+		json_key(&j, "samples");
+		json_int(&j, md->samples);
 	}
-	if (md->accepted == 0) {
+	json_key(&j, "accepted");
+	json_int(&j, md->accepted);
+	json_summary(&j, &md->s);
+	json_object_end(&j);
+	json_key(&j, "tests");
+	json_object_begin(&j);
+	json_key(&j, "source");
+	json_string(&j, a->tests ? a->tests : "wall");
+	json_key(&j, "synthetic");
+	json_bool(&j, a->tests && cli_tests_synthetic(a->tests));
+	json_key(&j, "n");
+	json_int(&j, d->ntests);
+	json_summary(&j, &d->ts);
+	json_object_end(&j);
+	json_key(&j, "ks");
+	json_ks(&j, md);
+	if (a->fit_depth)
+		json_profile(&j, d);
+	json_object_end(&j);
+	json_end(&j);
+}
+
+static void print_profile(const struct compare_data *d)
+{
+	printf("%-7s %-10s %-12s %-10s %s\n", "depth", "accepted", "p05",
+	       "KS D", "p two-sided");
+	for (int i = 0; i < d->nprof; i++) {
+		const struct model *p = &d->prof[i];
+		printf("%-7.2f %5.1f %%    %-12.6g %-10.4g %-11.4g%s\n",
+		       p->depth, p->samples ? 100.0 * (double)p->accepted /
+		       (double)p->samples : 0.0, p->s.p05,
+		       p->ks_ok ? p->ks.d : NAN,
+		       p->ks_ok ? p->ks.p_two_sided : NAN,
+		       i == d->best ? "  <- best" : "");
+	}
+	printf("best depth %.2f: KS distance %.4g, p = %.4g (two-sided)\n\n",
+	       d->md->depth, d->md->ks.d, d->md->ks.p_two_sided);
+}
+
+static void print_text(const struct compare_args *a, const struct wall *w,
+		       const struct compare_data *d)
+{
+	const struct model *md = d->md;
+	printf("%s  [%s]\n", cli_text(w->name ? w->name : a->wall),
+	       cli_text(a->wall));
+	if (a->ov.n > 0) {
+		char o[1024];
+		override_describe(&a->ov, o, sizeof o);
+		printf("overrides: %s\n", cli_text(o));
+	}
+	if (a->samples)
+		printf("model: %ld accepted loads from %s\n", md->accepted,
+		       cli_text(a->samples));
+	else
+		printf("model: %ld of %ld samples accepted (seed %lu, %s "
+		       "%.4g)\n", md->accepted, md->samples, d->cfg.seed,
+		       a->fit_depth ? "best depth" : "depth", md->depth);
+	printf("tests: %ld loads from %s%s\nloads: %s\n\n", d->ntests,
+	       a->tests ? cli_text(a->tests) : "the wall's tests: key",
+	       a->tests && cli_tests_synthetic(a->tests) ?
+	       " (SYNTHETIC: not measurements, the file says so)" : "",
+	       w->nloads && w->loads[0].kind == LOAD_BODY
+		       ? "load factor (a body load: lambda times each block's weight)"
+		       : "N (lambda times the point load's reference magnitude)");
+	if (a->fit_depth)
+		print_profile(d);
+	print_table(md, &d->ts, d->ntests);
+	if (w->design_load > 0 && md->accepted > 0) {
+		double *sl = sw_xmalloc(sizeof(double) * (size_t)md->accepted);
+		memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
+		qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
+		struct collapse cp;
+		collapse_at(sl, (size_t)md->accepted, w->design_load,
+			    "design_load", &cp);
+		free(sl);
+		collapse_print(stdout, "\nmodel: ", &cp);
+	}
+	print_ks(md);
+}
+
+/* Compare, then print.  Returns the exit status. */
+static int compare(const struct compare_args *a, const struct wall *w,
+		   struct compare_data *d)
+{
+	int intr = 0, status = setup(a, w, d);
+	if (!status)
+		status = model(a, w, d, &intr);
+	if (status)
+		return status;
+	stats_summarise(d->tests, (size_t)d->ntests, &d->ts);
+	if (a->json)
+		print_json(a, w, d);
+	else
+		print_text(a, w, d);
+	if (intr) {
+		cli_errorf("slipwall compare: interrupted (%s): the %s",
+			   strsignal(run_signal()), a->fit_depth ?
+			   "depths done were compared" :
+			   "samples done were compared");
+		return sw_status_exit(SW_EINTR);
+	}
+	if (d->md->accepted == 0) {
 		cli_errorf("slipwall compare: no model sample was accepted: "
 			"the analysis failed");
 		status = 1;
 	}
-out:
-	for (int i = 0; i < nprof; i++)
-		free(prof[i].lam);
-	free(prof);
-	free(one.lam);
-	free(tests);
+	return status;
+}
+
+int cmd_compare(int argc, char **argv)
+{
+	struct compare_args a;
+	struct wall *w;
+	int status = parse_args(argc, argv, &a);
+	if (!override_begin(CMD, status, a.wall, &a.ov, &w, &status))
+		return status;
+	struct compare_data d;
+	memset(&d, 0, sizeof d);
+	d.best = -1;
+	struct run_signals caught;
+	run_signals_catch(&caught, 1);
+	status = compare(&a, w, &d);
+	run_signals_restore(&caught);
+	for (int i = 0; i < d.nprof; i++)
+		free(d.prof[i].lam);
+	free(d.prof);
+	free(d.one.lam);
+	free(d.tests);
 	wall_free(w);
 	override_free(&a.ov);
 	return status;

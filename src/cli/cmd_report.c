@@ -14,15 +14,15 @@
  * most GLOBAL_MAX_BLOCKS free blocks and within --time-limit seconds.
  * Then report_write() (report.c) draws everything.
  *
- * SIGINT, SIGTERM and SIGHUP stop the command at once wherever it is
- * (the pool is stopped, report_write is cancelled between two files),
+ * SIGINT, SIGTERM and SIGHUP (run.h's handlers, for the whole command)
+ * stop it at once wherever it is (the pool is stopped, report_write is
+ * cancelled between two files),
  * and the report directory is then as it was: report_write writes into
  * a directory beside it and puts it in place only when everything is
  * written.  The exit status is 1, "interrupted", as for `run`.
  */
 #include <ctype.h>
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,8 +37,10 @@
 #include "override.h"
 #include "slipwall/mc.h"
 #include "slipwall/report.h"
+#include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/solve.h"
+#include "slipwall/sys.h"
 #include "slipwall/tally.h"
 
 #define CMD "report"
@@ -114,86 +116,30 @@ static int parse_args(int argc, char **argv, struct report_args *a)
 }
 
 
-/* ---- signals ----------------------------------------------------------- */
+/* ---- the model's loads ------------------------------------------------- */
 
-/* The signal that arrived and the pool to stop: globals because a
- * signal handler has no other way to reach them. */
-static volatile sig_atomic_t report_signal;
-static struct mc *volatile report_pool;
-
-static void on_signal(int sig)
+static void tick(void *ctx, const struct tally *t)
 {
-	report_signal = sig;
-	struct mc *m = report_pool;
-	if (m)
-		mc_stop(m);
+	const struct mc_config *cfg = ctx;
+	fprintf(stderr, "\rreport: %ld/%ld samples\033[K", t->samples,
+		cfg->n);
+	fflush(stderr);
 }
 
-static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-
-/* Catch the three (a signal ignored at start stays ignored); old gets
- * the handlers to put back. */
-static void signals_catch(struct sigaction old[3])
-{
-	struct sigaction sa;
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sa.sa_flags = SA_RESTART;
-	for (int k = 0; k < 3; k++) {
-		sigaction(catch_sigs[k], NULL, &old[k]);
-		if (old[k].sa_handler != SIG_IGN)
-			sigaction(catch_sigs[k], &sa, NULL);
-	}
-}
-
-static void signals_restore(const struct sigaction old[3])
-{
-	for (int k = 0; k < 3; k++)
-		if (old[k].sa_handler != SIG_IGN)
-			sigaction(catch_sigs[k], &old[k], NULL);
-}
-
-/* Run the pool to the end: the tally and, in sample order, the accepted
- * loads (when lam is not NULL).  SW_EINTR when a signal stopped it. */
+/* Run the pool to the end (run_all): the tally and, in sample order,
+ * the accepted loads.  SW_EINTR when a signal stopped it. */
 static enum sw_status run_pool(const struct mc_config *cfg, struct tally *t,
 			       double **lam, long *nlam, char *err)
 {
-	struct mc *m = mc_start(cfg, err);
-	if (!m)
-		return SW_EANALYSIS;
-	report_pool = m;
-	if (report_signal)
-		mc_stop(m);
 	int tty = isatty(STDERR_FILENO);
-	struct mc_item it;
-	mc_item_init(&it, cfg->w);
-	if (lam) {
-		*lam = sw_xmalloc(sizeof(double) * (size_t)cfg->n);
-		*nlam = 0;
-	}
-	int got;
-	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
-		if (got > 0) {
-			tally_add(t, &it);
-			if (lam && it.status == SAMPLE_ACCEPTED)
-				(*lam)[(*nlam)++] = it.lambda_min;
-		}
-		if (tty) {
-			fprintf(stderr, "\rreport: %ld/%ld samples\033[K",
-				t->samples, cfg->n);
-			fflush(stderr);
-		}
-	}
+	enum sw_status st = run_all(cfg, t, lam, nlam, tty ? tick : NULL,
+				    (void *)cfg, err);
 	if (tty)
 		fprintf(stderr, "\r\033[K");
-	report_pool = NULL;
-	mc_item_free(&it);
-	mc_free(m);
-	if (report_signal)
-		return sw_fail(err, SW_EINTR, "interrupted (%s): no report "
-			       "written", strsignal(report_signal));
-	return SW_OK;
+	if (st == SW_EINTR)
+		snprintf(err, SW_ERRLEN, "interrupted (%s): no report written",
+			 strsignal(run_signal()));
+	return st;
 }
 
 /* The single-solution values (this thread's GLPK): standard and
@@ -239,14 +185,11 @@ static void single_solutions(const struct wall *w, double tlim,
 		fprintf(stderr, "report: %s: computing the single solution "
 			"(%d blocks)%s...\n", s->method, w->nfree,
 			ms[i] == SOLVE_GLOBAL ? ", within --time-limit" : "");
-		struct timespec t0, t1;
-		clock_gettime(CLOCK_MONOTONIC, &t0);
+		double t0 = sys_now();
 		enum sw_status sst = solve_run(w, &o, &r, err);
-		clock_gettime(CLOCK_MONOTONIC, &t1);
 		fprintf(stderr, "report: %s: %s (%.1f s)\n", s->method,
 			sst != SW_OK ? "failed" : isfinite(r.lambda) ? "done" :
-			"no load", (double)(t1.tv_sec - t0.tv_sec) +
-			1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
+			"no load", sys_now() - t0);
 		if (sst != SW_OK) {
 			snprintf(s->note, sizeof s->note, "%.159s", err);
 		} else if (r.status == SAMPLE_ACCEPTED ||
@@ -315,229 +258,254 @@ static char *command_line(const struct report_args *a,
 	return buf;
 }
 
-static int report_main(int argc, char **argv)
-{
-	struct report_args a;
-	int rc = parse_args(argc, argv, &a);
-	struct wall *w = NULL;
-	if (!rc)
-		rc = override_load(CMD, a.wall, &a.ov, &w);
-	if (rc) {
-		override_free(&a.ov);
-		return rc < 0 ? 0 : rc;
-	}
-
-	char err[SW_ERRLEN], note[2048] = "";
-	int status = 0;
-	double *tests = NULL, *lam = NULL, *replay = NULL, *xi = NULL;
-	char *cmdline = NULL, *tsrc = NULL;
-	long ntests = 0, nlam = 0;
+/* What report_main computes and frees. */
+struct report_data {
+	double *tests, *lam, *replay, *xi;
+	long ntests, nlam;
 	struct tally t;
-	tally_init(&t, w);
-
-	if (a.depth >= 0 && w->anywhere) {
-		status = cli_usage_error(CMD, "--depth: %s draws its contact "
-					 "points anywhere: there is no depth",
-					 a.wall);
-		goto out;
-	}
-	if (a.tests) {
-		if (cli_read_tests(a.tests, &tests, &ntests, err) != SW_OK) {
-			cli_errorf("%s", err);
-			status = 2;
-			goto out;
-		}
-	} else if (w->ntests > 0) {
-		ntests = w->ntests;
-		tests = sw_xmalloc(sizeof(double) * (size_t)ntests);
-		memcpy(tests, w->tests, sizeof(double) * (size_t)ntests);
-	}
-
 	struct mc_config cfg;
-	mc_config_default(&cfg, w);
-	if (a.samples) {
-		long rows;
-		char warn[SW_ERRLEN];
-		if (runlog_read_loads(a.samples, w, &lam, &nlam, NULL, err) !=
-		    SW_OK ||
-		    runlog_read_positions(a.samples, w, &xi, &rows, warn,
-					  err) != SW_OK) {
-			cli_errorf("%s", err);
-			status = 2;
-			goto out;
-		}
-		if (warn[0])
-			cli_errorf("%s", warn);
-		if (rows < 1) {
-			cli_errorf("%s: no samples", a.samples);
-			status = 2;
-			goto out;
-		}
-		cfg.positions = xi;
-		cfg.n = rows;
-		if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
-					  &cfg.threads)))
-			goto out;
-		long nrep = 0;
-		fprintf(stderr, "report: %ld loads from %s; replaying their "
-			"contact positions to recover the mechanisms (the file "
-			"holds none)...\n", nlam, cli_text(a.samples));
-		enum sw_status pst = run_pool(&cfg, &t, &replay, &nrep, err);
-		if (pst != SW_OK) {
-			cli_errorf("slipwall report: %s", err);
-			status = sw_status_exit(pst);
-			goto out;
-		}
-		long differ = nrep != nlam;
-		for (long i = 0; i < nrep && i < nlam; i++)
-			differ += replay[i] != lam[i];
-		if (differ)
-			snprintf(note, sizeof note, "**Warning:** replaying the "
-				 "contact positions of `%s` on this wall did not "
-				 "give the file's loads (%ld accepted, the file has "
-				 "%ld; %ld differences): the mechanisms and counts "
-				 "are those of the replay, the plotted loads those "
-				 "of the file. Was the wall changed?", a.samples,
-				 nrep, nlam, differ);
-		else
-			snprintf(note, sizeof note, "The loads are those of `%s`; "
-				 "its contact positions were replayed to recover "
-				 "the mechanisms, and gave the same loads.",
-				 a.samples);
-	} else {
-		cfg.n = a.n_set ? a.n : w->samples;
-		if (a.seed_set)
-			cfg.seed = a.seed;
-		cfg.depth = a.depth;
-		if ((status = cli_threads(CMD, w, a.threads, mc_ncpu(), cfg.n,
-					  &cfg.threads)))
-			goto out;
-		enum sw_status pst = run_pool(&cfg, &t, &lam, &nlam, err);
-		if (pst != SW_OK) {
-			cli_errorf("slipwall report: %s", err);
-			status = sw_status_exit(pst);
-			goto out;
-		}
-	}
-	if (nlam == 0) {
-		cli_errorf("slipwall report: no accepted sample (%ld "
-			"computed): nothing to plot", t.samples);
-		status = 1;
-		goto out;
-	}
+	char note[2048];
+};
 
-	/* with a samples file, what its JSON summary holds (the workbench
-	 * saves X.json beside X.csv): standard and gilbert of the same wall
-	 * file, unless the wall is changed here */
-	struct summary_file sfile, *sf = NULL;
-	if (a.samples && summary_beside(a.samples, &sfile) == 0) {
-		struct stat s1, s2;
-		int same = sfile.wall[0] && stat(sfile.wall, &s1) == 0 &&
-			   stat(a.wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
-			   s1.st_ino == s2.st_ino;
-		if (!same)
-			fprintf(stderr, "report: %s is the summary of %s, not of "
-				"%s: its single solutions are not reused\n",
-				sfile.path, sfile.wall[0] ? sfile.wall : "?",
-				a.wall);
-		else if (a.ov.n > 0)
-			fprintf(stderr, "report: the wall is changed here "
-				"(--friction, --set, ...): %s's single solutions "
-				"are not reused\n", sfile.path);
-		else
-			sf = &sfile;
+/* The loads of a samples file, and its positions replayed for the
+ * mechanisms (into d->t); d->note says whether the replay gave the
+ * file's loads.  Returns 0 or the exit status. */
+static int model_of_file(const struct report_args *a, const struct wall *w,
+			 struct report_data *d)
+{
+	char err[SW_ERRLEN], warn[SW_ERRLEN];
+	long rows, nrep = 0;
+	if (runlog_read_loads(a->samples, w, &d->lam, &d->nlam, NULL, err) !=
+	    SW_OK ||
+	    runlog_read_positions(a->samples, w, &d->xi, &rows, warn,
+				  err) != SW_OK) {
+		cli_errorf("%s", err);
+		return 2;
 	}
-	struct report_solution sol[3];
-	int nsol;
-	single_solutions(w, a.time_limit, sf, sol, &nsol);
+	if (warn[0])
+		cli_errorf("%s", warn);
+	if (rows < 1) {
+		cli_errorf("%s: no samples", a->samples);
+		return 2;
+	}
+	d->cfg.positions = d->xi;
+	d->cfg.n = rows;
+	int status = cli_threads(CMD, w, a->threads, mc_ncpu(), d->cfg.n,
+				 &d->cfg.threads);
+	if (status)
+		return status;
+	fprintf(stderr, "report: %ld loads from %s; replaying their "
+		"contact positions to recover the mechanisms (the file "
+		"holds none)...\n", d->nlam, cli_text(a->samples));
+	enum sw_status pst = run_pool(&d->cfg, &d->t, &d->replay, &nrep, err);
+	if (pst != SW_OK) {
+		cli_errorf("slipwall report: %s", err);
+		return sw_status_exit(pst);
+	}
+	long differ = nrep != d->nlam;
+	for (long i = 0; i < nrep && i < d->nlam; i++)
+		differ += d->replay[i] != d->lam[i];
+	if (differ)
+		snprintf(d->note, sizeof d->note, "**Warning:** replaying the "
+			 "contact positions of `%s` on this wall did not "
+			 "give the file's loads (%ld accepted, the file has "
+			 "%ld; %ld differences): the mechanisms and counts "
+			 "are those of the replay, the plotted loads those "
+			 "of the file. Was the wall changed?", a->samples,
+			 nrep, d->nlam, differ);
+	else
+		snprintf(d->note, sizeof d->note, "The loads are those of `%s`; "
+			 "its contact positions were replayed to recover "
+			 "the mechanisms, and gave the same loads.",
+			 a->samples);
+	return 0;
+}
 
-	cmdline = command_line(&a, &cfg);
-	if (a.tests) {
-		const char *syn = cli_tests_synthetic(a.tests) ?
-			" (**synthetic**: not measurements, the file says so)" : "";
-		size_t len = strlen(a.tests) + strlen(syn) + 3;
-		tsrc = sw_xmalloc(len);
-		snprintf(tsrc, len, "`%s`%s", a.tests, syn);
-	} else {
-		tsrc = sw_xstrdup("the wall's tests: key");
+/* A fresh run.  Returns 0 or the exit status. */
+static int model_of_run(const struct report_args *a, const struct wall *w,
+			struct report_data *d)
+{
+	char err[SW_ERRLEN];
+	d->cfg.n = a->n_set ? a->n : w->samples;
+	if (a->seed_set)
+		d->cfg.seed = a->seed;
+	d->cfg.depth = a->depth;
+	int status = cli_threads(CMD, w, a->threads, mc_ncpu(), d->cfg.n,
+				 &d->cfg.threads);
+	if (status)
+		return status;
+	enum sw_status pst = run_pool(&d->cfg, &d->t, &d->lam, &d->nlam, err);
+	if (pst != SW_OK) {
+		cli_errorf("slipwall report: %s", err);
+		return sw_status_exit(pst);
 	}
+	return 0;
+}
+
+/* With a samples file, what its JSON summary holds (the workbench
+ * saves X.json beside X.csv): standard and gilbert of the same wall
+ * file, unless the wall is changed here.  NULL: nothing to reuse. */
+static const struct summary_file *reusable(const struct report_args *a,
+					   struct summary_file *sfile)
+{
+	if (!a->samples || summary_beside(a->samples, sfile) != 0)
+		return NULL;
+	struct stat s1, s2;
+	int same = sfile->wall[0] && stat(sfile->wall, &s1) == 0 &&
+		   stat(a->wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
+		   s1.st_ino == s2.st_ino;
+	if (!same)
+		fprintf(stderr, "report: %s is the summary of %s, not of "
+			"%s: its single solutions are not reused\n",
+			sfile->path, sfile->wall[0] ? sfile->wall : "?",
+			a->wall);
+	else if (a->ov.n > 0)
+		fprintf(stderr, "report: the wall is changed here "
+			"(--friction, --set, ...): %s's single solutions "
+			"are not reused\n", sfile->path);
+	else
+		return sfile;
+	return NULL;
+}
+
+/* Where the tests come from, for the summary (malloc'd). */
+static char *tests_source(const struct report_args *a)
+{
+	if (!a->tests)
+		return sw_xstrdup("the wall's tests: key");
+	const char *syn = cli_tests_synthetic(a->tests) ?
+		" (**synthetic**: not measurements, the file says so)" : "";
+	size_t len = strlen(a->tests) + strlen(syn) + 3;
+	char *tsrc = sw_xmalloc(len);
+	snprintf(tsrc, len, "`%s`%s", a->tests, syn);
+	return tsrc;
+}
+
+/* The design load's probability of collapse and the overrides, after
+ * the replay's note. */
+static void add_notes(const struct report_args *a, const struct wall *w,
+		      struct report_data *d)
+{
+	char *note = d->note;
+	size_t len = sizeof d->note;
 	if (w->design_load > 0) {
-		/* the probability of collapse at the design load */
-		double *sl = sw_xmalloc(sizeof(double) * (size_t)nlam);
-		memcpy(sl, lam, sizeof(double) * (size_t)nlam);
-		qsort(sl, (size_t)nlam, sizeof(double), cmp_load);
+		double *sl = sw_xmalloc(sizeof(double) * (size_t)d->nlam);
+		memcpy(sl, d->lam, sizeof(double) * (size_t)d->nlam);
+		qsort(sl, (size_t)d->nlam, sizeof(double), cmp_load);
 		struct collapse cp;
-		collapse_at(sl, (size_t)nlam, w->design_load, "design_load", &cp);
+		collapse_at(sl, (size_t)d->nlam, w->design_load, "design_load",
+			    &cp);
 		free(sl);
 		size_t u = strlen(note);
-		snprintf(note + u, sizeof note - u, "%sDesign load %.6g "
+		snprintf(note + u, len - u, "%sDesign load %.6g "
 			 "(analysis.design_load): P(λ_min ≤ %.6g) = %.4g (%zu of "
 			 "%zu accepted samples), 99 %% interval [%.4g, %.4g] (exact "
 			 "binomial); see the fragility figure.", u ? " " : "",
 			 cp.load, cp.load, cp.p, cp.k, cp.n, cp.lo, cp.hi);
 	}
-	if (a.ov.n > 0) {
-		/* the overrides in the summary, after the replay's note */
-		char d[1024];
+	if (a->ov.n > 0) {
+		char o[1024];
 		size_t u = strlen(note);
-		override_describe(&a.ov, d, sizeof d);
-		snprintf(note + u, sizeof note - u, "%sThe wall file's values "
-			 "were changed for this report: %s.", u ? " " : "", d);
+		override_describe(&a->ov, o, sizeof o);
+		snprintf(note + u, len - u, "%sThe wall file's values "
+			 "were changed for this report: %s.", u ? " " : "", o);
 	}
+}
+
+/* The single solutions, then every file of the report; the line that
+ * says what was written.  Returns the exit status. */
+static int write_report(const struct report_args *a, const struct wall *w,
+			struct report_data *d)
+{
+	struct summary_file sfile;
+	struct report_solution sol[3];
+	int nsol;
+	char err[SW_ERRLEN];
+	single_solutions(w, a->time_limit, reusable(a, &sfile), sol, &nsol);
+	char *cmdline = command_line(a, &d->cfg), *tsrc = tests_source(a);
+	add_notes(a, w, d);
+	const struct tally *t = &d->t;
 	struct report_input in = {
 		.w = w,
-		.lam = lam,
-		.nlam = nlam,
-		.mech = &t,
-		.tests = tests,
-		.ntests = ntests,
+		.lam = d->lam,
+		.nlam = d->nlam,
+		.mech = t,
+		.tests = d->tests,
+		.ntests = d->ntests,
 		.sol = sol,
 		.nsol = nsol,
 		.run = {
-			.wall_path = a.wall,
+			.wall_path = a->wall,
 			.version = sw_version(),
 			.command = cmdline,
-			.samples_file = a.samples,
+			.samples_file = a->samples,
 			.tests_source = tsrc,
-			.seed_known = !a.samples,
-			.seed = cfg.seed,
-			.requested = a.samples ? 0 : cfg.n,
-			.threads = cfg.threads,
-			.depth = a.samples ? NAN : a.depth >= 0 ? a.depth : w->depth,
+			.seed_known = !a->samples,
+			.seed = d->cfg.seed,
+			.requested = a->samples ? 0 : d->cfg.n,
+			.threads = d->cfg.threads,
+			.depth = a->samples ? NAN : a->depth >= 0 ? a->depth :
+				 w->depth,
 			.anywhere = w->anywhere,
 			.has_counts = 1,
-			.samples = t.samples,
-			.accepted = t.accepted,
-			.note = *note ? note : NULL,
+			.samples = t->samples,
+			.accepted = t->accepted,
+			.note = *d->note ? d->note : NULL,
 		},
 	};
-	memcpy(in.run.rejected, t.rejected, sizeof t.rejected);
+	memcpy(in.run.rejected, t->rejected, sizeof t->rejected);
 	struct report_opts ro;
 	report_opts_default(&ro);
-	ro.cancel = &report_signal;
-	if (report_write(&in, a.out, &ro, err) != SW_OK) {
+	ro.cancel = run_signal_flag();
+	int status = 0;
+	if (report_write(&in, a->out, &ro, err) != SW_OK) {
 		cli_errorf("slipwall report: %s", err);
 		status = 1;
-		goto out;
+	} else {
+		printf("%s/report.md: %ld accepted loads of %ld samples, %ld "
+		       "tests, %d mechanisms\n", cli_text(a->out), d->nlam,
+		       t->samples, d->ntests, t->nmech);
+		if (!d->ntests)
+			printf("no experimental loads: the figures show the "
+			       "model alone\n");
+		else if (a->tests && cli_tests_synthetic(a->tests))
+			printf("the experimental loads of %s are synthetic (not "
+			       "measurements, the file says so)\n", a->tests);
 	}
-	printf("%s/report.md: %ld accepted loads of %ld samples, %ld tests, "
-	       "%d mechanisms\n", cli_text(a.out), nlam, t.samples, ntests,
-	       t.nmech);
-	if (!ntests)
-		printf("no experimental loads: the figures show the model "
-		       "alone\n");
-	else if (a.tests && cli_tests_synthetic(a.tests))
-		printf("the experimental loads of %s are synthetic (not "
-		       "measurements, the file says so)\n", a.tests);
-out:
-	report_cleanup();
 	free(cmdline);
 	free(tsrc);
-	tally_free(&t);
-	free(lam);
-	free(replay);
-	free(xi);
-	free(tests);
+	return status;
+}
+
+static int report_main(int argc, char **argv)
+{
+	struct report_args a;
+	struct wall *w;
+	int status = parse_args(argc, argv, &a);
+	if (!override_begin(CMD, status, a.wall, &a.ov, &w, &status))
+		return status;
+
+	struct report_data d;
+	memset(&d, 0, sizeof d);
+	tally_init(&d.t, w);
+	mc_config_default(&d.cfg, w);
+	status = cli_check_depth(CMD, w, a.wall, a.depth);
+	if (!status && !(status = cli_tests(a.tests, w, &d.tests, &d.ntests)))
+		status = a.samples ? model_of_file(&a, w, &d) :
+			 model_of_run(&a, w, &d);
+	if (!status && d.nlam == 0) {
+		cli_errorf("slipwall report: no accepted sample (%ld "
+			"computed): nothing to plot", d.t.samples);
+		status = 1;
+	}
+	if (!status)
+		status = write_report(&a, w, &d);
+	report_cleanup();
+	tally_free(&d.t);
+	free(d.lam);
+	free(d.replay);
+	free(d.xi);
+	free(d.tests);
 	wall_free(w);
 	override_free(&a.ov);
 	return status;
@@ -545,10 +513,9 @@ out:
 
 int cmd_report(int argc, char **argv)
 {
-	struct sigaction old[3];
-	report_signal = 0;
-	signals_catch(old);
+	struct run_signals caught;
+	run_signals_catch(&caught, 0);
 	int rc = report_main(argc, argv);
-	signals_restore(old);
+	run_signals_restore(&caught);
 	return rc;
 }

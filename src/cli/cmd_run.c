@@ -2,39 +2,23 @@
  * cmd_run.c - `slipwall run`: the Monte Carlo analysis from the command
  * line (SPEC sections 2 and 4; docs/run.md is the user's page).
  *
- * The worker pool (mc.c) computes the samples; this thread pops them in
- * index order, writes each one's row to the samples file (runlog.c: one
- * write(2) per row), feeds the tally (tally.c) and, when stderr is a
- * terminal, redraws a progress line at most ten times a second.  At the
- * end it prints the summary, for people or as JSON.
- *
- * Stopping: SIGINT, SIGTERM and SIGHUP arrive on this thread (mc_start
- * blocks them in the workers).  The handler only records the signal and
- * calls mc_stop(), which is async-signal-safe (a signal ignored when the
- * program starts, as under nohup, stays ignored); the handler is one-shot
- * (SA_RESETHAND), so a second Ctrl-C kills at once - the samples file
- * still holds complete rows only.  After a stop the loop keeps popping:
- * every sample finished in order is written and counted, then the
- * summary of what was done is printed and the exit status is 1
- * ("interrupted", SW_EINTR): the run did not do what was asked.
- *
- * --until-ci W stops at the first sample count at which the 99 %
- * interval of p05 is narrower than W times p05.  Samples the pool
- * finished beyond that point are discarded, so the result does not
- * depend on the thread count or the timing.  Finding the interval's
- * ranks costs O(n) (stats_quantile_ci_ranks), so the test is made after
- * every accepted sample up to 1000 of them, then after every
- * ceil(n/1000)-th: a stop at most 0.1 % late, at a constant cost per
- * sample.  The progress line refreshes its interval at most once a
- * second beyond 20000 accepted samples, for the same reason.
+ * The run itself is the library's (run.h): the worker pool (mc.c)
+ * computes the samples; this thread takes them in index order through
+ * run_pump, which writes each one's row to the samples file and counts
+ * it, stops for --until-ci, on a write error or a signal (run.h says
+ * the policies); here, when stderr is a terminal, a progress line is
+ * redrawn at most ten times a second, and at the end the summary is
+ * printed, for people or as JSON.  The signal handlers are one-shot: a
+ * second Ctrl-C kills at once, the samples file still holds complete
+ * rows only.  The progress line refreshes p05's interval at most once a
+ * second beyond 20000 accepted samples (finding its ranks costs O(n)).
  *
  * Under mpirun (an MPI build, docs/cluster.md) every rank sets up the
  * same run and computes its share of the samples (cluster.c); rank 0
- * reads the merged stream instead of its own pool - the `struct source`
- * below - and does all of the above; the other ranks only send.
+ * takes the merged stream (cluster_source) instead of its own pool and
+ * does all of the above; the other ranks only send.
  */
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,9 +32,11 @@
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
+#include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sample.h"
 #include "slipwall/stats.h"
+#include "slipwall/sys.h"
 #include "slipwall/tally.h"
 
 #define CMD "run"
@@ -72,115 +58,6 @@ struct run_args {
 	struct overrides ov;	/* --friction, --set, ... */
 	double at;		/* --at LOAD; < 0: none */
 };
-
-enum stop_reason {
-	STOP_NONE, STOP_SIGNAL, STOP_UNTIL_CI, STOP_WRITE, STOP_LOST
-};
-
-/* ---- where the samples come from ------------------------------------- */
-
-/* The samples in index order: this process's pool (mc.c), or on rank 0
- * of an MPI job the merged stream of every rank's pool (cluster.c).
- * stop() is async-signal-safe (the signal handler calls it); status()
- * says, after pop() returned -1, whether another rank cut the stream
- * short: SW_EINTR (a signal there) or SW_EIO (a rank lost), with a
- * message. */
-struct source {
-	void *ctx;
-	int (*pop)(void *ctx, struct mc_item *it, int wait_ms);
-	void (*stop)(void *ctx, int sig);
-	enum sw_status (*status)(void *ctx, char *err);
-};
-
-static int pool_pop(void *m, struct mc_item *it, int wait_ms)
-{
-	return mc_pop(m, it, wait_ms);
-}
-
-static void pool_stop(void *m, int sig)
-{
-	(void)sig;
-	mc_stop(m);
-}
-
-static enum sw_status pool_status(void *m, char *err)
-{
-	(void)m;
-	(void)err;
-	return SW_OK;
-}
-
-static int job_pop(void *c, struct mc_item *it, int wait_ms)
-{
-	return cluster_pop(c, it, wait_ms);
-}
-
-static void job_stop(void *c, int sig)
-{
-	cluster_stop(c, sig);
-}
-
-static enum sw_status job_status(void *c, char *err)
-{
-	return cluster_status(c, err);
-}
-
-/* ---- signals ----------------------------------------------------------- */
-
-/* The source and the signal that stopped it.  Globals because a signal
- * handler has no other way to reach them; set before the handlers are
- * installed, cleared after they are removed. */
-static const struct source *volatile run_src;
-static volatile sig_atomic_t run_signal;
-
-static void on_signal(int sig)
-{
-	run_signal = sig;
-	if (run_src)
-		run_src->stop(run_src->ctx, sig);
-}
-
-static const int catch_sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-
-/* The handlers that were there before. */
-struct caught {
-	struct sigaction old[3];
-	int on[3];
-};
-
-static void signals_catch(const struct source *src, struct caught *c)
-{
-	struct sigaction sa;
-	run_signal = 0;
-	run_src = src;
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sa.sa_flags = SA_RESTART | SA_RESETHAND;
-	/* a signal ignored at start stays ignored (nohup, a background job
-	 * of a shell without job control) */
-	for (int k = 0; k < 3; k++) {
-		sigaction(catch_sigs[k], NULL, &c->old[k]);
-		c->on[k] = c->old[k].sa_handler != SIG_IGN;
-		if (c->on[k])
-			sigaction(catch_sigs[k], &sa, NULL);
-	}
-}
-
-static void signals_restore(struct caught *c)
-{
-	for (int k = 0; k < 3; k++)
-		if (c->on[k])
-			sigaction(catch_sigs[k], &c->old[k], NULL);
-	run_src = NULL;
-}
-
-static double now(void)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static void usage(FILE *f)
 {
@@ -274,41 +151,6 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 	return 0;
 }
 
-/* ---- the 99 % interval of p05, incrementally ------------------------- */
-
-/* The ranks of the interval depend on n only; they are found again only
- * when the number of accepted samples changed. */
-struct ci_state {
-	size_t n;		/* accepted count the ranks belong to */
-	int ok;
-	size_t lo, hi;
-};
-
-static int p05_interval(const struct tally *t, struct ci_state *c,
-			double *p05, double *lo, double *hi)
-{
-	size_t n = t->lam.n;
-	if (n != c->n) {
-		c->n = n;
-		c->ok = stats_quantile_ci_ranks(n, 0.05, 0.99, &c->lo,
-						&c->hi) == 0;
-	}
-	*p05 = stats_quantile_sorted(t->lam.x, n, 0.05);
-	if (!c->ok) {
-		*lo = *hi = NAN;
-		return 0;
-	}
-	*lo = t->lam.x[c->lo - 1];
-	*hi = t->lam.x[c->hi - 1];
-	return 1;
-}
-
-/* Is the --until-ci test due after the n-th accepted sample? */
-static int ci_due(size_t n)
-{
-	return n <= 1000 || n % ((n + 999) / 1000) == 0;
-}
-
 /* ---- the progress line ------------------------------------------------ */
 
 static void fmt_duration(char *buf, size_t len, double s)
@@ -326,21 +168,21 @@ static void fmt_duration(char *buf, size_t len, double s)
 
 /* What the progress line shows of the interval, refreshed sparingly. */
 struct progress_ci {
-	struct ci_state ci;
 	double when;		/* elapsed time of the last refresh */
 	int has;
 	double p05, lo, hi;
 };
 
-static void progress(const struct tally *t, struct progress_ci *pc, long n,
+static void progress(struct run *run, struct progress_ci *pc, long n,
 		     double elapsed, double est)
 {
+	const struct tally *t = run->tally;
 	double rate = elapsed > 0 ? (double)t->samples / elapsed : 0;
 	char left[32], p05s[96] = "";
 	fmt_duration(left, sizeof left, rate > 0 ? (double)(n - t->samples) /
 		     rate : NAN);
 	if (t->lam.n > 0 && (t->lam.n <= 20000 || elapsed - pc->when >= 1)) {
-		pc->has = p05_interval(t, &pc->ci, &pc->p05, &pc->lo, &pc->hi);
+		pc->has = run_p05(run, &pc->p05, &pc->lo, &pc->hi);
 		pc->when = elapsed;
 	}
 	if (t->lam.n > 0) {
@@ -410,7 +252,7 @@ struct run_info {
 	const struct wall *w;
 	const struct mc_config *cfg;
 	long requested;
-	enum stop_reason stop;
+	enum run_stop stop;
 	double elapsed;
 	int ranks;		/* of an MPI job; 0: no job */
 };
@@ -418,22 +260,6 @@ struct run_info {
 static double depth_used(const struct run_info *r)
 {
 	return r->cfg->depth < 0 ? r->w->depth : r->cfg->depth;
-}
-
-static const char *stop_name(enum stop_reason s)
-{
-	switch (s) {
-	case STOP_SIGNAL:
-		return "interrupted";
-	case STOP_UNTIL_CI:
-		return "until_ci";
-	case STOP_WRITE:
-		return "write_error";
-	case STOP_LOST:
-		return "rank_lost";
-	default:
-		return "complete";
-	}
 }
 
 static void print_text(const struct run_info *r, const struct tally *t)
@@ -557,7 +383,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "requested");
 	json_int(&j, r->requested);
 	json_key(&j, "stopped");
-	json_string(&j, stop_name(r->stop));
+	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
 	json_key(&j, "design_load");
 	if (r->w->design_load > 0)
@@ -701,10 +527,8 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	if ((rc = override_load(CMD, a->wall, &a->ov, &s->w)))
 		return rc;
 	struct wall *w = s->w;
-	if (a->depth >= 0 && w->anywhere)
-		return cli_usage_error(CMD, "--depth: %s draws its contact "
-				       "points anywhere (contacts.positions), "
-				       "there is no depth", a->wall);
+	if (cli_check_depth(CMD, w, a->wall, a->depth))
+		return 2;
 
 	char err[SW_ERRLEN];
 	struct mc_config *cfg = &s->cfg;
@@ -749,104 +573,31 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	return 0;
 }
 
-/* Rank 0 (or the only process): take the samples in order, write and
- * count them, print the summary.  Returns the exit status. */
-static int sample(struct run_setup *s, const struct source *src,
-		  const struct cluster *cl, double t0)
+/* What went wrong, on stderr; the exit status. */
+static int report_end(const struct run *run, enum sw_status cst,
+		      const char *cerr, long n)
 {
-	const struct run_args *a = &s->a;
-	const struct mc_config *cfg = &s->cfg;
-	struct runlog *log = s->log;
-	struct caught caught;
-	signals_catch(src, &caught);
-
-	int tty = isatty(STDERR_FILENO);
-	struct tally t;
-	struct mc_item it;
-	struct ci_state ci = {0};
-	struct progress_ci pci = {0};
-	tally_init(&t, s->w);
-	mc_item_init(&it, s->w);
-	enum stop_reason stop = STOP_NONE;
-	double last_draw = 0, est = mc_sample_seconds(s->w);
-	enum sw_status wst = SW_OK;
-	char werr[SW_ERRLEN] = "", err[SW_ERRLEN], serr[SW_ERRLEN] = "";
-	for (;;) {
-		int got = src->pop(src->ctx, &it, tty ? 100 : -1);
-		if (got < 0)
-			break;
-		if (got > 0 && stop != STOP_UNTIL_CI && stop != STOP_WRITE) {
-			if (log && (wst = runlog_write(log, &it, werr)) != SW_OK) {
-				/* the row is lost: count nothing more */
-				stop = STOP_WRITE;
-				src->stop(src->ctx, 0);
-				continue;
-			}
-			tally_add(&t, &it);
-			double p05, lo, hi;
-			if (a->until_ci > 0 && it.status == SAMPLE_ACCEPTED &&
-			    ci_due(t.lam.n) &&
-			    p05_interval(&t, &ci, &p05, &lo, &hi) && p05 > 0 &&
-			    hi - lo < a->until_ci * p05) {
-				stop = STOP_UNTIL_CI;
-				src->stop(src->ctx, 0);
-			}
-		}
-		if (tty && now() - last_draw >= 0.1) {
-			last_draw = now();
-			progress(&t, &pci, cfg->n, last_draw - t0, est);
-		}
-	}
-	double elapsed = now() - t0;
-	if (tty)
-		fprintf(stderr, "\r\033[K");
-	int sig = run_signal;
-	signals_restore(&caught);
-	mc_item_free(&it);
-
-	/* why: the signal here, or what another rank says */
-	char why[SW_ERRLEN] = "";
-	enum sw_status sst = src->status(src->ctx, serr);
-	if (sig && stop == STOP_NONE) {
-		stop = STOP_SIGNAL;
-		snprintf(why, sizeof why, "%s", strsignal(sig));
-	} else if (sst == SW_EINTR && stop == STOP_NONE) {
-		stop = STOP_SIGNAL;
-		snprintf(why, sizeof why, "%s", serr);
-	} else if (sst != SW_OK && sst != SW_EINTR && stop == STOP_NONE) {
-		stop = STOP_LOST;
-	}
-
-	enum sw_status cst = runlog_close(log, err);
-	s->log = NULL;
-
-	struct run_info info = {a, s->w, cfg, cfg->n, stop, elapsed,
-				cl ? cluster_size(cl) : 0};
-	if (a->json)
-		print_json(&info, &t);
-	else
-		print_text(&info, &t);
-	fflush(stdout);
-
+	const struct tally *t = run->tally;
+	enum sw_status sst = run->source_status;
 	int status = 0;
-	if (stop == STOP_WRITE) {
-		cli_errorf("slipwall run: %s", werr);
+	if (run->stop == RUN_WRITE) {
+		cli_errorf("slipwall run: %s", run->werr);
 		status = 1;
 	} else if (cst != SW_OK) {
-		cli_errorf("slipwall run: %s", err);
+		cli_errorf("slipwall run: %s", cerr);
 		status = 1;
 	}
-	if (stop == STOP_SIGNAL) {
+	if (run->stop == RUN_SIGNAL) {
 		cli_errorf("slipwall run: interrupted (%s) after %ld of %ld "
-			"samples", why, t.samples, cfg->n);
+			"samples", run->why, t->samples, n);
 		status = sw_status_exit(SW_EINTR);
 	}
-	if (stop == STOP_LOST) {
+	if (run->stop == RUN_LOST) {
 		cli_errorf("slipwall run: %s: stopped after %ld of %ld "
-			"samples", serr, t.samples, cfg->n);
+			"samples", run->source_err, t->samples, n);
 		status = 1;
 	} else if (sst != SW_OK && sst != SW_EINTR) {
-		cli_errorf("slipwall run: %s", serr);
+		cli_errorf("slipwall run: %s", run->source_err);
 		status = 1;
 	}
 	long oom = mc_memory_errors();
@@ -856,23 +607,71 @@ static int sample(struct run_setup *s, const struct source *src,
 			"samples it was solving were rejected as numerical; free "
 			"memory or use fewer --threads", oom, oom == 1 ? "" : "s",
 			mc_worker_memory());
-	if (t.accepted == 0 && t.samples > 0) {
+	if (t->accepted == 0 && t->samples > 0) {
 		cli_errorf("slipwall run: no sample was accepted: the "
 			"analysis failed (see the rejections above)");
 		status = 1;
 	}
+	return status;
+}
+
+/* Rank 0 (or the only process): take the samples in order, write and
+ * count them (run.c), print the summary.  Returns the exit status. */
+static int sample(struct run_setup *s, const struct run_source *src,
+		  const struct cluster *cl, double t0)
+{
+	const struct mc_config *cfg = &s->cfg;
+	struct run_signals caught;
+	run_signals_catch(&caught, 1);
+	run_signals_watch(src);
+
+	int tty = isatty(STDERR_FILENO);
+	struct tally t;
+	struct run run;
+	struct progress_ci pci = {0};
+	tally_init(&t, s->w);
+	run_init(&run, s->w, src, &t, s->log);
+	run.until_ci = s->a.until_ci;
+	double last_draw = 0, est = mc_sample_seconds(s->w);
+	while (run_pump(&run, tty ? 100 : -1) >= 0) {
+		if (tty && sys_now() - last_draw >= 0.1) {
+			last_draw = sys_now();
+			progress(&run, &pci, cfg->n, last_draw - t0, est);
+		}
+	}
+	double elapsed = sys_now() - t0;
+	if (tty)
+		fprintf(stderr, "\r\033[K");
+	run_finish(&run);
+	run_signals_restore(&caught);
+
+	char err[SW_ERRLEN];
+	enum sw_status cst = runlog_close(s->log, err);
+	s->log = NULL;
+
+	struct run_info info = {&s->a, s->w, cfg, cfg->n, run.stop, elapsed,
+				cl ? cluster_size(cl) : 0};
+	if (s->a.json)
+		print_json(&info, &t);
+	else
+		print_text(&info, &t);
+	fflush(stdout);
+
+	int status = report_end(&run, cst, err, cfg->n);
+	run_free(&run);
 	tally_free(&t);
 	return status;
 }
 
 /* A rank > 0 of a job: compute and send.  Rank 0 reports a signal. */
-static int serve(struct cluster *cl, const struct source *src)
+static int serve(struct cluster *cl, const struct run_source *src)
 {
 	char err[SW_ERRLEN];
-	struct caught caught;
-	signals_catch(src, &caught);
+	struct run_signals caught;
+	run_signals_catch(&caught, 1);
+	run_signals_watch(src);
 	enum sw_status st = cluster_serve(cl, err);
-	signals_restore(&caught);
+	run_signals_restore(&caught);
 	if (st != SW_OK && st != SW_EINTR)
 		cli_errorf("slipwall run: %s", err);
 	return sw_status_exit(st);
@@ -888,7 +687,7 @@ static int run_job(struct cluster *cl, int argc, char **argv)
 	struct held held;
 	held_start(&held, cl);
 	int rc = setup(argc, argv, cl, &s);
-	double t0 = now();
+	double t0 = sys_now();
 	if (rc == 0 && cl && cluster_open(cl, &s.cfg, err) != SW_OK) {
 		cli_errorf("slipwall run: %s", err);
 		rc = 1;
@@ -901,9 +700,11 @@ static int run_job(struct cluster *cl, int argc, char **argv)
 	rc = cluster_agree(cl, rc, rc == 0 ? &s.cfg : NULL, &root_rc);
 	held_release(&held, mine > 0 && root_rc <= 0);
 	if (rc == 0) {
-		struct source src = {pool, pool_pop, pool_stop, pool_status};
+		struct run_source src;
 		if (cl)
-			src = (struct source){cl, job_pop, job_stop, job_status};
+			cluster_source(cl, &src);
+		else
+			run_source_pool(&src, pool);
 		rc = cluster_rank(cl) > 0 ? serve(cl, &src) :
 		     sample(&s, &src, cl, t0);
 	}

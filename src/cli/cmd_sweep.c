@@ -34,6 +34,7 @@
 #include "slipwall/mc.h"
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
+#include "slipwall/run.h"
 #include "slipwall/tally.h"
 
 #define CMD "sweep"
@@ -278,35 +279,36 @@ static int wall_for(const struct sweep_args *a, int k, struct wall **w)
 	return rc;
 }
 
+/* The progress line of one value's run. */
+struct sweep_tick {
+	int k, nval;
+	long n;
+};
+
+static void tick(void *ctx, const struct tally *t)
+{
+	const struct sweep_tick *st = ctx;
+	fprintf(stderr, "\rsweep: value %d of %d, %ld/%ld samples\033[K",
+		st->k + 1, st->nval, t->samples, st->n);
+	fflush(stderr);
+}
+
+/* One value's run (run_all, no file) and what the sweep keeps of it. */
 static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
 				int k, int nval, char *err)
 {
-	struct mc *m = mc_start(cfg, err);
-	if (!m)
-		return SW_EANALYSIS;
-	int tty = isatty(STDERR_FILENO);
+	struct sweep_tick st = {k, nval, cfg->n};
 	struct tally t;
-	struct mc_item it;
 	tally_init(&t, cfg->w);
-	mc_item_init(&it, cfg->w);
-	int got;
-	while ((got = mc_pop(m, &it, tty ? 200 : -1)) >= 0) {
-		if (got > 0)
-			tally_add(&t, &it);
-		if (tty) {
-			fprintf(stderr, "\rsweep: value %d of %d, %ld/%ld samples"
-				"\033[K", k + 1, nval, t.samples, cfg->n);
-			fflush(stderr);
-		}
-	}
-	mc_item_free(&it);
-	mc_free(m);
+	enum sw_status rc = run_all(cfg, &t, NULL, NULL,
+				    isatty(STDERR_FILENO) ? tick : NULL, &st,
+				    err);
 	p->samples = t.samples;
 	p->accepted = t.accepted;
 	p->mechanisms = t.nmech;
 	tally_summary(&t, &p->s);
 	tally_free(&t);
-	return SW_OK;
+	return rc;
 }
 
 /* ---- output --------------------------------------------------------------- */
@@ -497,11 +499,9 @@ int cmd_sweep(int argc, char **argv)
 		args_free(&a);
 		return rc;
 	}
-	if (a.param == SW_DEPTH && base->anywhere) {
-		rc = cli_usage_error(CMD, "--depth: %s draws its contact points "
-				     "anywhere: there is no depth", a.wall);
+	if ((rc = cli_check_depth(CMD, base, a.wall,
+				  a.param == SW_DEPTH ? 0 : -1)))
 		goto out;
-	}
 	unsigned long seed = a.seed_set ? a.seed : base->seed;
 	long n = a.n_set ? a.n : base->samples;
 	struct point *pt = sw_xmalloc(sizeof *pt * (size_t)a.nval);

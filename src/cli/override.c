@@ -189,6 +189,19 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 	return 0;
 }
 
+int override_begin(const char *cmd, int rc, const char *path,
+		   struct overrides *ov, struct wall **w, int *status)
+{
+	*w = NULL;
+	if (!rc)
+		rc = override_load(cmd, path, ov, w);
+	if (!rc)
+		return 1;
+	override_free(ov);
+	*status = rc < 0 ? 0 : rc;
+	return 0;
+}
+
 void override_json(const struct overrides *ov, struct json *j)
 {
 	json_key(j, "overrides");
@@ -196,14 +209,10 @@ void override_json(const struct overrides *ov, struct json *j)
 	for (int k = 0; k < ov->n; k++) {
 		const struct override *x = &ov->o[k];
 		json_object_begin(j);
-		json_key(j, "option");
-		json_string(j, x->option);
-		json_key(j, "value");
-		json_string(j, x->arg);
-		json_key(j, "key");
-		json_string(j, x->key);
-		json_key(j, "yaml");
-		json_string(j, x->value);
+		json_key_string(j, "option", x->option);
+		json_key_string(j, "value", x->arg);
+		json_key_string(j, "key", x->key);
+		json_key_string(j, "yaml", x->value);
 		json_object_end(j);
 	}
 	json_array_end(j);

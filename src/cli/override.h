@@ -63,6 +63,13 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst);
  * exit status (2) after printing the message. */
 int override_load(const char *cmd, const char *path, struct overrides *ov,
 		  struct wall **w);
+/* The start of a command with overrides: rc is what its parse_args
+ * returned (0: go on; -1: --help was printed; else an exit status).
+ * Then the wall at path with the overrides applied (override_load).
+ * Returns 1 with *w to go on; else 0 with the exit status in *status,
+ * the overrides freed. */
+int override_begin(const char *cmd, int rc, const char *path,
+		   struct overrides *ov, struct wall **w, int *status);
 /* "overrides": [{"option", "value", "key", "yaml"}, ...] (an empty list
  * when there is none). */
 void override_json(const struct overrides *ov, struct json *j);

@@ -163,3 +163,21 @@ void json_end(struct json *j)
 	fputc('\n', j->f);
 	fflush(j->f);
 }
+
+void json_key_string(struct json *j, const char *k, const char *s)
+{
+	json_key(j, k);
+	json_string(j, s);
+}
+
+void json_key_double(struct json *j, const char *k, double v)
+{
+	json_key(j, k);
+	json_double(j, v);
+}
+
+void json_key_int(struct json *j, const char *k, long long v)
+{
+	json_key(j, k);
+	json_int(j, v);
+}

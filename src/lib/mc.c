@@ -64,7 +64,7 @@
 
 struct slot {
 	int full;
-	struct mc_item item;
+	struct record item;
 };
 
 struct mc {
@@ -165,36 +165,6 @@ void mc_config_default(struct mc_config *c, const struct wall *w)
 	sample_opts_default(&c->opts);
 }
 
-void mc_item_init(struct mc_item *it, const struct wall *w)
-{
-	memset(it, 0, sizeof *it);
-	it->xi = sw_xcalloc(2 * (size_t)w->nifaces + 1, sizeof(double));
-	it->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
-	it->vel = sw_xcalloc(3 * (size_t)w->nblocks + 1, sizeof(double));
-}
-
-void mc_item_free(struct mc_item *it)
-{
-	free(it->xi);
-	free(it->joint);
-	free(it->vel);
-	memset(it, 0, sizeof *it);
-}
-
-static void item_copy(struct mc_item *dst, const struct mc_item *src,
-		      const struct wall *w)
-{
-	double *xi = dst->xi, *vel = dst->vel;
-	char *joint = dst->joint;
-	*dst = *src;
-	dst->xi = xi;
-	dst->vel = vel;
-	dst->joint = joint;
-	memcpy(xi, src->xi, sizeof(double) * 2 * (size_t)w->nifaces);
-	memcpy(vel, src->vel, sizeof(double) * 3 * (size_t)w->nblocks);
-	memcpy(joint, src->joint, (size_t)w->nifaces + 1);
-}
-
 static void notify(struct mc *m)
 {
 	char b = 1;
@@ -230,9 +200,9 @@ static void *worker(void *arg)
 	lp_thread_stop_flag(&m->stop);
 	struct sample_ws *ws = sample_ws_new(w);
 	struct sample_result r;
-	struct mc_item it;
+	struct record it;
 	sample_result_init(&r, w);
-	mc_item_init(&it, w);
+	record_init(&it, w);
 	size_t nxi = 2 * (size_t)w->nifaces;
 
 	for (;;) {
@@ -264,26 +234,11 @@ static void *worker(void *arg)
 		if (lp_thread_interrupted())
 			break;	/* incomplete: never reported (mc_pop ends
 				 * at its index once the workers are gone) */
-		it.seconds = sys_now() - t0;
-		it.index = i;
-		it.status = r.status;
-		it.lambda_lpmax = r.lambda_lpmax;
-		it.lambda_max = r.lambda_max;
-		it.lambda_min = r.lambda_min;
-		it.vw_residual = r.vw_residual;
-		it.iterations = r.iterations;
-		it.lps = r.lps;
-		if (r.status == SAMPLE_ACCEPTED) {
-			memcpy(it.joint, r.joint, (size_t)w->nifaces + 1);
-			memcpy(it.vel, r.vel, sizeof(double) * 3 * (size_t)w->nblocks);
-		} else {
-			memset(it.joint, 0, (size_t)w->nifaces + 1);
-			memset(it.vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
-		}
+		record_set(&it, i, &r, sys_now() - t0, w);
 
 		pthread_mutex_lock(&m->mu);
 		struct slot *s = &m->ring[k % m->window];
-		item_copy(&s->item, &it, w);
+		record_copy(&s->item, &it, w);
 		s->full = 1;
 		m->since[id] = 0;
 		if (k == m->next_out) {
@@ -297,7 +252,7 @@ static void *worker(void *arg)
 	lp_thread_counters(&solves, &iters, &held);
 	double lp_seconds = lp_thread_seconds();
 	sample_result_free(&r);
-	mc_item_free(&it);
+	record_free(&it);
 	sample_ws_free(ws);
 	lp_thread_stop_flag(NULL);
 	lp_thread_done();
@@ -337,7 +292,7 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 	m->window = 64 + 16L * m->nth;
 	m->ring = sw_xcalloc((size_t)m->window, sizeof *m->ring);
 	for (long k = 0; k < m->window; k++)
-		mc_item_init(&m->ring[k].item, c->w);
+		record_init(&m->ring[k].item, c->w);
 	pthread_mutex_init(&m->mu, NULL);
 	pthread_cond_init(&m->cv_space, NULL);
 	pthread_cond_init(&m->cv_ready, NULL);
@@ -398,7 +353,7 @@ void mc_progress(struct mc *m, struct mc_progress *p)
 	pthread_mutex_unlock(&m->mu);
 }
 
-int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
+int mc_pop(struct mc *m, struct record *it, int wait_ms)
 {
 	char buf[64];
 	while (read(m->pipe[0], buf, sizeof buf) > 0)
@@ -414,7 +369,7 @@ int mc_pop(struct mc *m, struct mc_item *it, int wait_ms)
 		}
 		struct slot *s = &m->ring[m->next_out % m->window];
 		if (s->full) {
-			item_copy(it, &s->item, m->cfg.w);
+			record_copy(it, &s->item, m->cfg.w);
 			s->full = 0;
 			m->next_out++;
 			pthread_cond_broadcast(&m->cv_space);
@@ -486,7 +441,7 @@ void mc_free(struct mc *m)
 	for (int k = 0; k < m->started; k++)
 		pthread_join(m->th[k], NULL);
 	for (long k = 0; k < m->window; k++)
-		mc_item_free(&m->ring[k].item);
+		record_free(&m->ring[k].item);
 	free(m->ring);
 	free(m->th);
 	free(m->since);

@@ -174,7 +174,7 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 	return SW_OK;
 }
 
-enum sw_status runlog_write(struct runlog *l, const struct mc_item *it,
+enum sw_status runlog_write(struct runlog *l, const struct record *it,
 			    char *err)
 {
 	char tmp[64];

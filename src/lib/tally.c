@@ -97,7 +97,7 @@ static int find_or_add(struct tally *t, const char *joint, const double *vel,
 	return t->nmech++;
 }
 
-void tally_add(struct tally *t, const struct mc_item *it)
+void tally_add(struct tally *t, const struct record *it)
 {
 	t->samples++;
 	t->iterations += it->iterations;

@@ -34,6 +34,7 @@
 
 #include "slipwall/history.h"
 #include "slipwall/mc.h"
+#include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sys.h"
 #include "slipwall/tally.h"
@@ -45,23 +46,22 @@
 #define TUI_UNDO_STEPS 100	/* edits that u can take back */
 #define TUI_FRAME 0.1		/* seconds between redraws (10 Hz at most) */
 
-/* One sampling run: one wall, one samples file, one tally.  The pool may
- * be replaced during a run (pause/resume, a raised target): `base` is the
- * index of the pool's sample 0, and a pool that does not start at 0
- * replays the contact positions of (seed, base + i) from `table`, so the
- * file is the one `slipwall run` writes with the same seed. */
+/* One sampling run: one wall, one samples file, one tally, the
+ * library's run (run.h) over them.  The pool may be replaced during a
+ * run (pause/resume, a raised target): a new pool starts at sample
+ * `done` (mc_config.first), so the file is the one `slipwall run`
+ * writes with the same seed. */
 struct tui_run {
 	struct mc *mc;		/* NULL when paused or finished */
 	struct mc_config cfg;
-	double *table;		/* positions of the current chunk, or NULL */
-	long base;		/* index of the pool's sample 0 */
-	long done;		/* samples popped: the next index */
+	struct run_source src;	/* the current pool */
+	struct run core;	/* file, tally, write errors */
+	long done;		/* samples taken: the next index */
 	long target;		/* samples wanted */
 	int paused;
 	struct runlog *log;	/* NULL if the file could not be made */
 	char csv[PATH_MAX];
 	struct tally tally;
-	struct mc_item item;	/* pop buffer */
 	char *latest_joint;	/* mechanism of the latest accepted sample */
 	double *latest_vel;
 	long latest_index;	/* -1: none yet */

@@ -1,18 +1,22 @@
 /*
- * tui_run.c - one sampling run of the workbench: the worker pool, the
- * samples CSV and the tally, driven from the UI thread.
+ * tui_run.c - one sampling run of the workbench: the library's run
+ * (run.h: the samples CSV, the tally, the write-error policy) on a
+ * worker pool, driven from the UI thread.
  *
  * A run starts when a wall is loaded or edited, or on reset: a new
  * samples file (streamed from the first sample, one complete row per
  * write), a fresh tally, and a pool of t->threads workers for indices
  * 0 .. target-1 with the wall's seed, exactly as `slipwall run` would.
  *
- * Pause stops the pool (mc_stop), pops what the workers had finished or
- * were computing (mc_pop waits for those), and frees it: `done` samples,
- * contiguous, are in the file.  Resume, or a target raised after the
- * pool has ended, starts a new pool on a replay table of the positions
- * of (seed, done + i), in chunks of bounded memory, and adds `done` to
- * the indices it returns: the file stays the one `run` writes.
+ * Pause stops the pool (mc_stop), takes what the workers had finished
+ * in order (the one in progress is abandoned) and frees it: `done`
+ * samples, contiguous, are in the file.  Resume, or a target raised
+ * after the pool has ended, starts a new pool at sample `done` (mc's
+ * first): the file stays the one `run` writes.
+ *
+ * A row that cannot be written stops the run (run.h): the screen says
+ * so, the run pauses for good ("write error"), and reset (r) starts a
+ * new one; no sample is counted without its row.
  *
  * tui_run_end() is called before the wall changes and at exit: it
  * drains the pool the same way, so every computed sample has its row,
@@ -26,11 +30,6 @@
 #include "slipwall/runlog.h"
 #include "tui.h"
 
-/* Replay chunks: at most this many samples (the table is built on the
- * UI thread, a few microseconds a row) and this many doubles (16 MB). */
-#define TUI_RUN_CHUNK 4096L
-#define TUI_RUN_TABLE_MAX (2L << 20)
-
 static void tui_run_free_pool(struct tui *t)
 {
 	struct tui_run *r = &t->run;
@@ -39,32 +38,31 @@ static void tui_run_free_pool(struct tui *t)
 	tui_signal_watch(NULL);
 	mc_free(r->mc);
 	r->mc = NULL;
-	free(r->table);
-	r->table = NULL;
 	r->active += sys_now() - r->t_start;
 }
 
-/* One popped sample: to the file, to the tally. */
-static void tui_run_take(struct tui *t)
+/* After each sample the run counted: the latest mechanism, the count. */
+static void tui_run_each(void *ctx, const struct record *rec)
 {
+	struct tui *t = ctx;
 	struct tui_run *r = &t->run;
 	const struct wall *w = t->w;
-	char err[SW_ERRLEN];
-
-	r->item.index += r->base;
-	if (r->log && runlog_write(r->log, &r->item, err) != SW_OK) {
-		tui_message(t, 1, "samples file: %s (no more rows written)", err);
-		runlog_close(r->log, err);
-		r->log = NULL;
-	}
-	tally_add(&r->tally, &r->item);
-	if (r->item.status == SAMPLE_ACCEPTED) {
-		memcpy(r->latest_joint, r->item.joint, (size_t)w->nifaces + 1);
-		memcpy(r->latest_vel, r->item.vel,
+	if (rec->status == SAMPLE_ACCEPTED) {
+		memcpy(r->latest_joint, rec->joint, (size_t)w->nifaces + 1);
+		memcpy(r->latest_vel, rec->vel,
 		       sizeof(double) * 3 * (size_t)w->nblocks);
-		r->latest_index = r->item.index;
+		r->latest_index = rec->index;
 	}
 	r->done++;
+}
+
+/* A write error stopped the run: say so, and sample no more. */
+static void tui_run_failed(struct tui *t)
+{
+	struct tui_run *r = &t->run;
+	tui_message(t, 1, "samples file: %s: sampling stopped (r starts a "
+		    "new run)", r->core.werr);
+	r->paused = 1;
 }
 
 /* Stop the pool and take every sample it finished in order (those in
@@ -75,54 +73,31 @@ static void tui_run_drain(struct tui *t)
 	if (!r->mc)
 		return;
 	mc_stop(r->mc);
-	while (mc_pop(r->mc, &r->item, -1) == 1)
-		tui_run_take(t);
+	run_drain(&r->core);
 	tui_run_free_pool(t);
+	if (r->core.stop == RUN_WRITE)
+		tui_run_failed(t);
 }
 
 /* Start a pool for the next samples, if any are wanted. */
 static void tui_run_spawn(struct tui *t)
 {
 	struct tui_run *r = &t->run;
-	const struct wall *w = t->w;
 	char err[SW_ERRLEN];
 
-	if (r->mc || r->paused || r->done >= r->target || tui_signal_pending())
+	if (r->mc || r->paused || r->done >= r->target ||
+	    r->core.stop == RUN_WRITE || tui_signal_pending())
 		return;
-	mc_config_default(&r->cfg, w);
 	r->cfg.threads = t->threads;
-	r->base = r->done;
-	if (r->done == 0) {
-		r->cfg.n = r->target;
-	} else {
-		long row = 2L * w->nifaces;
-		long n = r->target - r->done;
-		long cap = TUI_RUN_TABLE_MAX / (row > 0 ? row : 1);
-		if (cap > TUI_RUN_CHUNK)
-			cap = TUI_RUN_CHUNK;
-		if (n > cap)
-			n = cap > 0 ? cap : 1;
-		r->table = malloc(sizeof(double) * (size_t)(n * row + 1));
-		if (!r->table) {
-			tui_message(t, 1, "out of memory for the replay table");
-			r->paused = 1;
-			return;
-		}
-		for (long i = 0; i < n; i++)
-			mc_positions(w, r->cfg.seed,
-				     (unsigned long)(r->done + i), -1,
-				     r->table + i * row);
-		r->cfg.n = n;
-		r->cfg.positions = r->table;
-	}
+	r->cfg.first = r->done;		/* resume where the file ends */
+	r->cfg.n = r->target;
 	r->mc = mc_start(&r->cfg, err);
 	if (!r->mc) {
-		free(r->table);
-		r->table = NULL;
 		tui_message(t, 1, "cannot start the sampler: %s", err);
 		r->paused = 1;
 		return;
 	}
+	run_source_pool(&r->src, r->mc);
 	r->t_start = sys_now();
 	tui_signal_watch(r->mc);
 }
@@ -139,7 +114,7 @@ void tui_run_start(struct tui *t)
 	r->latest_joint = calloc((size_t)w->nifaces + 1, 1);
 	r->latest_vel = calloc(3 * (size_t)w->nblocks + 1, sizeof(double));
 	tally_init(&r->tally, w);
-	mc_item_init(&r->item, w);
+	mc_config_default(&r->cfg, w);
 	t->runno++;
 	snprintf(r->what, sizeof r->what, "%s", t->next_what[0] ? t->next_what : "reset");
 	t->next_what[0] = 0;
@@ -155,6 +130,9 @@ void tui_run_start(struct tui *t)
 	} else {
 		r->csv[0] = 0;
 	}
+	run_init(&r->core, w, &r->src, &r->tally, r->log);
+	r->core.each = tui_run_each;
+	r->core.each_ctx = t;
 	tui_run_spawn(t);
 }
 
@@ -170,8 +148,8 @@ void tui_run_end(struct tui *t)
 		tui_message(t, 1, "samples file: %s", err);
 	r->log = NULL;
 	tui_history_record(t);
+	run_free(&r->core);
 	tally_free(&r->tally);
-	mc_item_free(&r->item);
 	free(r->latest_joint);
 	free(r->latest_vel);
 	r->latest_joint = NULL;
@@ -185,16 +163,20 @@ int tui_run_pump(struct tui *t, double budget)
 	int n = 0;
 
 	while (r->mc) {
-		int got = mc_pop(r->mc, &r->item, 0);
+		int got = run_pump(&r->core, 0);
 		if (got == 0)
 			break;
+		if (r->core.stop == RUN_WRITE) {
+			tui_run_drain(t);	/* says so */
+			break;
+		}
 		if (got < 0) {
-			/* the pool is through its indices: next chunk */
+			/* the pool is through its indices (a target raised
+			 * meanwhile: a new one) */
 			tui_run_free_pool(t);
 			tui_run_spawn(t);
 			continue;
 		}
-		tui_run_take(t);
 		n++;
 		if (r->done >= r->target) {
 			tui_run_drain(t);
@@ -265,6 +247,8 @@ const char *tui_run_state(const struct tui *t)
 	const struct tui_run *r = &t->run;
 	if (r->mc)
 		return "running";
+	if (r->core.stop == RUN_WRITE)
+		return "write error";
 	if (r->done >= r->target)
 		return "done";
 	return r->paused ? "paused" : "stopped";

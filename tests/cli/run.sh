@@ -276,4 +276,24 @@ else
 	not_ok "demo wall shows the spread SPEC section 5 asks for" "$res"
 fi
 
+# --depth of a wall whose contact points are drawn anywhere: no depth to
+# set, whichever command is asked (one check, cli_check_depth)
+sed 's/^  depth: 0.25$/  positions: anywhere/' walls/single-block.yaml >"$tmp/anywhere.yaml"
+for args in "run -n 2 --depth 0.1" "compare --tests walls/demo-loads.txt -n 2 --depth 0.1" \
+	    "report --out $tmp/rep-anywhere -n 2 --depth 0.1" "sweep --depth 0.1:0.2:0.1 -n 2"; do
+	set -- $args
+	cmd=$1
+	shift
+	"$bin" "$cmd" "$tmp/anywhere.yaml" "$@" >"$tmp/out" 2>"$tmp/err" </dev/null
+	rc=$?
+	if [ $rc -eq 2 ] && grep -qF "draws its contact points anywhere (contacts.positions): there is no depth" "$tmp/err" &&
+	   [ ! -e "$tmp/rep-anywhere" ]; then
+		ok "$cmd --depth of a wall with contacts anywhere: refused (exit 2)"
+	else
+		not_ok "$cmd --depth of a wall with contacts anywhere: refused (exit 2)" "exit $rc" "$(head -c 300 "$tmp/err")"
+	fi
+done
+"$bin" run "$tmp/anywhere.yaml" -n 2 >"$tmp/out" 2>"$tmp/err" </dev/null
+check "... the same wall without --depth runs (exit 0)" [ $? -eq 0 ]
+
 tap_end

@@ -49,8 +49,8 @@ static void run(const struct wall *w, int threads, const double *replay,
 		tap_ok(0, "mc_start: %s", err);
 		return;
 	}
-	struct mc_item it;
-	mc_item_init(&it, w);
+	struct record it;
+	record_init(&it, w);
 	int got;
 	/* short waits on purpose: a timeout must not lose a sample */
 	while ((got = mc_pop(m, &it, 1)) >= 0) {
@@ -73,7 +73,7 @@ static void run(const struct wall *w, int threads, const double *replay,
 	       "-1 at the end", threads);
 	mc_wait(m);
 	mc_counters(m, &r->c);
-	mc_item_free(&it);
+	record_free(&it);
 	mc_free(m);
 }
 
@@ -154,8 +154,8 @@ static void test_stop(const struct wall *w)
 	cfg.n = 1000000;
 	cfg.threads = 2;
 	struct mc *m = mc_start(&cfg, err);
-	struct mc_item it;
-	mc_item_init(&it, w);
+	struct record it;
+	record_init(&it, w);
 	long n = 0;
 	int ok = 1, got;
 	while (n < 5 && (got = mc_pop(m, &it, -1)) > 0)
@@ -170,7 +170,7 @@ static void test_stop(const struct wall *w)
 	struct mc_counters c;
 	mc_counters(m, &c);
 	tap_ok(c.solves > 0, "counters after a stop: %ld LP solves", c.solves);
-	mc_item_free(&it);
+	record_free(&it);
 	mc_free(m);
 
 	/* freeing a pool nobody popped from must not hang */
@@ -207,8 +207,8 @@ static void test_share(const struct wall *w)
 			free_run(&all);
 			return;
 		}
-		struct mc_item it;
-		mc_item_init(&it, w);
+		struct record it;
+		record_init(&it, w);
 		long k = 0;
 		int got;
 		while ((got = mc_pop(m, &it, 1)) >= 0) {
@@ -226,7 +226,7 @@ static void test_share(const struct wall *w)
 			seen++;
 		}
 		ok &= k == (N - 1 - first + 2) / 3;
-		mc_item_free(&it);
+		record_free(&it);
 		mc_free(m);
 	}
 	tap_ok(ok && seen == N - 1, "3 shares of stride 3 over %d samples: "
@@ -239,11 +239,11 @@ static void test_share(const struct wall *w)
 	cfg.first = 5;
 	cfg.stride = 3;
 	struct mc *m = mc_start(&cfg, err);
-	struct mc_item it;
-	mc_item_init(&it, w);
+	struct record it;
+	record_init(&it, w);
 	tap_ok(m && mc_pop(m, &it, -1) == -1, "a share with no index below n "
 	       "(first 5 of 2 samples) ends at once");
-	mc_item_free(&it);
+	record_free(&it);
 	mc_free(m);
 	cfg.first = -1;
 	m = mc_start(&cfg, err);

@@ -307,8 +307,8 @@ static struct wall *load_demo(void)
 static void fake_tally(struct tally *t, const struct wall *w, const double *lam,
 		       long n)
 {
-	struct mc_item it;
-	mc_item_init(&it, w);
+	struct record it;
+	record_init(&it, w);
 	tally_init(t, w);
 	int freeb[3], nf = 0;
 	for (int b = 0; b < w->nblocks && nf < 3; b++)
@@ -328,7 +328,7 @@ static void fake_tally(struct tally *t, const struct wall *w, const double *lam,
 		it.lambda_min = i < n ? lam[i] : NAN;
 		tally_add(t, &it);
 	}
-	mc_item_free(&it);
+	record_free(&it);
 }
 
 static void rm_dir(const char *dir)

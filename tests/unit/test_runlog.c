@@ -56,8 +56,8 @@ static void test_format(void)
 	if (!l)
 		return;
 	tap_ok(!strcmp(runlog_path(l), p), "runlog_path");
-	struct mc_item it;
-	mc_item_init(&it, &fake);
+	struct record it;
+	record_init(&it, &fake);
 	it.index = 0;
 	it.status = SAMPLE_ACCEPTED;
 	it.lambda_max = 1.5;
@@ -91,7 +91,7 @@ static void test_format(void)
 	       "says (17 digits; empty when not computed or rejected)");
 	if (got && strcmp(got, want))
 		printf("# got:\n%s", got);
-	mc_item_free(&it);
+	record_free(&it);
 }
 
 static void test_round_trip(void)
@@ -100,8 +100,8 @@ static void test_round_trip(void)
 	const char *p = path_of("rt.csv");
 	struct runlog *l = NULL;
 	runlog_create(&l, p, &fake, NULL, err);
-	struct mc_item it;
-	mc_item_init(&it, &fake);
+	struct record it;
+	record_init(&it, &fake);
 	/* values whose shortest decimal needs all 17 digits, the smallest
 	 * subnormal, the double just below 1, thirds and tenths */
 	double awkward[] = {
@@ -147,7 +147,7 @@ static void test_round_trip(void)
 			ok = lam[k++] == 100.0 / (double)(i + 7);
 	tap_ok(ok, "accepted loads read back exactly, rejected skipped (40)");
 	free(lam);
-	mc_item_free(&it);
+	record_free(&it);
 }
 
 /* A bad file must be refused with this "LINE:COL: substring". */

@@ -15,7 +15,7 @@
 
 static struct wall fake;	/* tally_init reads nifaces and nblocks only */
 
-static void item(struct mc_item *it, long i, enum sample_status st,
+static void item(struct record *it, long i, enum sample_status st,
 		 double lam, const char *joint, double v0)
 {
 	it->index = i;
@@ -35,9 +35,9 @@ static void item(struct mc_item *it, long i, enum sample_status st,
 static void test_counts(void)
 {
 	struct tally t;
-	struct mc_item it;
+	struct record it;
 	tally_init(&t, &fake);
-	mc_item_init(&it, &fake);
+	record_init(&it, &fake);
 	/* 6 accepted with three mechanisms (3 x A, 2 x B, 1 x C), 4 rejected */
 	item(&it, 0, SAMPLE_ACCEPTED, 5.0, "s.h..", 100);
 	tally_add(&t, &it);
@@ -109,7 +109,7 @@ static void test_counts(void)
 	tap_near(s.mean, 22.0 / 6, 1e-12, "summary mean = 22/6");
 	tap_ok(!s.has_ci, "no 99 %% interval with 6 values");
 
-	mc_item_free(&it);
+	record_free(&it);
 	tally_free(&t);
 }
 
@@ -117,9 +117,9 @@ static void test_counts(void)
 static void test_top_ties(void)
 {
 	struct tally t;
-	struct mc_item it;
+	struct record it;
 	tally_init(&t, &fake);
-	mc_item_init(&it, &fake);
+	record_init(&it, &fake);
 	const char *seq[] = {"o....", ".o...", "..o..", ".o...", "o....",
 			     "...o.", "..o..", "...o.", "...o."};
 	for (int i = 0; i < 9; i++) {
@@ -131,7 +131,7 @@ static void test_top_ties(void)
 	int n = tally_top(&t, idx, 4);
 	tap_ok(n == 4 && idx[0] == 3 && idx[1] == 0 && idx[2] == 1 &&
 	       idx[3] == 2, "ties broken by first appearance (3, 0, 1, 2)");
-	mc_item_free(&it);
+	record_free(&it);
 	tally_free(&t);
 }
 
@@ -139,9 +139,9 @@ static void test_top_ties(void)
 static void test_many(void)
 {
 	struct tally t;
-	struct mc_item it;
+	struct record it;
 	tally_init(&t, &fake);
-	mc_item_init(&it, &fake);
+	record_init(&it, &fake);
 	static const char states[] = ".shHo";	/* 5^5 = 3125 strings */
 	char j[M + 1] = {0};
 	int nd = 3125;
@@ -178,7 +178,7 @@ static void test_many(void)
 	tap_ok(ok && idx[0] == 0 && idx[1] == 3,
 	       "tally_top sorted by count, then first appearance");
 	free(idx);
-	mc_item_free(&it);
+	record_free(&it);
 	tally_free(&t);
 }
 

@@ -1,0 +1,98 @@
+/*
+ * record.c - one sample's record; see record.h.  The pool (mc.c) makes
+ * records with record_set and moves them with record_copy; the MPI run
+ * (src/cli/cluster.c) packs them for the wire.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "slipwall/record.h"
+
+/* the fixed part has no padding: every byte sent is a field's */
+_Static_assert(RECORD_FIXED == sizeof(long) + 4 * sizeof(int) +
+	       5 * sizeof(double), "struct record: padding in the fixed part");
+
+static size_t nxi(const struct wall *w)
+{
+	return 2 * (size_t)w->nifaces;
+}
+
+static size_t nvel(const struct wall *w)
+{
+	return 3 * (size_t)w->nblocks;
+}
+
+void record_init(struct record *r, const struct wall *w)
+{
+	memset(r, 0, sizeof *r);
+	r->xi = sw_xcalloc(nxi(w) + 1, sizeof(double));
+	r->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
+	r->vel = sw_xcalloc(nvel(w) + 1, sizeof(double));
+}
+
+void record_free(struct record *r)
+{
+	free(r->xi);
+	free(r->joint);
+	free(r->vel);
+	memset(r, 0, sizeof *r);
+}
+
+void record_copy(struct record *dst, const struct record *src,
+		 const struct wall *w)
+{
+	memcpy(dst, src, RECORD_FIXED);
+	memcpy(dst->xi, src->xi, sizeof(double) * nxi(w));
+	memcpy(dst->vel, src->vel, sizeof(double) * nvel(w));
+	memcpy(dst->joint, src->joint, (size_t)w->nifaces + 1);
+}
+
+void record_set(struct record *r, long index, const struct sample_result *res,
+		double seconds, const struct wall *w)
+{
+	r->index = index;
+	r->status = res->status;
+	r->iterations = res->iterations;
+	r->lps = res->lps;
+	r->lambda_lpmax = res->lambda_lpmax;
+	r->lambda_max = res->lambda_max;
+	r->lambda_min = res->lambda_min;
+	r->vw_residual = res->vw_residual;
+	r->seconds = seconds;
+	if (res->status == SAMPLE_ACCEPTED) {
+		memcpy(r->joint, res->joint, (size_t)w->nifaces + 1);
+		memcpy(r->vel, res->vel, sizeof(double) * nvel(w));
+	} else {
+		memset(r->joint, 0, (size_t)w->nifaces + 1);
+		memset(r->vel, 0, sizeof(double) * nvel(w));
+	}
+}
+
+size_t record_wire_size(const struct wall *w)
+{
+	return RECORD_FIXED + sizeof(double) * (nxi(w) + nvel(w)) +
+	       (size_t)w->nifaces + 1;
+}
+
+void record_pack(const struct record *r, const struct wall *w,
+		 unsigned char *b)
+{
+	size_t sx = sizeof(double) * nxi(w), sv = sizeof(double) * nvel(w);
+	memcpy(b, r, RECORD_FIXED);
+	b += RECORD_FIXED;
+	memcpy(b, r->xi, sx);
+	memcpy(b + sx, r->vel, sv);
+	memcpy(b + sx + sv, r->joint, (size_t)w->nifaces + 1);
+}
+
+void record_unpack(struct record *r, const struct wall *w,
+		   const unsigned char *b)
+{
+	size_t sx = sizeof(double) * nxi(w), sv = sizeof(double) * nvel(w);
+	memcpy(r, b, RECORD_FIXED);
+	b += RECORD_FIXED;
+	memcpy(r->xi, b, sx);
+	memcpy(r->vel, b + sx, sv);
+	memcpy(r->joint, b + sx + sv, (size_t)w->nifaces + 1);
+	r->joint[w->nifaces] = 0;
+}

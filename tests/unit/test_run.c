@@ -1,0 +1,335 @@
+/*
+ * test_run.c - the library's run (run.c) and the sample record
+ * (record.c): samples from a scripted source are written and counted in
+ * order; a write error stops the run before the sample it could not
+ * write is counted and drops every later one; --until-ci stops at the
+ * first sample count whose interval is narrow enough, found here by
+ * brute force; a signal stops the watched source and the samples
+ * finished after it are still counted; a pool resumed at sample k
+ * (mc first) gives the samples k.. of the whole run; a record survives
+ * the wire (pack, unpack) field for field.
+ */
+#include <math.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "slipwall/run.h"
+#include "slipwall/stats.h"
+#include "slipwall/wallfile.h"
+#include "tap.h"
+
+#define M 2		/* interfaces of the fake wall */
+#define B 1		/* blocks */
+
+static struct wall fake;	/* record, tally and runlog read the sizes */
+
+/* A scripted source: n samples, index i with load lam(i); every
+ * `rejected`-th is rejected.  stop() counts and keeps the signal. */
+struct script {
+	long n, next, rejected;
+	int stops, sig;
+	int stopped;
+};
+
+static double lam_of(long i)
+{
+	/* a spread of loads that is not sorted by index */
+	return 100 + (double)((i * 37) % 101);
+}
+
+static int script_pop(void *ctx, struct record *r, int wait_ms)
+{
+	struct script *s = ctx;
+	(void)wait_ms;
+	if (s->next >= s->n)
+		return -1;
+	long i = s->next++;
+	r->index = i;
+	r->status = s->rejected && i % s->rejected == 0 ?
+		    SAMPLE_NO_MECHANISM : SAMPLE_ACCEPTED;
+	r->lambda_max = r->lambda_min = lam_of(i);
+	r->iterations = 2;
+	r->lps = 5;
+	for (int k = 0; k < 2 * M; k++)
+		r->xi[k] = 0.1 * (double)k;
+	memset(r->joint, JOINT_CLOSED, M);
+	r->joint[0] = JOINT_SLIDES;
+	return 1;
+}
+
+static void script_stop(void *ctx, int sig)
+{
+	struct script *s = ctx;
+	s->stops++;
+	if (sig)
+		s->sig = sig;
+}
+
+static void source_of(struct run_source *src, struct script *s)
+{
+	src->ctx = s;
+	src->pop = script_pop;
+	src->stop = script_stop;
+	src->status = NULL;
+}
+
+static long lines_of(const char *path)
+{
+	FILE *f = fopen(path, "r");
+	long n = 0;
+	int c;
+	if (!f)
+		return -1;
+	while ((c = fgetc(f)) != EOF)
+		n += c == '\n';
+	fclose(f);
+	return n;
+}
+
+static void test_in_order(void)
+{
+	char err[SW_ERRLEN], path[] = "/tmp/test_run.XXXXXX";
+	int fd = mkstemp(path);
+	close(fd);
+	struct script s = {.n = 30, .rejected = 4};
+	struct run_source src;
+	struct runlog *log;
+	struct tally t;
+	struct run r;
+	source_of(&src, &s);
+	runlog_create(&log, path, &fake, NULL, err);
+	tally_init(&t, &fake);
+	run_init(&r, &fake, &src, &t, log);
+	while (run_pump(&r, -1) >= 0)
+		;
+	run_finish(&r);
+	tap_ok(runlog_close(log, err) == SW_OK, "the samples file closes");
+	tap_ok(r.stop == RUN_COMPLETE, "a source that ends: complete (%s)",
+	       run_stop_name(r.stop));
+	tap_ok(t.samples == 30 && t.accepted == 22,
+	       "30 samples counted, 22 accepted (every 4th rejected): %ld, %ld",
+	       t.samples, t.accepted);
+	tap_ok(lines_of(path) == 31, "the file: a header and 30 rows (%ld)",
+	       lines_of(path));
+	tap_ok(s.stops == 0, "nobody stopped the source");
+	run_free(&r);
+	tally_free(&t);
+	unlink(path);
+}
+
+static void test_write_error(void)
+{
+	char err[SW_ERRLEN];
+	struct script s = {.n = 10};
+	struct run_source src;
+	struct runlog *log = NULL;
+	struct tally t;
+	struct run r;
+	char path[] = "/tmp/test_run.XXXXXX";
+	int fd = mkstemp(path);
+	close(fd);
+	source_of(&src, &s);
+	runlog_create(&log, path, &fake, NULL, err);
+	/* a full disk: the file may not grow beyond its header (the
+	 * write fails with EFBIG, SIGXFSZ ignored) */
+	struct rlimit old, full;
+	struct stat st;
+	stat(path, &st);
+	getrlimit(RLIMIT_FSIZE, &old);
+	full = old;
+	full.rlim_cur = (rlim_t)st.st_size;
+	signal(SIGXFSZ, SIG_IGN);
+	setrlimit(RLIMIT_FSIZE, &full);
+	tally_init(&t, &fake);
+	run_init(&r, &fake, &src, &t, log);
+	while (run_pump(&r, -1) >= 0)
+		;
+	run_finish(&r);
+	setrlimit(RLIMIT_FSIZE, &old);
+	runlog_close(log, err);
+	tap_ok(r.stop == RUN_WRITE, "a row that cannot be written stops the "
+	       "run (%s)", run_stop_name(r.stop));
+	tap_ok(t.samples == 0, "no sample counted without its row (%ld)",
+	       t.samples);
+	tap_ok(s.stops == 1 && s.sig == 0, "the source told to stop once, not "
+	       "by a signal (%d)", s.stops);
+	tap_ok(strstr(r.werr, path) != NULL, "the error names the file: %s",
+	       r.werr);
+	tap_ok(lines_of(path) == 1, "the file holds its header only (%ld "
+	       "lines)", lines_of(path));
+	run_free(&r);
+	tally_free(&t);
+	unlink(path);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* The first count of accepted samples at which the 99 % interval of
+ * p05 is narrower than w times p05, by brute force (or -1). */
+static long until_ci_count(long n, double w)
+{
+	double *x = malloc(sizeof(double) * (size_t)n);
+	long found = -1;
+	for (long k = 1; k <= n && found < 0; k++) {
+		x[k - 1] = lam_of(k - 1);
+		double *y = malloc(sizeof(double) * (size_t)k);
+		memcpy(y, x, sizeof(double) * (size_t)k);
+		qsort(y, (size_t)k, sizeof(double), cmp_double);
+		size_t lo, hi;
+		double p05 = stats_quantile_sorted(y, (size_t)k, 0.05);
+		if (stats_quantile_ci_ranks((size_t)k, 0.05, 0.99, &lo, &hi) ==
+		    0 && y[hi - 1] - y[lo - 1] < w * p05)
+			found = k;
+		free(y);
+	}
+	free(x);
+	return found;
+}
+
+static void test_until_ci(void)
+{
+	struct script s = {.n = 600};
+	struct run_source src;
+	struct tally t;
+	struct run r;
+	source_of(&src, &s);
+	tally_init(&t, &fake);
+	run_init(&r, &fake, &src, &t, NULL);
+	r.until_ci = 0.1;
+	while (run_pump(&r, -1) >= 0)
+		;
+	run_finish(&r);
+	long want = until_ci_count(600, 0.1);
+	tap_ok(want > 90 && want < 600, "the brute force finds a stop beyond "
+	       "the first interval (%ld)",
+	       want);
+	tap_ok(r.stop == RUN_UNTIL_CI, "--until-ci stops the run (%s)",
+	       run_stop_name(r.stop));
+	tap_ok(t.samples == want, "at the first narrow enough count: %ld, "
+	       "want %ld", t.samples, want);
+	tap_ok(s.next == 600, "the samples handed out after it are dropped "
+	       "(%ld popped)", s.next);
+	run_free(&r);
+	tally_free(&t);
+}
+
+static void test_signal(void)
+{
+	struct script s = {.n = 8};
+	struct run_source src;
+	struct run_signals caught;
+	struct tally t;
+	struct run r;
+	source_of(&src, &s);
+	tally_init(&t, &fake);
+	run_init(&r, &fake, &src, &t, NULL);
+	run_signals_catch(&caught, 1);
+	run_signals_watch(&src);
+	run_pump(&r, -1);
+	raise(SIGINT);
+	tap_ok(s.sig == SIGINT && run_signal() == SIGINT,
+	       "a signal stops the watched source (sig %d)", s.sig);
+	while (run_pump(&r, -1) >= 0)
+		;
+	run_finish(&r);
+	run_signals_restore(&caught);
+	tap_ok(r.stop == RUN_SIGNAL && strstr(r.why, "nterrupt"),
+	       "the run says: %s (%s)", run_stop_name(r.stop), r.why);
+	tap_ok(t.samples == 8, "the samples finished after it are still "
+	       "counted (%ld)", t.samples);
+	run_free(&r);
+	tally_free(&t);
+}
+
+static void test_resume(void)
+{
+	char err[SW_ERRLEN];
+	struct wall *w;
+	if (wallfile_load(SRCDIR "/walls/single-block.yaml", &w, err) != SW_OK) {
+		tap_ok(0, "load: %s", err);
+		return;
+	}
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = 9;
+	cfg.first = 5;
+	cfg.threads = 2;
+	struct mc *m = mc_start(&cfg, err);
+	struct record rec;
+	record_init(&rec, w);
+	double *xi = calloc(2 * (size_t)w->nifaces + 1, sizeof(double));
+	long want = 5, bad = 0;
+	while (m && mc_pop(m, &rec, -1) > 0) {
+		mc_positions(w, cfg.seed, (unsigned long)want, -1, xi);
+		bad += rec.index != want ||
+		       memcmp(xi, rec.xi, sizeof(double) * 2 *
+			      (size_t)w->nifaces) != 0;
+		want++;
+	}
+	tap_ok(m && want == 9 && bad == 0, "a pool resumed at 5 gives "
+	       "samples 5..8 of the run, at their positions (%ld, %ld bad)",
+	       want, bad);
+	mc_free(m);
+	free(xi);
+	record_free(&rec);
+	wall_free(w);
+}
+
+static void test_wire(void)
+{
+	struct record a, b;
+	record_init(&a, &fake);
+	record_init(&b, &fake);
+	a.index = 123456789012L;
+	a.status = SAMPLE_UNSTABLE;
+	a.iterations = 7;
+	a.lps = 11;
+	a.lambda_lpmax = 3.5;
+	a.lambda_max = -0.0;
+	a.lambda_min = 1e-300;
+	a.vw_residual = 2e-9;
+	a.seconds = 0.25;
+	for (int k = 0; k < 2 * M; k++)
+		a.xi[k] = 1.0 / (k + 3);
+	for (int k = 0; k < 3 * B; k++)
+		a.vel[k] = -k - 0.5;
+	memcpy(a.joint, "sh", M + 1);
+	size_t n = record_wire_size(&fake);
+	unsigned char *buf = malloc(n);
+	record_pack(&a, &fake, buf);
+	record_unpack(&b, &fake, buf);
+	tap_ok(n == RECORD_FIXED + sizeof(double) * (2 * M + 3 * B) + M + 1,
+	       "the wire size: the fixed part and the arrays (%zu)", n);
+	tap_ok(b.index == a.index && b.status == a.status &&
+	       b.iterations == 7 && b.lps == 11 && b.lambda_lpmax == 3.5 &&
+	       b.lambda_min == 1e-300 && b.vw_residual == 2e-9 &&
+	       b.seconds == 0.25 && signbit(b.lambda_max),
+	       "the fixed part survives the wire");
+	tap_ok(!memcmp(a.xi, b.xi, sizeof(double) * 2 * M) &&
+	       !memcmp(a.vel, b.vel, sizeof(double) * 3 * B) &&
+	       !strcmp(b.joint, "sh"), "xi, vel and joint survive the wire");
+	free(buf);
+	record_free(&a);
+	record_free(&b);
+}
+
+int main(void)
+{
+	fake.nifaces = M;
+	fake.nblocks = B;
+	test_in_order();
+	test_write_error();
+	test_until_ci();
+	test_signal();
+	test_resume();
+	test_wire();
+	return tap_done();
+}
