@@ -159,12 +159,6 @@ static int better(const struct model *a, const struct model *b)
 	return a->depth < b->depth;
 }
 
-static int cmp_load(const void *x, const void *y)
-{
-	double a = *(const double *)x, b = *(const double *)y;
-	return (a > b) - (a < b);
-}
-
 static int cmp_depth(const void *x, const void *y)
 {
 	const struct model *a = x, *b = y;
@@ -563,9 +557,7 @@ static void print_text(const struct compare_args *a, const struct wall *w,
 		print_profile(d);
 	print_table(md, &d->ts, d->ntests);
 	if (w->design_load > 0 && md->accepted > 0) {
-		double *sl = sw_xmalloc(sizeof(double) * (size_t)md->accepted);
-		memcpy(sl, md->lam, sizeof(double) * (size_t)md->accepted);
-		qsort(sl, (size_t)md->accepted, sizeof(double), cmp_load);
+		double *sl = stats_sorted_copy(md->lam, (size_t)md->accepted);
 		struct collapse cp;
 		collapse_at(sl, (size_t)md->accepted, w->design_load,
 			    "design_load", &cp);

@@ -40,6 +40,7 @@
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/solve.h"
+#include "slipwall/stats.h"
 #include "slipwall/sys.h"
 #include "slipwall/tally.h"
 
@@ -218,12 +219,6 @@ static void single_solutions(const struct wall *w, double tlim,
 	}
 }
 
-static int cmp_load(const void *x, const void *y)
-{
-	double a = *(const double *)x, b = *(const double *)y;
-	return (a > b) - (a < b);
-}
-
 /* The command that reproduces the report, malloc'd: the paths are the
  * user's, of any length. */
 static char *command_line(const struct report_args *a,
@@ -389,9 +384,7 @@ static void add_notes(const struct report_args *a, const struct wall *w,
 	char *note = d->note;
 	size_t len = sizeof d->note;
 	if (w->design_load > 0) {
-		double *sl = sw_xmalloc(sizeof(double) * (size_t)d->nlam);
-		memcpy(sl, d->lam, sizeof(double) * (size_t)d->nlam);
-		qsort(sl, (size_t)d->nlam, sizeof(double), cmp_load);
+		double *sl = stats_sorted_copy(d->lam, (size_t)d->nlam);
 		struct collapse cp;
 		collapse_at(sl, (size_t)d->nlam, w->design_load, "design_load",
 			    &cp);
