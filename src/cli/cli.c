@@ -34,6 +34,17 @@ int cli_tests(const char *file, const struct wall *w, double **tests,
 	return 0;
 }
 
+void cli_memory_note(const char *cmd)
+{
+	long oom = mc_memory_errors();
+	if (oom > 0)	/* each made a sample "numerical" (src/lib/lp.c) */
+		cli_errorf("slipwall %s: the LP solver ran out of memory %ld "
+			   "time%s (GLPK's limit: %d MB per thread): the "
+			   "samples it was solving were rejected as "
+			   "numerical; free memory or use fewer --threads",
+			   cmd, oom, oom == 1 ? "" : "s", mc_worker_memory());
+}
+
 int cli_check_depth(const char *cmd, const struct wall *w, const char *path,
 		    double depth)
 {

@@ -24,6 +24,9 @@ int cmd_sweep(int argc, char **argv);
 /* Load and finish a wall file; on failure print the message to stderr
  * and return the exit status (2), else 0. */
 int cli_load_wall(const char *path, struct wall **w);
+/* After sampling: if the LP solver ran out of memory (each time a
+ * sample was rejected as numerical), say so and what to do. */
+void cli_memory_note(const char *cmd);
 /* --depth D (D >= 0: given) of a wall whose contact points are drawn
  * anywhere (contacts.positions): a usage error, returns 2; else 0. */
 int cli_check_depth(const char *cmd, const struct wall *w, const char *path,

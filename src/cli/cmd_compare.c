@@ -581,6 +581,7 @@ static int compare(const struct compare_args *a, const struct wall *w,
 		print_json(a, w, d);
 	else
 		print_text(a, w, d);
+	cli_memory_note(CMD);
 	if (intr) {
 		cli_errorf("slipwall compare: interrupted (%s): the %s",
 			   strsignal(run_signal()), a->fit_depth ?

@@ -486,6 +486,7 @@ static int report_main(int argc, char **argv)
 	if (!status && !(status = cli_tests(a.tests, w, &d.tests, &d.ntests)))
 		status = a.samples ? model_of_file(&a, w, &d) :
 			 model_of_run(&a, w, &d);
+	cli_memory_note(CMD);
 	if (!status && d.nlam == 0) {
 		cli_errorf("slipwall report: no accepted sample (%ld "
 			"computed): nothing to plot", d.t.samples);

@@ -600,13 +600,7 @@ static int report_end(const struct run *run, enum sw_status cst,
 		cli_errorf("slipwall run: %s", run->source_err);
 		status = 1;
 	}
-	long oom = mc_memory_errors();
-	if (oom > 0)	/* each made a sample "numerical" (src/lib/lp.c) */
-		cli_errorf("slipwall run: the LP solver ran out of memory %ld "
-			"time%s (GLPK's limit: %d MB per thread): the "
-			"samples it was solving were rejected as numerical; free "
-			"memory or use fewer --threads", oom, oom == 1 ? "" : "s",
-			mc_worker_memory());
+	cli_memory_note(CMD);
 	if (t->accepted == 0 && t->samples > 0) {
 		cli_errorf("slipwall run: no sample was accepted: the "
 			"analysis failed (see the rejections above)");

@@ -11,7 +11,8 @@
 # with a message that says the LP solver ran out of memory and what to
 # do, the summary (text and JSON, every sample counted `numerical`) and
 # a complete samples file; a generous limit changes nothing (the same
-# JSON samples and accepted counts, no message).  Before the change the
+# JSON samples and accepted counts, no message); compare and report say
+# so too.  Before the change the
 # builders' GLPK error called abort(): exit 134, no summary.
 # TAP output.  Needs python3.
 
@@ -85,6 +86,21 @@ starved() {
 starved walls/ferris-tinloi-2.yaml 1 3 2
 starved walls/ferris-tinloi-2.yaml 2 3 1
 starved walls/large.yaml 1 2 1
+
+# compare and report sample through the same pool: they say so too
+for c in compare report; do
+	extra="--tests walls/demo-loads.txt"
+	[ $c = report ] && extra="--out $tmp/oom-report"
+	SLIPWALL_GLPK_MEM_MB=1 timeout 600 "$bin" $c walls/ferris-tinloi-2.yaml \
+		-n 3 --threads 1 $extra >/dev/null 2>"$tmp/$c-oom.err"
+	rc=$?
+	if { [ $rc -eq 0 ] || [ $rc -eq 1 ]; } &&
+	   grep -q "^slipwall $c: the LP solver ran out of memory .*limit: 1 MB per thread" "$tmp/$c-oom.err"; then
+		ok "$c with a 1 MB limit: exit $rc, and it says the LP solver ran out of memory"
+	else
+		not_ok "$c with a 1 MB limit: says the LP solver ran out of memory" "exit $rc" "$(tail -c 400 "$tmp/$c-oom.err")"
+	fi
+done
 
 # a generous limit: the same run as without one
 "$bin" run walls/ferris-tinloi-1.yaml -n 6 --threads 2 --json \
