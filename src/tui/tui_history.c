@@ -65,6 +65,10 @@ void tui_history_record(struct tui *t)
 	char err[SW_ERRLEN];
 	struct history_row h;
 
+	/* a run that ended before its first sample (the next edit came
+	 * first: a held key) found nothing: no row */
+	if (r->tally.samples == 0)
+		return;
 	tui_history_row(t, &h);
 	struct history_row *v = realloc(t->hist, sizeof *v * (size_t)(t->nhist + 1));
 	if (v) {

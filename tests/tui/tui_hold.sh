@@ -102,4 +102,16 @@ else
 	not_ok "q ends the process within 2 s" "$(screen w | tail -n 3)"
 	kill "$pid" 2>/dev/null
 fi
+# the 40 edits' runs ended before their first sample (one takes minutes
+# on this wall): they found nothing and leave no row of 0 samples (no
+# row at all: no history file; tests/tui/tui_history.sh checks rows)
+hist=$SLIPWALL_RUNS/history.tsv
+[ -e "$hist" ] || printf 'samples\n' >"$hist"
+zero=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "samples") c = i; next }
+		  c && $c == 0 { z++ } END { print z + 0 }' "$hist" 2>/dev/null)
+if [ "${zero:-x}" = 0 ]; then
+	ok "no history row for a run that found nothing ($(($(wc -l <"$hist" 2>/dev/null || echo 1) - 1)) rows)"
+else
+	not_ok "no history row for a run that found nothing" "rows with 0 samples: ${zero:-?}" "$(head -c 300 "$hist" 2>/dev/null)"
+fi
 tap_end
