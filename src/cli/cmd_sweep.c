@@ -505,7 +505,11 @@ int cmd_sweep(int argc, char **argv)
 	unsigned long seed = a.seed_set ? a.seed : base->seed;
 	long n = a.n_set ? a.n : base->samples;
 	struct point *pt = sw_xmalloc(sizeof *pt * (size_t)a.nval);
-	int failed = 0;
+	int failed = 0, done = 0;
+	/* SIGINT, SIGTERM, SIGHUP (run.h's one policy): the value being
+	 * run is dropped, the values done are written, exit 1 */
+	struct run_signals caught;
+	run_signals_catch(&caught, 1);
 	for (int k = 0; k < a.nval && !rc; k++) {
 		struct wall *w = NULL;
 		memset(&pt[k], 0, sizeof pt[k]);
@@ -523,15 +527,29 @@ int cmd_sweep(int argc, char **argv)
 		cfg.threads = a.threads ? a.threads : mc_ncpu();
 		cfg.depth = a.param == SW_DEPTH ? a.val[k] : -1;
 		char err[SW_ERRLEN];
-		if (run_value(&cfg, &pt[k], k, a.nval, err) != SW_OK) {
+		enum sw_status vs = run_value(&cfg, &pt[k], k, a.nval, err);
+		wall_free(w);
+		if (vs == SW_EINTR)
+			break;
+		if (vs != SW_OK) {
 			fprintf(stderr, "slipwall sweep: %s\n", err);
 			rc = 1;
 		}
 		failed += pt[k].accepted == 0;
-		wall_free(w);
+		done++;
 	}
+	run_signals_restore(&caught);
 	if (isatty(STDERR_FILENO))
 		fprintf(stderr, "\r\033[K");
+	int intr = run_signal() != 0;
+	if (intr) {
+		a.nval = done;	/* the values done, each whole */
+		if (a.out && done < 2) {
+			fprintf(stderr, "slipwall sweep: no figure: fewer than "
+				"two values were done\n");
+			a.out = NULL;
+		}
+	}
 	if (!rc) {
 		if (a.json)
 			print_json(&a, pt, seed, n);
@@ -547,6 +565,12 @@ int cmd_sweep(int argc, char **argv)
 				"accepted sample\n", failed, failed > 1 ? "s" : "");
 			rc = 1;
 		}
+	}
+	if (intr) {
+		fprintf(stderr, "slipwall sweep: interrupted (%s): the %d "
+			"value%s done %s written\n", strsignal(run_signal()),
+			done, done == 1 ? "" : "s", done == 1 ? "is" : "are");
+		rc = sw_status_exit(SW_EINTR);
 	}
 	free(pt);
 out:

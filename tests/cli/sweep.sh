@@ -9,7 +9,8 @@
 # run of the wall with that value (the same seed: the same contact
 # draws), so it gives the same statistics as `run --depth D` / `run
 # --friction MU` / `run --load-at X,Y`; --csv, --json and --out write
-# what they say; bad ranges exit 2.  TAP output.
+# what they say; bad ranges exit 2; a signal writes the values done.
+# TAP output.
 
 bin=${1:?usage: cli/sweep.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -114,4 +115,29 @@ bad "--depth beyond 0.5" $block --depth 0:0.6:0.1
 bad "--load-at N = 1" $block --load-at 0,0.1:0,0.7:1
 bad "--load-at a point outside the block" $block --load-at 0,0.1:0,5:3 -n 5
 bad "--friction more than 1000 values" $block --friction 0:1:0.0001
+# a signal during a sweep (run.h's one policy): the value being run is
+# dropped, the values done are written whole (JSON and CSV agree, each
+# point has every sample), exit 1 with "interrupted"
+"$bin" sweep walls/demo.yaml --friction 0.3:1:0.1 -n 400 --threads 1 --json \
+	--csv "$tmp/sig.csv" >"$tmp/sig.json" 2>"$tmp/sig.err" &
+pid=$!
+sleep 4
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+res=$(python3 -c '
+import csv, json, sys
+d = json.load(open(sys.argv[1]))
+rows = list(csv.DictReader(open(sys.argv[2])))
+pts = d["points"]
+ok = len(pts) < 8 and len(rows) == len(pts) and all(p["samples"] == 400 for p in pts) \
+     and all(int(r["samples"]) == 400 for r in rows)
+print("%d of 8 values written" % len(pts))
+sys.exit(not ok)' "$tmp/sig.json" "$tmp/sig.csv" 2>&1)
+if [ $? -eq 0 ] && [ $rc -eq 1 ] && grep -q "^slipwall sweep: interrupted (Terminated)" "$tmp/sig.err"; then
+	ok "SIGTERM during a sweep: exit 1, the values done written whole ($res)"
+else
+	not_ok "SIGTERM during a sweep: exit 1, the values done written whole" "exit $rc" "$res" "$(cat "$tmp/sig.err")"
+fi
+
 tap_end
