@@ -451,17 +451,25 @@ static enum sw_status too_many(const struct reader *r, long n, size_t per,
 	return SW_OK;
 }
 
+/* A samples file of w opened, its header read and checked against w:
+ * SW_OK and its m interfaces, or the message.  reader_close() it
+ * whatever this returns. */
+static enum sw_status reader_start(struct reader *r, const char *path,
+				   const struct wall *w, int *m, char *err)
+{
+	if (reader_open(r, path, err))
+		return SW_EINPUT;
+	enum sw_status st = read_header(r, m, err);
+	return st == SW_OK ? check_wall(r, *m, w, err) : st;
+}
+
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 				     double **xi, long *rows, char *warn,
 				     char *err)
 {
 	struct reader r;
-	if (reader_open(&r, path, err))
-		return SW_EINPUT;
 	int m;
-	enum sw_status st = read_header(&r, &m, err);
-	if (st == SW_OK)
-		st = check_wall(&r, m, w, err);
+	enum sw_status st = reader_start(&r, path, w, &m, err);
 	double *x = NULL;
 	long n = 0, cap = 0;
 	size_t per = 2 * (size_t)m;
@@ -515,12 +523,8 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 				 double **lam, long *n, char *warn, char *err)
 {
 	struct reader r;
-	if (reader_open(&r, path, err))
-		return SW_EINPUT;
 	int m;
-	enum sw_status st = read_header(&r, &m, err);
-	if (st == SW_OK)
-		st = check_wall(&r, m, w, err);
+	enum sw_status st = reader_start(&r, path, w, &m, err);
 	double *x = NULL;
 	long k = 0, cap = 0;
 	while (st == SW_OK) {
