@@ -54,5 +54,7 @@ void tally_summary(const struct tally *t, struct stats_summary *s);
  * (null below 90 accepted samples). */
 struct json;
 void tally_json(const struct tally *t, struct json *j);
+/* The last two of those, of any summary (compare's model and tests). */
+void tally_summary_json(struct json *j, const struct stats_summary *s);
 
 #endif

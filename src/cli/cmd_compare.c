@@ -35,6 +35,7 @@
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/stats.h"
+#include "slipwall/tally.h"
 
 #define CMD "compare"
 #define GRID_STEP 0.05		/* first pass: 0, 0.05, ..., 0.5 */
@@ -294,36 +295,6 @@ static void print_ks(const struct model *md)
 	       "(model > tests)\n", k->p_less);
 }
 
-static void json_summary(struct json *j, const struct stats_summary *s)
-{
-	json_key(j, "lambda");
-	json_object_begin(j);
-	json_key(j, "min");
-	json_double(j, s->min);
-	json_key(j, "p05");
-	json_double(j, s->p05);
-	json_key(j, "p50");
-	json_double(j, s->p50);
-	json_key(j, "p95");
-	json_double(j, s->p95);
-	json_key(j, "max");
-	json_double(j, s->max);
-	json_key(j, "mean");
-	json_double(j, s->mean);
-	json_key(j, "std");
-	json_double(j, s->std);
-	json_object_end(j);
-	json_key(j, "p05_ci99");
-	if (s->has_ci) {
-		json_array_begin(j);
-		json_double(j, s->p05_lo);
-		json_double(j, s->p05_hi);
-		json_array_end(j);
-	} else {
-		json_null(j);
-	}
-}
-
 static void json_ks(struct json *j, const struct model *md)
 {
 	if (!md->ks_ok) {
@@ -491,7 +462,7 @@ static void print_json(const struct compare_args *a, const struct wall *w,
 	}
 	json_key(&j, "accepted");
 	json_int(&j, md->accepted);
-	json_summary(&j, &md->s);
+	tally_summary_json(&j, &md->s);
 	json_object_end(&j);
 	json_key(&j, "tests");
 	json_object_begin(&j);
@@ -501,7 +472,7 @@ static void print_json(const struct compare_args *a, const struct wall *w,
 	json_bool(&j, a->tests && cli_tests_synthetic(a->tests));
 	json_key(&j, "n");
 	json_int(&j, d->ntests);
-	json_summary(&j, &d->ts);
+	tally_summary_json(&j, &d->ts);
 	json_object_end(&j);
 	json_key(&j, "ks");
 	json_ks(&j, md);

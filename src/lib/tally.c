@@ -180,20 +180,26 @@ void tally_json(const struct tally *t, struct json *j)
 		json_int(j, t->rejected[k]);
 	}
 	json_object_end(j);
+	tally_summary_json(j, &s);
+}
+
+void tally_summary_json(struct json *j, const struct stats_summary *s)
+{
 	json_key(j, "lambda");
 	json_object_begin(j);
 	const char *names[7] = {"min", "p05", "p50", "p95", "max", "mean", "std"};
-	const double vals[7] = {s.min, s.p05, s.p50, s.p95, s.max, s.mean, s.std};
+	const double vals[7] = {s->min, s->p05, s->p50, s->p95, s->max,
+				s->mean, s->std};
 	for (int k = 0; k < 7; k++) {
 		json_key(j, names[k]);
 		json_double(j, vals[k]);
 	}
 	json_object_end(j);
 	json_key(j, "p05_ci99");
-	if (s.has_ci) {
+	if (s->has_ci) {
 		json_array_begin(j);
-		json_double(j, s.p05_lo);
-		json_double(j, s.p05_hi);
+		json_double(j, s->p05_lo);
+		json_double(j, s->p05_hi);
 		json_array_end(j);
 	} else {
 		json_null(j);
