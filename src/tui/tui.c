@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -182,11 +183,30 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	tui_switch_screen(t, TUI_SCREEN_MAIN);
 }
 
+/* A resize that comes between newterm()'s size query and the moment
+ * ncurses installs its SIGWINCH handler is lost (the signal's default is
+ * to be ignored), and the screen is then drawn for the old size: seen in
+ * CI, a pane resized to 80x24 as the workbench started under load, drawn
+ * at 100x30 until the next resize.  So every turn the loop asks the
+ * terminal its size (one ioctl) and resizes when curses disagrees;
+ * returns whether it did. */
+static int tui_size_check(struct tui *t)
+{
+	struct winsize ws;
+	if (ioctl(STDOUT_FILENO, TIOCGWINSZ, &ws) != 0 || ws.ws_row == 0 ||
+	    ws.ws_col == 0 || !is_term_resized(ws.ws_row, ws.ws_col))
+		return 0;
+	resizeterm(ws.ws_row, ws.ws_col);
+	clearok(curscr, TRUE);	/* what is on the terminal is unknown */
+	getmaxyx(stdscr, t->rows, t->cols);
+	return 1;
+}
+
 /* One turn of the loop after poll(): keys, samples, the solve thread;
  * returns whether the screen changed. */
 static int tui_tick(struct tui *t, int *more)
 {
-	int ch, dirty = 0;
+	int ch, dirty = tui_size_check(t);
 	while (!t->quit && (ch = getch()) != ERR) {
 		dirty = 1;
 		if (ch == KEY_RESIZE)
