@@ -54,6 +54,10 @@ struct sample_opts {
 				 * weight, default 1e-7 */
 	int stabilise;		/* the L1-closest optimal stress field (1) */
 	enum sample_slp slp;	/* how the SLP iterates (default ANDERSON) */
+	int forces;		/* fill sample_result.N and .T (default 0:
+				 * no front end reports them, and their
+				 * tie-break is a sample's costliest LP on
+				 * large walls) */
 };
 void sample_opts_default(struct sample_opts *o);
 
@@ -79,7 +83,8 @@ struct sample_result {
 	char *joint;		/* nifaces + 1: JOINT_* chars, NUL-terminated */
 	double *dn;		/* 2 * nifaces: opening rates at q_a, q_b */
 	double *dt;		/* nifaces: slip rates */
-	/* stress field at lambda_min, N */
+	/* stress field at lambda_min, N (with sample_opts.forces; NaN
+	 * otherwise) */
 	double *N;		/* 2 * nifaces */
 	double *T;		/* nifaces */
 };
@@ -90,7 +95,10 @@ void sample_result_free(struct sample_result *r);
  * the slack basis with LP-max by the primal or the dual simplex, GLPK's
  * crash basis, the canonical bases (each role's optimal basis at the
  * classical contact, a function of the wall alone), the basis the
- * workspace's previous sample left, or (`auto`, the default) the start
+ * workspace's previous sample left, the support basis of the sample's
+ * own contact points for LP-max, the standing check and LP-min (each
+ * block carried by its bed joints; the other roles from the slack
+ * basis), or (`auto`, the default) the start
  * measured fastest for each role and size of wall, a function of the
  * wall alone.  A sample's result does not depend on it (the tie-breaks
  * of "one answer per sample"); its cost does. */
@@ -100,6 +108,7 @@ enum sample_start {
 	SAMPLE_START_CRASH,
 	SAMPLE_START_CANONICAL,
 	SAMPLE_START_PREVIOUS,
+	SAMPLE_START_SUPPORT,
 	SAMPLE_START_AUTO,	/* by role and wall size (docs/method.md) */
 	SAMPLE_START_COUNT
 };
@@ -117,6 +126,9 @@ struct sample_ws;
 struct sample_ws *sample_ws_new(const struct wall *w);
 struct sample_ws *sample_ws_new_start(const struct wall *w,
 				      enum sample_start start);
+/* (For tests) a workspace with the `auto` start as it is on walls of
+ * more than 1,000 interfaces, whatever the size of w. */
+struct sample_ws *sample_ws_new_auto_large(const struct wall *w);
 void sample_ws_free(struct sample_ws *ws);
 
 

@@ -63,8 +63,8 @@ static int check_environment(void)
 	const char *e = getenv("SLIPWALL_LP_START");
 	if (e && *e && sample_start_parse(e) < 0) {
 		fprintf(stderr, "slipwall: SLIPWALL_LP_START='%s': not a start; "
-			"use auto, slack-primal, slack-dual, crash, canonical "
-			"or previous\n", e);
+			"use auto, slack-primal, slack-dual, crash, canonical, "
+			"previous or support\n", e);
 		return 0;
 	}
 	return 1;

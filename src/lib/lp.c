@@ -429,6 +429,20 @@ void lp_crash_basis(struct lp *p)
 	GUARD(p, glp_adv_basis(p->P, 0));
 }
 
+void lp_set_basis(struct lp *p, const unsigned char *cols)
+{
+	if (!alive(p))
+		return;
+	p->held = 0;
+	/* GLPK takes a non-basic status that does not fit the variable's
+	 * type as the one that does (NL for a fixed row is NS, for a free
+	 * column NF) */
+	for (int i = 1; i <= p->nrows; i++)
+		glp_set_row_stat(p->P, i, GLP_NL);
+	for (int j = 1; j <= p->ncols; j++)
+		glp_set_col_stat(p->P, j, cols[j - 1] ? GLP_BS : GLP_NL);
+}
+
 static enum lp_status map_status(glp_prob *P)
 {
 	switch (glp_get_status(P)) {

@@ -59,6 +59,12 @@ void lp_reset_basis(struct lp *p);
  * the matrix alone, and usually far fewer pivots from optimal than the
  * standard (all-slack) basis. */
 void lp_crash_basis(struct lp *p);
+/* Start from the basis whose basic columns are those with cols[j] != 0:
+ * every row non-basic (its auxiliary variable at its bound), every other
+ * column non-basic at its bound (or 0 if free).  The caller makes it a
+ * basis (as many basic columns as rows, non-singular); a singular one
+ * is GLPK's to repair (lp_solve). */
+void lp_set_basis(struct lp *p, const unsigned char *cols);
 
 /* A saved basis (row and column statuses), to warm-start a problem that
  * alternates between objectives from the basis each objective last

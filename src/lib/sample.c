@@ -58,6 +58,7 @@
 #include "lp.h"
 #include "slipwall/sample.h"
 #include "statics.h"
+#include "support.h"
 
 #define TOL_FORCE 1e-7
 #define TOL_MOTION 1e-9
@@ -83,6 +84,9 @@
  * iteration converges in 84; going on plainly from where it was, it
  * converged to another fixed point) */
 #define SLP_TRIES 50
+/* `auto` takes its large-wall starts above this many interfaces
+ * (role_start) */
+#define AUTO_LARGE_IFACES 1000
 /* the weight of sum r_j N_j in LP2's objective (put_lp2_objective) */
 #define TIE_LP2 1e-4
 
@@ -124,6 +128,7 @@ void sample_opts_default(struct sample_opts *o)
 	o->tol = 1e-7;
 	o->stabilise = 1;
 	o->slp = SAMPLE_SLP_ANDERSON;
+	o->forces = 0;
 }
 
 void sample_result_init(struct sample_result *r, const struct wall *w)
@@ -183,7 +188,11 @@ struct sample_ws {
 	 * slip of interface k; all in [1, 2), from the positions alone */
 	double *r;
 	double *c2;		/* a tie-break objective (scratch) */
+	unsigned char *basic;	/* the support basis's columns (scratch) */
 	enum sample_start start;	/* SLIPWALL_LP_START */
+	int large;		/* `auto` takes its large-wall starts */
+	int setup;		/* solving the canonical sample */
+	int forces;		/* this sample reports its stress field */
 	/* LPs by role, since the workspace was made (sample_ws_stats) */
 	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];
 	struct lp_basis canon[ROLES];	/* see set_points() */
@@ -207,10 +216,8 @@ static void put_column(struct sample_ws *ws, int j)
 	int rows[8], n;
 	double vals[8];
 	int k = j / 3, kind = j % 3;
-	double mu = ws->w->ifaces[k].mu;
 
 	n = statics_column(&ws->st, j, rows, vals);
-	(void)mu;
 	/* kin: row j over the velocity columns, plus the slip split */
 	int kn = n;
 	int kcols[8];
@@ -225,30 +232,12 @@ static void put_column(struct sample_ws *ws, int j)
 	}
 	lp_set_row(ws->lp[KIN], j, kn, kcols, kvals);
 
-	/* AMAX, STAND, AMIN: the cone edges n +- mu t at this point; the
-	 * shear's part of a column does not depend on the point */
+	/* AMAX, STAND, AMIN: the cone edges n +- mu t at this point */
 	if (kind != 2) {
-		int trows[6];
-		double tvals[6];
-		int tn = statics_column(&ws->st, 3 * k + 2, trows, tvals);
 		for (int sgn = 0; sgn < 2; sgn++) {
-			int er[12];
-			double ev[12];
-			int en = 0;
-			for (int i = 0; i < n; i++) {
-				er[en] = rows[i];
-				ev[en++] = vals[i];
-			}
-			for (int i = 0; i < tn; i++) {
-				int q;
-				for (q = 0; q < en && er[q] != trows[i]; q++)
-					;
-				if (q == en) {
-					er[en] = trows[i];
-					ev[en++] = 0;
-				}
-				ev[q] += (sgn ? -mu : mu) * tvals[i];
-			}
+			int er[6];
+			double ev[6];
+			int en = statics_edge_column(&ws->st, k, kind, sgn, er, ev);
 			int col = sgn ? ACOL_BETA(k, kind) : ACOL_ALPHA(k, kind);
 			for (int p = AMAX; p <= AMIN; p++)
 				lp_set_col(ws->lp[p], col, en, er, ev);
@@ -389,7 +378,8 @@ static void set_points(struct sample_ws *ws, const double *xi);
 
 /* Solve one sample at the classical contact (xi = 0, 1) from the freshly
  * built problems and keep the basis each role ended at: the start of
- * every later sample.  Deterministic: it depends on the wall only. */
+ * every later sample.  Deterministic: it depends on the wall only.  It
+ * skips the tie-breaks (tiebreak()): nothing of it is reported. */
 static void canonical_bases(struct sample_ws *ws)
 {
 	struct sample_opts o;
@@ -401,7 +391,9 @@ static void canonical_bases(struct sample_ws *ws)
 		xi[2 * k] = 0;
 		xi[2 * k + 1] = 1;
 	}
+	ws->setup = 1;
 	sample_run(ws, xi, &o, &r);
+	ws->setup = 0;
 	/* interrupted (lp_thread_stop_flag): the problems are dead and the
 	 * workspace is only fit to be freed; lp_basis_save skips them */
 	for (int p = 0; p < ROLES; p++)
@@ -415,11 +407,12 @@ struct sample_ws *sample_ws_new(const struct wall *w)
 	return sample_ws_new_start(w, sample_start());
 }
 
-struct sample_ws *sample_ws_new_start(const struct wall *w,
-				      enum sample_start start)
+static struct sample_ws *ws_new(const struct wall *w,
+				enum sample_start start, int large)
 {
 	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
 	ws->w = w;
+	ws->large = large;
 	statics_init(&ws->st, w);
 	ws->m = w->nifaces;
 	ws->R = ws->st.nrows;
@@ -438,10 +431,22 @@ struct sample_ws *sample_ws_new_start(const struct wall *w,
 	ws->val = sw_xmalloc(sizeof(double) * big);
 	ws->r = sw_xcalloc(3 * m + 1, sizeof(double));
 	ws->c2 = sw_xcalloc(5 * m + (size_t)ws->R + 2, sizeof(double));
+	ws->basic = sw_xcalloc(4 * m + 1, 1);
 	ws->start = start;
 	build(ws);
 	canonical_bases(ws);
 	return ws;
+}
+
+struct sample_ws *sample_ws_new_start(const struct wall *w,
+				      enum sample_start start)
+{
+	return ws_new(w, start, w->nifaces > AUTO_LARGE_IFACES);
+}
+
+struct sample_ws *sample_ws_new_auto_large(const struct wall *w)
+{
+	return ws_new(w, SAMPLE_START_AUTO, 1);
 }
 
 void sample_ws_free(struct sample_ws *ws)
@@ -465,6 +470,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->val);
 	free(ws->r);
 	free(ws->c2);
+	free(ws->basic);
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
 	free(ws);
@@ -525,12 +531,19 @@ static enum lp_status solve(struct sample_ws *ws, enum role role,
 static enum lp_status tiebreak(struct sample_ws *ws, enum role role,
 			       const double *c2, struct sample_result *r)
 {
+	/* the canonical sample reports nothing: its bases need only be a
+	 * function of the wall, which they are without the tie-breaks (on
+	 * a 10,000-block wall LP-max's is a global LP over the rest of the
+	 * wall) */
+	if (ws->setup)
+		return LP_OPTIMAL;
 	return counted(ws, role + ROLES, LP_PRIMAL, c2, r);
 }
 
 /* The names of the starts, in enum sample_start's order. */
 static const char *const start_names[SAMPLE_START_COUNT] = {
-	"slack-primal", "slack-dual", "crash", "canonical", "previous", "auto",
+	"slack-primal", "slack-dual", "crash", "canonical", "previous",
+	"support", "auto",
 };
 
 const char *sample_start_name(enum sample_start s)
@@ -619,24 +632,44 @@ static void put_lp2_objective(struct sample_ws *ws)
 			lp_set_obj(ws->lp[LP2], 3 * k + e, TIE_LP2 * ws->r[2 * k + e]);
 }
 
-/* `auto`: walls with more interfaces than this start LP-max from the
- * slack basis (by the primal simplex) and LP2 from the slack basis; all
- * other roles, and every role of smaller walls, from the canonical bases.
- * Measured pivots per sample (docs/performance.md): Ferris & Tin-Loi
- * wall 2 (141 interfaces), LP-max 29 from the canonical basis, 407 from
- * the slack basis by the primal simplex; LP2 20.5 and 24.5 per solve; the
- * 1,020-block wall (2,956 interfaces), LP-max 20,744 and 13,751, the
- * first LP2 of a sample 12,254 and 3,884 (the other roles: canonical
- * fewer on both). */
-#define AUTO_SLACK_IFACES 1000
+/* `auto`: walls with more interfaces than this start LP2 from the slack
+ * basis and solve LP-max by the primal simplex (from the canonical
+ * basis, like every other role); smaller walls start every role from the
+ * canonical bases, LP-max by the dual simplex.  Measured pivots per
+ * sample (docs/performance.md): Ferris & Tin-Loi wall 2 (141
+ * interfaces), LP-max 29 from the canonical basis by the dual simplex,
+ * 59.5 by the primal, 407 from the slack basis by the primal; LP2 20.5
+ * and 24.5 per solve (canonical, slack); the 1,020-block wall (2,956
+ * interfaces), LP-max 20,744 (canonical, dual), 2,308 (canonical,
+ * primal), 13,751 (slack, primal), the first LP2 of a sample 12,254 and
+ * 3,884 (canonical, slack; the other roles: canonical fewer on both).
+ * Large walls also start the standing check from the support basis
+ * (support.c): 513 pivots, 2,092 from the canonical basis; and so the
+ * associative problems of the canonical sample, solved when the
+ * workspace is made (LP-max 3,143 pivots from the support basis, 13,751
+ * from the slack basis).  AUTO_LARGE_IFACES is at the top of the file. */
+
+/* Is this an `auto` workspace of a large wall (AUTO_LARGE_IFACES, or
+ * sample_ws_new_auto_large)? */
+static int auto_large(const struct sample_ws *ws)
+{
+	return ws->start == SAMPLE_START_AUTO && ws->large;
+}
 
 /* The start of role p's LPs in this workspace. */
 static enum sample_start role_start(const struct sample_ws *ws, int p)
 {
 	if (ws->start != SAMPLE_START_AUTO)
 		return ws->start;
-	if (ws->m > AUTO_SLACK_IFACES && (p == AMAX || p == LP2))
+	if (auto_large(ws) && p == LP2)
 		return SAMPLE_START_SLACK_PRIMAL;
+	/* the standing check from the support basis; so are the
+	 * associative problems of the workspace's canonical sample, which
+	 * has no canonical basis yet (they would start from the slack
+	 * basis) */
+	if (auto_large(ws) &&
+	    (p == STAND || (ws->canon[p].n == 0 && p <= AMIN)))
+		return SAMPLE_START_SUPPORT;
 	return SAMPLE_START_CANONICAL;
 }
 
@@ -666,8 +699,21 @@ static void set_points(struct sample_ws *ws, const double *xi)
 		rebuild(ws);
 	}
 	put_lp2_objective(ws);
+	int support = -1;	/* support_basis's verdict, once computed */
 	for (int p = 0; p < ROLES; p++) {
 		switch (role_start(ws, p)) {
+		case SAMPLE_START_SUPPORT:
+			if (p == LP1 || p == LP2 || p == KIN) {
+				lp_reset_basis(ws->lp[p]);
+				break;
+			}
+			if (support == -1)
+				support = support_basis(&ws->st, ws->basic) >= 0;
+			if (support)
+				lp_set_basis(ws->lp[p], ws->basic);
+			else
+				lp_reset_basis(ws->lp[p]);
+			break;
 		case SAMPLE_START_SLACK_PRIMAL:
 		case SAMPLE_START_SLACK_DUAL:
 			lp_reset_basis(ws->lp[p]);
@@ -745,10 +791,13 @@ static enum sample_status lp_max(struct sample_ws *ws, struct sample_result *r,
 	/* LP-max is degenerate: its optimal stress fields form a face, and
 	 * the tie-break takes the one with the least sum r_j N_j, whatever
 	 * vertex the simplex reached (the SLP's start).  The dual simplex
-	 * from the start's basis, except for `slack-primal`. */
+	 * from the start's basis, except for `slack-primal` and large walls
+	 * under `auto` (role_start). */
 	struct lp *P = ws->lp[AMAX];
 	enum sample_start st = role_start(ws, AMAX);
-	enum lp_method m = st == SAMPLE_START_SLACK_PRIMAL ? LP_PRIMAL : LP_DUAL;
+	enum lp_method m = st == SAMPLE_START_SLACK_PRIMAL ||
+			   st == SAMPLE_START_SUPPORT || auto_large(ws) ?
+			   LP_PRIMAL : LP_DUAL;
 	enum lp_status s = solve(ws, AMAX, m, r);
 	/* A load factor <= 0 is re-checked by the primal simplex from the
 	 * slack basis, as solve() re-checks a "no": the dual simplex has
@@ -1168,9 +1217,15 @@ static enum sample_status lp_min(struct sample_ws *ws, enum lp_method method,
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	r->lambda_min = lp_obj(P);
-	/* the reported stress field: one of LP-min's optima, by the
-	 * tie-break */
-	if (assoc_tiebreak(ws, AMIN, r) != LP_OPTIMAL)
+	/* the reported stress field: of LP-min's optima, the tie-break's.
+	 * Unreported (sample_opts.forces), any optimum will do: lambda_min
+	 * is the optimum's value, and the virtual-work identity holds for
+	 * every field LP-min admits (its bounds hold N = 0 where the
+	 * mechanism opens and T = -+mu N where it slides), so neither
+	 * depends on the vertex.  The tie-break is LP-min's second LP and,
+	 * on the 1,020-block wall, a sample's costliest (9,300 pivots,
+	 * docs/performance.md). */
+	if (ws->forces && assoc_tiebreak(ws, AMIN, r) != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	assoc_field(ws, P, ws->x);
 	return SAMPLE_ACCEPTED;
@@ -1225,17 +1280,19 @@ static void export(struct sample_ws *ws, struct sample_result *r)
 		r->dn[2 * k] = vmax > 0 ? ws->dn[2 * k] / vmax : 0;
 		r->dn[2 * k + 1] = vmax > 0 ? ws->dn[2 * k + 1] / vmax : 0;
 		r->dt[k] = vmax > 0 ? ws->dt[k] / vmax : 0;
-		r->N[2 * k] = ws->x[3 * k] * F;
-		r->N[2 * k + 1] = ws->x[3 * k + 1] * F;
-		r->T[k] = ws->x[3 * k + 2] * F;
+		r->N[2 * k] = ws->forces ? ws->x[3 * k] * F : NAN;
+		r->N[2 * k + 1] = ws->forces ? ws->x[3 * k + 1] * F : NAN;
+		r->T[k] = ws->forces ? ws->x[3 * k + 2] * F : NAN;
 	}
 	r->joint[ws->m] = 0;
 }
 
-/* A sample's result, reset, and its problems built at the points xi. */
-static void begin(struct sample_ws *ws, const double *xi,
+/* A sample's result, reset, and its problems built at the points xi;
+ * forces: it reports its stress field. */
+static void begin(struct sample_ws *ws, const double *xi, int forces,
 		  struct sample_result *r)
 {
+	ws->forces = forces;
 	r->status = SAMPLE_NUMERICAL;
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
 	r->iterations = 0;
@@ -1285,7 +1342,7 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 void sample_run(struct sample_ws *ws, const double *xi,
 		const struct sample_opts *o, struct sample_result *r)
 {
-	begin(ws, xi, r);
+	begin(ws, xi, o->forces, r);
 	enum sample_status st = lp_max(ws, r, NULL);
 	if (st == SAMPLE_ACCEPTED)
 		st = standing(ws, r);
@@ -1301,7 +1358,7 @@ enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
 				  const unsigned char *slip,
 				  struct sample_result *r)
 {
-	begin(ws, xi, r);
+	begin(ws, xi, 1, r);
 	struct lp *K = ws->lp[KIN];
 	for (int k = 0; k < ws->m; k++) {
 		for (int e = 0; e < 2; e++)
@@ -1324,6 +1381,7 @@ const struct statics *sample_statics(const struct sample_ws *ws)
 void sample_export(struct sample_ws *ws, const double *v, const double *x,
 		   struct sample_result *r)
 {
+	ws->forces = 1;
 	memcpy(ws->v, v, sizeof(double) * (size_t)ws->R);
 	memcpy(ws->x, x, sizeof(double) * 3 * (size_t)ws->m);
 	for (int k = 0; k < ws->m; k++) {

@@ -135,6 +135,20 @@ int statics_column(const struct statics *s, int j, int *rows, double *vals)
 	return n;
 }
 
+int statics_edge_column(const struct statics *s, int k, int e, int sgn,
+			int *rows, double *vals)
+{
+	int trows[6];
+	double tvals[6];
+	int n = statics_column(s, 3 * k + e, rows, vals);
+	int tn = statics_column(s, 3 * k + 2, trows, tvals);
+	double mu = s->w->ifaces[k].mu;
+	/* the shear's column has the normal's rows, in the same order */
+	for (int i = 0; i < n && i < tn; i++)
+		vals[i] += (sgn ? -mu : mu) * tvals[i];
+	return n;
+}
+
 double statics_rate(const struct statics *s, int j, const double *v)
 {
 	int rows[6];

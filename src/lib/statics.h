@@ -48,6 +48,13 @@ void statics_set_points(struct statics *s, const double *xi);
  * equation numbers.  Returns the count. */
 int statics_column(const struct statics *s, int j, int *rows, double *vals);
 
+/* The column of the edge n + mu t (sgn 0) or n - mu t (sgn 1) of the
+ * friction cone at point e (0: q_a, 1: q_b) of interface k: the normal
+ * force's column plus +-mu times the shear's (the same rows).  At most
+ * 6 non-zeros; returns the count. */
+int statics_edge_column(const struct statics *s, int k, int e, int sgn,
+			int *rows, double *vals);
+
 /* (A^T v)_j for scaled velocities v (nrows entries). */
 double statics_rate(const struct statics *s, int j, const double *v);
 

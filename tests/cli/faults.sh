@@ -377,7 +377,7 @@ else
 	# the disk fills under the samples file (a file size limit, SIGXFSZ
 	# ignored: a short write, then EFBIG, as on a full disk)
 	wb full "trap '' XFSZ; ulimit -f 8;" -- "$ft"
-	if wb_wait_screen full "samples file: .*cannot write" 60; then
+	if wb_wait_screen full "samples file: .*cannot write" 90; then
 		f=$(ls "$tmp/wb-full"/runs/*.csv)
 		rows=$(($(wc -l <"$f") - 1))
 		if rows_ok "$f" && [ "$rows" -gt 0 ]; then
@@ -387,8 +387,11 @@ else
 				"last bytes: $(tail -c 60 "$f" | tr '\n' '|')"
 		fi
 	else
+		# all of it: the title's state and count, the files
 		not_ok "a full disk under the workbench's samples file is said" \
-			"$(T capture-pane -p -t t:full | grep -v '^$' | tail -n 5)"
+			"$(T capture-pane -p -t t:full | grep -v '^$')" \
+			"$(ls -la "$tmp/wb-full"/runs 2>&1)" \
+			"$(ps -o pid,stat,time,nlwp,args --ppid "$(cat "$tmp/wb-full/sh")" 2>&1)"
 	fi
 	T send-keys -t t:full q
 

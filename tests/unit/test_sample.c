@@ -276,8 +276,13 @@ static void properties(void)
 	gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
 	gsl_rng_set(g, 2024);
 	int accepted = 0, bad_order = 0, bad_vw = 0, bad_adm = 0, bad_comp = 0;
-	struct sample_opts o;
+	int bad_unrep = 0;
+	struct sample_opts o, unrep;
 	sample_opts_default(&o);
+	/* the stress field at lambda_min, reported (its tie-break runs) */
+	o.forces = 1;
+	/* and the default, which does not report it: the same sample */
+	sample_opts_default(&unrep);
 	for (int c = 0; c < 200; c++) {
 		struct wall *w = tw_random(g);
 		struct sample_ws *ws = sample_ws_new(w);
@@ -288,7 +293,20 @@ static void properties(void)
 		sample_standard(ws, xi, &s);
 		double lam_std = s.lambda_max;
 		mc_positions(w, 99, (unsigned long)c, -1, xi);
+		sample_run(ws, xi, &unrep, &r);
+		enum sample_status st0 = r.status;
+		double lmin0 = r.lambda_min;
+		if (!isnan(r.N[0]))
+			bad_unrep++;
 		sample_run(ws, xi, &o, &r);
+		if (st0 != r.status ||
+		    (st0 == SAMPLE_ACCEPTED &&
+		     !(fabs(lmin0 - r.lambda_min) <= 1e-9 * fabs(r.lambda_min)))) {
+			bad_unrep++;
+			tap_diag("case %d: without the forces %s %.12g, with %s %.12g", c,
+				 sample_status_name(st0), lmin0,
+				 sample_status_name(r.status), r.lambda_min);
+		}
 		if (r.status == SAMPLE_ACCEPTED) {
 			accepted++;
 			double tol = 1e-6 * fmax(1, lam_std);
@@ -334,6 +352,7 @@ static void properties(void)
 	tap_ok(bad_vw == 0, "virtual work to 1e-8 on every accepted sample (%d violations)", bad_vw);
 	tap_ok(bad_adm == 0, "stress field admissible: N >= 0, |T| <= mu N (%d violations)", bad_adm);
 	tap_ok(bad_comp == 0, "stress field complementary to the mechanism (%d violations)", bad_comp);
+	tap_ok(bad_unrep == 0, "without the stress field (the default): the same status and lambda_min, N not reported (%d differences)", bad_unrep);
 }
 
 int main(void)

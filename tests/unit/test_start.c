@@ -1,13 +1,14 @@
 /*
  * test_start.c - "One answer per sample" (SPEC section 2): a sample is a
  * function of its contact positions alone, whatever the LP solver's path.
- * Every sample is solved by six workspaces that start every LP from a
+ * Every sample is solved by eight workspaces that start every LP from a
  * different basis (SLIPWALL_LP_START's values: the default `auto`, the
  * slack basis by the primal and by the dual simplex, GLPK's crash basis,
- * the canonical bases, the previous sample's bases), and must give the
- * same status,
- * the same lambda_min (1e-9 relative) and the same mechanism (the joint
- * classification of every interface).  Without the tie-breaks, changing
+ * the canonical bases, the previous sample's bases, the support basis;
+ * and `auto` as it starts walls of more than 1,000 interfaces), and must
+ * give the same status, the same lambda_min (1e-9 relative) and the
+ * same mechanism (the joint classification of every interface).
+ * Without the tie-breaks, changing
  * only LP-max's start moved 47-88 % of the demo wall's samples.
  *
  * Walls: the demo, Ferris & Tin-Loi 1 and 2 (depth 0.25, the walls'
@@ -23,11 +24,20 @@
 #include "tap.h"
 #include "walls.h"
 
-/* the starts, the default first: ws[s] starts from start_of[s] */
-static const enum sample_start start_of[SAMPLE_START_COUNT] = {
+/* the starts, the default first: ws[s] starts from start_of[s]; the
+ * last is `auto` as it starts a wall of more than 1,000 interfaces
+ * (sample_ws_new_auto_large) */
+#define NSTART (SAMPLE_START_COUNT + 1)
+static const enum sample_start start_of[NSTART - 1] = {
 	SAMPLE_START_DEFAULT, SAMPLE_START_SLACK_PRIMAL, SAMPLE_START_SLACK_DUAL,
 	SAMPLE_START_CRASH, SAMPLE_START_CANONICAL, SAMPLE_START_PREVIOUS,
+	SAMPLE_START_SUPPORT,
 };
+
+static const char *start_name(int s)
+{
+	return s == NSTART - 1 ? "auto (large walls)" : start_name(s);
+}
 
 struct tally {
 	long samples, accepted, status, lambda, mechanism;
@@ -51,7 +61,7 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	sample_run(ws[0], xi, o, &ref);
 	t->samples++;
 	t->accepted += ref.status == SAMPLE_ACCEPTED;
-	for (int s = 1; s < SAMPLE_START_COUNT; s++) {
+	for (int s = 1; s < NSTART; s++) {
 		sample_run(ws[s], xi, o, &r);
 		if (r.status != ref.status) {
 			t->status++;
@@ -59,7 +69,7 @@ static void one(struct sample_ws **ws, const struct wall *w,
 				 sample_status_name(ref.status),
 				 sample_start_name(SAMPLE_START_DEFAULT),
 				 sample_status_name(r.status),
-				 sample_start_name(start_of[s]));
+				 start_name(s));
 			continue;
 		}
 		if (ref.status != SAMPLE_ACCEPTED)
@@ -70,14 +80,14 @@ static void one(struct sample_ws **ws, const struct wall *w,
 			tap_diag("%s sample %lu: lambda_min %.12g by %s, %.12g by %s",
 				 what, index, ref.lambda_min,
 				 sample_start_name(SAMPLE_START_DEFAULT),
-				 r.lambda_min, sample_start_name(start_of[s]));
+				 r.lambda_min, start_name(s));
 		}
 		if (strcmp(r.joint, ref.joint)) {
 			t->mechanism++;
 			tap_diag("%s sample %lu: mechanism %s by %s, %s by %s", what,
 				 index, ref.joint,
 				 sample_start_name(SAMPLE_START_DEFAULT), r.joint,
-				 sample_start_name(start_of[s]));
+				 start_name(s));
 		}
 	}
 	sample_result_free(&ref);
@@ -85,16 +95,17 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	free(xi);
 }
 
-/* The six workspaces of w, the default start first. */
+/* The workspaces of w, the default start first. */
 static void open_all(struct sample_ws **ws, const struct wall *w)
 {
-	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+	for (int s = 0; s < NSTART - 1; s++)
 		ws[s] = sample_ws_new_start(w, start_of[s]);
+	ws[NSTART - 1] = sample_ws_new_auto_large(w);
 }
 
 static void close_all(struct sample_ws **ws)
 {
-	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+	for (int s = 0; s < NSTART; s++)
 		sample_ws_free(ws[s]);
 }
 
@@ -125,11 +136,11 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 	}
 	struct sample_result r;
 	sample_result_init(&r, w);
-	double std[SAMPLE_START_COUNT], gmax[SAMPLE_START_COUNT],
-	       gmin[SAMPLE_START_COUNT];
-	char *mech[SAMPLE_START_COUNT];
+	double std[NSTART], gmax[NSTART],
+	       gmin[NSTART];
+	char *mech[NSTART];
 	int st_ok = 1, g_ok = 1, m_ok = 1;
-	for (int s = 0; s < SAMPLE_START_COUNT; s++) {
+	for (int s = 0; s < NSTART; s++) {
 		sample_standard(ws[s], xi, &r);
 		std[s] = r.lambda_max;
 		sample_run(ws[s], xi, &o, &r);
@@ -145,14 +156,14 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 		m_ok &= !strcmp(mech[s], mech[0]);
 		if (s)
 			tap_diag("%s: %s: standard %.12g, gilbert %.12g / %.12g",
-				 path, sample_start_name(start_of[s]), std[s],
+				 path, start_name(s), std[s],
 				 gmax[s], gmin[s]);
 	}
 	tap_ok(st_ok, "%s: standard %.9g from every start", path, std[0]);
 	tap_ok(g_ok, "%s: gilbert %.9g (1e-6; onset %.9g, 1e-9) from every start", path,
 	       gmax[0], gmin[0]);
 	tap_ok(m_ok, "%s: gilbert's mechanism from every start", path);
-	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+	for (int s = 0; s < NSTART; s++)
 		free(mech[s]);
 	sample_result_free(&r);
 	free(xi);
@@ -161,7 +172,7 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 static void wall_file(const char *path, long n)
 {
 	struct wall *w = tw_load_file(path);
-	struct sample_ws *ws[SAMPLE_START_COUNT];
+	struct sample_ws *ws[NSTART];
 	struct tally t = {0};
 	open_all(ws, w);
 	classical(ws, w, path);
@@ -183,7 +194,7 @@ static void random_walls(void)
 	struct tally t = {0};
 	for (int c = 0; c < 200; c++) {
 		struct wall *w = tw_random(g);
-		struct sample_ws *ws[SAMPLE_START_COUNT];
+		struct sample_ws *ws[NSTART];
 		open_all(ws, w);
 		one(ws, w, 7, (unsigned long)c, &t, "random wall");
 		close_all(ws);
