@@ -26,7 +26,7 @@ rules=(
 	"MPI outside src/cli/|src/* include/*|^src/cli/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<mpi\.h>"
 	"GLPK outside the LP layer (src/lib/lp.c)|src/* include/*|^src/lib/lp\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
 	"the LP layer's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp\.h\""
-	"the operator's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?statics\.h\""
+	"the operator's headers (statics.h, support.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support)\.h\""
 	"GSL, libyaml, cairo outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(gsl/|yaml\.h|cairo|fontconfig/)"
 	"src/tui/ including src/cli/|src/tui/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(cli/)?(cli|override|summary|cluster)\.h\""
 	"the library including a front end|src/lib/* include/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*((cli|tui)/)?(cli|override|summary|cluster|tui|workbench)\.h\""

@@ -10,7 +10,9 @@
  * buffer of SW_ERRLEN bytes.
  *
  * Private to the library (src/lib/): lp.h, the LP layer, the only
- * module that includes GLPK, and statics.h, the equilibrium operator.
+ * module that includes GLPK; statics.h, the equilibrium operator; and
+ * support.h, the support basis (a starting basis built from how the
+ * wall stands, for sample.c).
  */
 #ifndef SLIPWALL_SLIPWALL_H
 #define SLIPWALL_SLIPWALL_H
