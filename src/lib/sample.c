@@ -649,9 +649,9 @@ static void put_lp2_objective(struct sample_ws *ws)
  * primal), 13,751 (slack, primal), the first LP2 of a sample 12,254 and
  * 3,884 (canonical, slack; the other roles: canonical fewer on both).
  * Large walls also start the standing check from the support basis
- * (support.c): 513 pivots, 2,092 from the canonical basis; and so the
+ * (support.c): 35.5 pivots, 2,092 from the canonical basis; and so the
  * associative problems of the canonical sample, solved when the
- * workspace is made (LP-max 3,143 pivots from the support basis, 13,751
+ * workspace is made (LP-max 3,322 pivots from the support basis, 13,751
  * from the slack basis).  AUTO_LARGE_IFACES is at the top of the file. */
 
 /* Is this an `auto` workspace of a large wall (AUTO_LARGE_IFACES, or
