@@ -109,11 +109,8 @@ static void patterns(void)
 		{0.1, {0, 0}, 0, 0, 0, "a = 0.1, nothing may move: no mechanism"},
 	};
 	for (size_t i = 0; i < sizeof p / sizeof *p; i++) {
-		struct wall *w = wall_new();
-		tw_rect(w, "A", 0, 0, 0.4, 0.8);
-		w->has_ground = 1;
+		struct wall *w = tw_block(p[i].a);
 		w->mu_bed = w->mu_head = 0.6;
-		tw_point_load(w, 0, p[i].a, 1, 0);
 		tw_finish(w);
 		double W = w->total_weight;
 		struct sample_ws *ws = sample_ws_new(w);

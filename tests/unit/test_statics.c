@@ -13,10 +13,7 @@
 int main(void)
 {
 	/* a block b x h on the ground */
-	struct wall *w = wall_new();
-	tw_rect(w, "A", 0, 0, 0.4, 0.8);
-	w->has_ground = 1;
-	tw_point_load(w, 0, 0.6, 1, 0);
+	struct wall *w = tw_block(0.6);
 	tw_finish(w);
 	struct statics s;
 	statics_init(&s, w);

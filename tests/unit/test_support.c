@@ -101,10 +101,7 @@ static void standing(struct wall *w, const char *what)
 int main(void)
 {
 	/* a block on the ground */
-	struct wall *w = wall_new();
-	tw_rect(w, "A", 0, 0, 0.4, 0.8);
-	w->has_ground = 1;
-	tw_point_load(w, 0, 0.6, 1, 0);
+	struct wall *w = tw_block(0.6);
 	tw_finish(w);
 	classical(w, "a block on the ground");
 	standing(w, "a block on the ground");

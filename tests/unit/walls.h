@@ -43,6 +43,18 @@ static inline void tw_point_load(struct wall *w, double x, double y,
 	wall_add_load(w, &ld);
 }
 
+/* The closed-form block: 0.4 m wide, 0.8 m high, on the ground, a
+ * horizontal point load of 1 N on its left face at height y (not
+ * finished). */
+static inline struct wall *tw_block(double y)
+{
+	struct wall *w = wall_new();
+	tw_rect(w, "A", 0, 0, 0.4, 0.8);
+	w->has_ground = 1;
+	tw_point_load(w, 0, y, 1, 0);
+	return w;
+}
+
 static inline void tw_body_load(struct wall *w)
 {
 	struct wall_load ld = {0};
