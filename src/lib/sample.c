@@ -673,7 +673,7 @@ static enum sample_start role_start(const struct sample_ws *ws, int p)
 	 * has no canonical basis yet (they would start from the slack
 	 * basis) */
 	if (auto_large(ws) &&
-	    (p == STAND || (ws->canon[p].n == 0 && p <= AMIN)))
+	    (p == STAND || (ws->setup && p <= AMIN)))
 		return SAMPLE_START_SUPPORT;
 	return SAMPLE_START_CANONICAL;
 }
