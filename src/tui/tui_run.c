@@ -156,16 +156,25 @@ void tui_run_end(struct tui *t)
 	r->latest_vel = NULL;
 }
 
+/* Pops what is ready, for at most budget seconds.  Returns -1 when it
+ * stopped with more ready (come back at once), else whether the screen
+ * changed: a sample counted, or the pool ended (the target reached, a
+ * write error).  The end alone counts too: a write error on a row that
+ * comes by itself, after the last frame, with the solve thread done, is
+ * otherwise never drawn (seen in CI: the screen said "running" for
+ * 90 s). */
 int tui_run_pump(struct tui *t, double budget)
 {
 	struct tui_run *r = &t->run;
 	double t0 = sys_now();
-	int n = 0;
+	int changed = 0;
+	long n = 0;
 
 	while (r->mc) {
 		int got = run_pump(&r->core, 0);
 		if (got == 0)
 			break;
+		changed = 1;	/* a sample, or the end of the pool */
 		if (r->core.stop == RUN_WRITE) {
 			tui_run_drain(t);	/* says so */
 			break;
@@ -177,15 +186,14 @@ int tui_run_pump(struct tui *t, double budget)
 			tui_run_spawn(t);
 			continue;
 		}
-		n++;
 		if (r->done >= r->target) {
 			tui_run_drain(t);
 			break;
 		}
-		if ((n & 63) == 0 && sys_now() - t0 > budget)
+		if ((++n & 63) == 0 && sys_now() - t0 > budget)
 			return -1;
 	}
-	return n;
+	return changed;
 }
 
 void tui_run_pause(struct tui *t, int pause)

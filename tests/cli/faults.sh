@@ -15,7 +15,8 @@
 # private tmux server; skipped without tmux): SIGINT and SIGTERM end it
 # with its samples file closed on complete rows and the terminal
 # restored, SIGKILL leaves complete rows, a full disk under its samples
-# file is said on the status line and leaves complete rows, no place for
+# file is said on the status line and leaves complete rows (also when the
+# failing row comes alone, after the last frame), no place for
 # the samples file and a save into a missing directory are said.  The
 # report: an --out under a file and a full disk are clear errors, and the
 # full disk leaves whole figures only.
@@ -394,6 +395,35 @@ else
 			"$(ps -o pid,stat,time,nlwp,args --ppid "$(cat "$tmp/wb-full/sh")" 2>&1)"
 	fi
 	T send-keys -t t:full q
+
+	# the write error on a row that comes by itself: the solve thread
+	# done, the last frame drawn, then the failing row alone.  Paused,
+	# the file size limit set to one byte more than the file (prlimit on
+	# the running program), resumed: the first new row fails.  The old
+	# workbench counted only samples as a change and never drew this one
+	# (the screen said "running" until a key; seen in CI).
+	wb late "trap '' XFSZ;" -- "$ft"
+	if wb_wait_screen late 'standard [0-9.]+ +gilbert [0-9.]+' 60 &&
+	   wb_rows late 5 60 && T send-keys -t t:late ' ' &&
+	   wb_wait_screen late 'run 1 paused' 20; then
+		f=$(ls "$tmp/wb-late"/runs/*.csv)
+		rows=$(($(wc -l <"$f") - 1))
+		prlimit --pid "$(wb_pid late)" --fsize=$(($(stat -c %s "$f") + 1))
+		T send-keys -t t:late ' '
+		if wb_wait_screen late "samples file: .*cannot write" 20 &&
+		   wb_screen_has late 'run 1 write error' &&
+		   rows_ok "$f" && [ $(($(wc -l <"$f") - 1)) = "$rows" ]; then
+			ok "a write error on a row that comes alone is drawn at once: 'write error', the file still its $rows complete rows"
+		else
+			not_ok "a write error on a row that comes alone is drawn" \
+				"$(T capture-pane -p -t t:late | grep -v '^$' | sed -n '1p;$p')" \
+				"last bytes: $(tail -c 60 "$f" | tr '\n' '|')"
+		fi
+	else
+		not_ok "a write error on a row that comes alone: the workbench solves, samples and pauses" \
+			"$(T capture-pane -p -t t:late | grep -v '^$' | sed -n '1p;$p')"
+	fi
+	T send-keys -t t:late q
 
 	# no place for its samples file: said; it goes on without one
 	mkdir -p "$tmp/wb-norun"
