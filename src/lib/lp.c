@@ -331,6 +331,35 @@ void lp_free(struct lp *p)
 	free(p);
 }
 
+int lp_alive(const struct lp *p)
+{
+	return p && alive(p);
+}
+
+void lp_clear(struct lp *p)
+{
+	p->held = 0;
+	if (!alive(p))
+		return;
+	glp_prob *P = p->P;
+	/* drop the factorization: GLPK keeps it while no variable enters
+	 * or leaves the basis, and one reached by updates differs in the
+	 * last bits from one computed afresh; taking row 1 out of the
+	 * basis and back in is a change in any basis */
+	if (p->nrows > 0) {
+		glp_set_row_stat(P, 1, GLP_NL);
+		glp_set_row_stat(P, 1, GLP_BS);
+	}
+	for (int i = 1; i <= p->nrows; i++)
+		glp_set_row_bnds(P, i, GLP_FX, 0, 0);
+	for (int j = 1; j <= p->ncols; j++) {
+		glp_set_col_bnds(P, j, GLP_FR, 0, 0);
+		glp_set_obj_coef(P, j, 0);
+	}
+	glp_set_obj_dir(P, GLP_MIN);
+	glp_std_basis(P);
+}
+
 void lp_set_maximize(struct lp *p, int maximize)
 {
 	p->held = 0;

@@ -1,11 +1,14 @@
 /*
  * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
  *
- * Six GLPK problems per wall and thread, one per LP role.  Each sample
- * writes what its contact points change (the moment coefficients of the
- * normal-force columns and of the opening-rate rows) into fresh problems
- * (into the same ones for the `previous` start) and starts every role
- * from the basis SLIPWALL_LP_START names (set_points); within a sample
+ * Six GLPK problems per wall and thread, one per LP role, built once
+ * per workspace.  Each sample writes them again at its contact points
+ * (refill: everything, in the order they were first written, so that
+ * GLPK holds what fresh problems would; the `previous` start rewrites
+ * only what the points change, the moment coefficients of the
+ * normal-force columns and of the opening-rate rows, and keeps the
+ * bases) and starts every role from the basis SLIPWALL_LP_START names
+ * (set_points); within a sample
  * only bounds change between two solves of a role, so each is a warm
  * start (presolve off).  Wherever an LP's optimum is not unique, the
  * sample takes the optimal solution with the least weighted sum of its
@@ -311,16 +314,13 @@ static void build_slp(struct sample_ws *ws, struct lp *P)
 	}
 }
 
-static void build(struct sample_ws *ws)
+/* Everything the six problems hold, at the current contact points, in
+ * one fixed order (refill() relies on it). */
+static void write_problems(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	for (int p = AMAX; p <= AMIN; p++) {
-		ws->lp[p] = lp_new(R, 4 * m + 1);
+	for (int p = AMAX; p <= AMIN; p++)
 		build_assoc(ws, ws->lp[p]);
-	}
-	ws->lp[LP1] = lp_new(R, 3 * m + 1);
-	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
-	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
 	build_lp1(ws, ws->lp[LP1]);
 	build_slp(ws, ws->lp[LP2]);
 	for (int j = 0; j < 3 * m; j++)
@@ -372,6 +372,17 @@ static void build(struct sample_ws *ws)
 	}
 	lp_set_maximize(ws->lp[KIN], 0);
 	put_kin_objective(ws);
+}
+
+static void build(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	for (int p = AMAX; p <= AMIN; p++)
+		ws->lp[p] = lp_new(R, 4 * m + 1);
+	ws->lp[LP1] = lp_new(R, 3 * m + 1);
+	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
+	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
+	write_problems(ws);
 }
 
 static void set_points(struct sample_ws *ws, const double *xi);
@@ -484,6 +495,28 @@ static void rebuild(struct sample_ws *ws)
 	for (int p = 0; p < ROLES; p++)
 		lp_free(ws->lp[p]);
 	build(ws);
+}
+
+/* The same problems, written again at the current contact points: the
+ * problems are built once per workspace (thread and wall).  lp_clear()
+ * takes each back to what lp_new() left and write_problems() writes
+ * every column and row in the order build() did, so GLPK holds what
+ * fresh problems would, to the order of its row lists, and a sample
+ * gives the same bits whatever the thread solved before (the CSV is
+ * byte-identical to that of fresh problems; tests/cli/run.sh checks
+ * thread counts).  Writing only the point-dependent columns instead
+ * changed the last digits: GLPK's row lists then keep the order of
+ * past writes. */
+static void refill(struct sample_ws *ws)
+{
+	for (int p = 0; p < ROLES; p++)
+		if (!lp_alive(ws->lp[p])) {
+			rebuild(ws);
+			return;
+		}
+	for (int p = 0; p < ROLES; p++)
+		lp_clear(ws->lp[p]);
+	write_problems(ws);
 }
 
 
@@ -686,12 +719,13 @@ static enum sample_start role_start(const struct sample_ws *ws, int p)
  * the wall alone, so that the CSV is byte-identical whatever the thread
  * count, which `previous` (the basis the thread's last sample left)
  * cannot promise to the last bit.  For the same reason every start but
- * `previous` builds fresh problems at its points: GLPK's storage keeps a
- * history that shows in the last digits of a solution.  (Measured:
- * rewriting the point-dependent columns of the same problems instead
- * changed sample 7 of the demo wall, seed 3, between 1 and 2 threads:
- * lambda_max in the 9th digit, 19 SLP iterations or 30.  It costs about
- * 3 % of a sample of Ferris & Tin-Loi wall 1.) */
+ * `previous` writes the whole problems again (refill), not only the
+ * point-dependent columns: GLPK's row lists keep the order of past
+ * writes, which shows in the last digits of a solution.  (Measured:
+ * rewriting only the point-dependent columns changed sample 7 of the
+ * demo wall, seed 3, between 1 and 2 threads: lambda_max in the 9th
+ * digit, 19 SLP iterations or 30.  refill gives the CSV of fresh
+ * problems byte for byte.) */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
 	statics_set_points(&ws->st, xi);
@@ -701,7 +735,7 @@ static void set_points(struct sample_ws *ws, const double *xi)
 			put_column(ws, j);
 		put_kin_objective(ws);
 	} else {
-		rebuild(ws);
+		refill(ws);
 	}
 	put_lp2_objective(ws);
 	int support = -1;	/* support_basis's verdict, once computed */
