@@ -77,10 +77,10 @@
 #define SLP_MEMORY 4
 /* ... and only once the residual max |N - c| is below this (scaled
  * units): earlier, the pieces still change along the way, and a step
- * that crosses them may reach another fixed point (measured on the demo
- * wall: 21 of 1,000 samples ended elsewhere without this bound, 2 with
- * it) */
-#define SLP_ACCEL_FROM 1e-3
+ * that crosses them may reach another fixed point than the plain
+ * iteration's (the demo wall, seed 1, 1,000 samples: 21 samples
+ * without any bound, 9 at 1e-3, 5 at 2e-4; docs/method.md) */
+#define SLP_ACCEL_FROM 2e-4
 /* Anderson's steps of one sample at most; then the plain iteration
  * again from the start (a sample of the demo wall cycled for 1,000
  * iterations between accelerated and plain steps where the plain
