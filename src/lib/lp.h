@@ -38,13 +38,11 @@ struct lp *lp_new(int nrows, int ncols);
 void lp_free(struct lp *p);
 /* Is the problem usable (not dead after LP_ERROR or LP_STOPPED)? */
 int lp_alive(const struct lp *p);
-/* Back to what lp_new() left: every row fixed at 0, every column free,
- * objective 0 and minimised, the standard basis and no factorization;
- * the matrix stays.  A caller that then writes every column and row
- * again, in the order it first wrote them, holds what a fresh problem
- * would (GLPK's row lists are rebuilt in the same order), so a solve
- * gives the same bits as on a fresh problem (src/lib/sample.c,
- * refill). */
+/* Back to what lp_new() left, the matrix kept: every row fixed at 0,
+ * every column free, objective 0 and minimised, the standard basis and
+ * no factorization (one reached by updates differs in the last bits
+ * from one computed afresh).  For a caller that writes the problem
+ * again and wants no trace of past solves (src/lib/sample.c, refill). */
 void lp_clear(struct lp *p);
 
 void lp_set_maximize(struct lp *p, int maximize);

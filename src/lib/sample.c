@@ -2,13 +2,11 @@
  * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
  *
  * Six GLPK problems per wall and thread, one per LP role, built once
- * per workspace.  Each sample writes them again at its contact points
- * (refill: everything, in the order they were first written, so that
- * GLPK holds what fresh problems would; the `previous` start rewrites
- * only what the points change, the moment coefficients of the
- * normal-force columns and of the opening-rate rows, and keeps the
- * bases) and starts every role from the basis SLIPWALL_LP_START names
- * (set_points); within a sample
+ * per workspace.  Each sample rewrites what its contact points change
+ * (the moment coefficients of the normal-force columns and of the
+ * opening-rate rows) and resets every bound and objective (refill; the
+ * `previous` start keeps the bases) and starts every role from the
+ * basis SLIPWALL_LP_START names (set_points); within a sample
  * only bounds change between two solves of a role, so each is a warm
  * start (presolve off).  Wherever an LP's optimum is not unique, the
  * sample takes the optimal solution with the least weighted sum of its
@@ -297,7 +295,7 @@ static void build_lp1(struct sample_ws *ws, struct lp *P)
 		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
 }
 
-static void build_slp(struct sample_ws *ws, struct lp *P)
+static void build_slp(struct sample_ws *ws, struct lp *P, int all)
 {
 	int m = ws->m, R = ws->R;
 	for (int i = 0; i < R; i++)
@@ -307,24 +305,30 @@ static void build_slp(struct sample_ws *ws, struct lp *P)
 	for (int k = 0; k < m; k++) {
 		int row = R + k;
 		double one = 1, mone = -1;
-		lp_set_col(P, COL_P(ws, k), 1, &row, &mone);
-		lp_set_col(P, COL_Q(ws, k), 1, &row, &one);
+		if (all) {
+			lp_set_col(P, COL_P(ws, k), 1, &row, &mone);
+			lp_set_col(P, COL_Q(ws, k), 1, &row, &one);
+		}
 		lp_set_col_bounds(P, COL_P(ws, k), 0, HUGE_VAL);
 		lp_set_col_bounds(P, COL_Q(ws, k), 0, HUGE_VAL);
 	}
 }
 
-/* Everything the six problems hold, at the current contact points, in
- * one fixed order (refill() relies on it). */
-static void write_problems(struct sample_ws *ws)
+/* What the six problems hold at the current contact points: every
+ * bound, objective and sense, and of the matrix everything (all) or only
+ * what the points change (the normal-force columns and the opening-rate
+ * rows: the shears' moments do not depend on where they act), always in
+ * the same order (refill() relies on it). */
+static void write_problems(struct sample_ws *ws, int all)
 {
 	int m = ws->m, R = ws->R;
 	for (int p = AMAX; p <= AMIN; p++)
 		build_assoc(ws, ws->lp[p]);
 	build_lp1(ws, ws->lp[LP1]);
-	build_slp(ws, ws->lp[LP2]);
+	build_slp(ws, ws->lp[LP2], all);
 	for (int j = 0; j < 3 * m; j++)
-		put_column(ws, j);
+		if (all || j % 3 != 2)
+			put_column(ws, j);
 
 	/* lambda: the live load */
 	int nl = 0;
@@ -333,7 +337,7 @@ static void write_problems(struct sample_ws *ws)
 			ws->ind[nl] = i;
 			ws->val[nl++] = ws->st.fL[i];
 		}
-	for (int p = AMAX; p <= LP2; p++)
+	for (int p = AMAX; p <= LP2 && all; p++)
 		lp_set_col(ws->lp[p], p <= AMIN ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws),
 			   nl, ws->ind, ws->val);
 	/* the objectives never change: max lambda (free) for LP-max and
@@ -358,7 +362,8 @@ static void write_problems(struct sample_ws *ws)
 	lp_set_maximize(ws->lp[LP2], 0);
 
 	/* kin normalisation row: f_L . v = 1 */
-	lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
+	if (all)
+		lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
 	lp_set_row_bounds(ws->lp[KIN], 3 * m, 1, 1);
 	/* kin: velocities free, slips >= 0, slip rows = 0 */
 	for (int i = 0; i < R; i++)
@@ -382,7 +387,7 @@ static void build(struct sample_ws *ws)
 	ws->lp[LP1] = lp_new(R, 3 * m + 1);
 	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
 	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
-	write_problems(ws);
+	write_problems(ws, 1);
 }
 
 static void set_points(struct sample_ws *ws, const double *xi);
@@ -499,14 +504,15 @@ static void rebuild(struct sample_ws *ws)
 
 /* The same problems, written again at the current contact points: the
  * problems are built once per workspace (thread and wall).  lp_clear()
- * takes each back to what lp_new() left and write_problems() writes
- * every column and row in the order build() did, so GLPK holds what
- * fresh problems would, to the order of its row lists, and a sample
- * gives the same bits whatever the thread solved before (the CSV is
- * byte-identical to that of fresh problems; tests/cli/run.sh checks
- * thread counts).  Writing only the point-dependent columns instead
- * changed the last digits: GLPK's row lists then keep the order of
- * past writes. */
+ * takes each back to what lp_new() left, the matrix kept (bounds,
+ * objective, the standard basis, no factorization), and
+ * write_problems() writes every bound and objective again and of the
+ * matrix only what the points change.  GLPK's row lists put the newest
+ * writes first, so after the first refill (the workspace's canonical
+ * sample) they are in the same order at every sample: a sample gives
+ * the same bits whatever the thread solved before (test_sample solves
+ * samples in order and in reverse order on two workspaces; the CSV is
+ * byte-identical whatever the thread count, tests/cli/run.sh). */
 static void refill(struct sample_ws *ws)
 {
 	for (int p = 0; p < ROLES; p++)
@@ -516,7 +522,7 @@ static void refill(struct sample_ws *ws)
 		}
 	for (int p = 0; p < ROLES; p++)
 		lp_clear(ws->lp[p]);
-	write_problems(ws);
+	write_problems(ws, 0);
 }
 
 
@@ -719,13 +725,9 @@ static enum sample_start role_start(const struct sample_ws *ws, int p)
  * the wall alone, so that the CSV is byte-identical whatever the thread
  * count, which `previous` (the basis the thread's last sample left)
  * cannot promise to the last bit.  For the same reason every start but
- * `previous` writes the whole problems again (refill), not only the
- * point-dependent columns: GLPK's row lists keep the order of past
- * writes, which shows in the last digits of a solution.  (Measured:
- * rewriting only the point-dependent columns changed sample 7 of the
- * demo wall, seed 3, between 1 and 2 threads: lambda_max in the 9th
- * digit, 19 SLP iterations or 30.  refill gives the CSV of fresh
- * problems byte for byte.) */
+ * `previous` takes the problems back to a fresh state before it writes
+ * the points (refill: no basis, no factorization kept from the last
+ * sample). */
 static void set_points(struct sample_ws *ws, const double *xi)
 {
 	statics_set_points(&ws->st, xi);

@@ -243,10 +243,9 @@ static int same_bits(const struct sample_result *a,
  * positions give bit-identical results whatever the workspace solved
  * before, and on a fresh workspace (so thread counts and replays cannot
  * change results).  The problems are built once per workspace and
- * written again at every sample (sample.c, refill): n samples solved in
- * order by one workspace and in reverse order by another must agree to
- * the last bit.  (Rewriting only the point-dependent columns changed
- * sample 7 of the demo wall, seed 3, with the samples before it.) */
+ * what the points change is written again at every sample (sample.c,
+ * refill): n samples solved in order by one workspace and in reverse
+ * order by another must agree to the last bit. */
 static void history_free_wall(const char *path, unsigned long seed, int n)
 {
 	struct wall *w = tw_load_file(path);
