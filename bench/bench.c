@@ -92,12 +92,22 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	return 0;
 }
 
-/* --roles: the cost of each LP role per sample, one thread. */
+/* --roles: the workspace's set-up (its canonical sample) by role, then
+ * the cost of each LP role per sample, one thread. */
 static int bench_roles(const struct wall *w, long n, unsigned long seed)
 {
+	double t_setup = now();
 	struct sample_ws *ws = sample_ws_new(w);
+	t_setup = now() - t_setup;
 	struct sample_lp_stats before[SAMPLE_ROLE_COUNT], after[SAMPLE_ROLE_COUNT];
 	sample_ws_stats(ws, before);
+	printf("set-up (the canonical sample): %.3f s\n", t_setup);
+	printf("%-14s %9s %10s %10s\n", "role", "LPs", "iters/LP", "s");
+	for (int k = 0; k < SAMPLE_ROLE_COUNT; k++)
+		if (before[k].lps > 0)
+			printf("%-14s %9ld %10.1f %10.3f\n", sample_role_name(k),
+			       before[k].lps, (double)before[k].iterations /
+			       (double)before[k].lps, before[k].seconds);
 	struct sample_opts o;
 	sample_opts_default(&o);
 	struct sample_result r;
