@@ -295,7 +295,7 @@ static void build_lp1(struct sample_ws *ws, struct lp *P)
 		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
 }
 
-static void build_slp(struct sample_ws *ws, struct lp *P, int all)
+static void build_slp(struct sample_ws *ws, struct lp *P)
 {
 	int m = ws->m, R = ws->R;
 	for (int i = 0; i < R; i++)
@@ -303,43 +303,53 @@ static void build_slp(struct sample_ws *ws, struct lp *P, int all)
 	for (int j = 0; j < 3 * m; j++)
 		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
 	for (int k = 0; k < m; k++) {
-		int row = R + k;
-		double one = 1, mone = -1;
-		if (all) {
-			lp_set_col(P, COL_P(ws, k), 1, &row, &mone);
-			lp_set_col(P, COL_Q(ws, k), 1, &row, &one);
-		}
 		lp_set_col_bounds(P, COL_P(ws, k), 0, HUGE_VAL);
 		lp_set_col_bounds(P, COL_Q(ws, k), 0, HUGE_VAL);
 	}
 }
 
-/* What the six problems hold at the current contact points: every
- * bound, objective and sense, and of the matrix everything (all) or only
- * what the points change (the normal-force columns and the opening-rate
- * rows: the shears' moments do not depend on where they act), always in
- * the same order (refill() relies on it). */
-static void write_problems(struct sample_ws *ws, int all)
+/* The part of the matrix that no contact point changes, written once
+ * when the problems are built: LP2's closeness columns p and q, the
+ * shears' columns and slip rows (a shear's moment does not depend on
+ * where along the joint it acts), the live load's column and the
+ * kinematic normalisation row f_L . v = 1. */
+static void write_fixed(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
-	for (int p = AMAX; p <= AMIN; p++)
-		build_assoc(ws, ws->lp[p]);
-	build_lp1(ws, ws->lp[LP1]);
-	build_slp(ws, ws->lp[LP2], all);
-	for (int j = 0; j < 3 * m; j++)
-		if (all || j % 3 != 2)
-			put_column(ws, j);
-
-	/* lambda: the live load */
+	for (int k = 0; k < m; k++) {
+		int row = R + k;
+		double one = 1, mone = -1;
+		lp_set_col(ws->lp[LP2], COL_P(ws, k), 1, &row, &mone);
+		lp_set_col(ws->lp[LP2], COL_Q(ws, k), 1, &row, &one);
+	}
+	for (int k = 0; k < m; k++)
+		put_column(ws, 3 * k + 2);
 	int nl = 0;
 	for (int i = 0; i < R; i++)
 		if (ws->st.fL[i] != 0) {
 			ws->ind[nl] = i;
 			ws->val[nl++] = ws->st.fL[i];
 		}
-	for (int p = AMAX; p <= LP2 && all; p++)
+	for (int p = AMAX; p <= LP2; p++)
 		lp_set_col(ws->lp[p], p <= AMIN ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws),
 			   nl, ws->ind, ws->val);
+	lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
+}
+
+/* Everything else, at the current contact points: every bound,
+ * objective and sense, the normal-force columns and the opening-rate
+ * rows (refill() writes them at every sample). */
+static void write_points(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	for (int p = AMAX; p <= AMIN; p++)
+		build_assoc(ws, ws->lp[p]);
+	build_lp1(ws, ws->lp[LP1]);
+	build_slp(ws, ws->lp[LP2]);
+	for (int j = 0; j < 3 * m; j++)
+		if (j % 3 != 2)
+			put_column(ws, j);
+
 	/* the objectives never change: max lambda (free) for LP-max and
 	 * LP1, min lambda >= 0 for LP-min, min sum (p + q) for LP2 */
 	lp_set_col_bounds(ws->lp[AMAX], ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
@@ -361,11 +371,9 @@ static void write_problems(struct sample_ws *ws, int all)
 	}
 	lp_set_maximize(ws->lp[LP2], 0);
 
-	/* kin normalisation row: f_L . v = 1 */
-	if (all)
-		lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
+	/* kin: the normalisation row = 1, velocities free, slips >= 0,
+	 * slip rows = 0 */
 	lp_set_row_bounds(ws->lp[KIN], 3 * m, 1, 1);
-	/* kin: velocities free, slips >= 0, slip rows = 0 */
 	for (int i = 0; i < R; i++)
 		lp_set_col_bounds(ws->lp[KIN], i, -HUGE_VAL, HUGE_VAL);
 	for (int k = 0; k < m; k++) {
@@ -379,6 +387,11 @@ static void write_problems(struct sample_ws *ws, int all)
 	put_kin_objective(ws);
 }
 
+/* The six problems, new.  The fixed part of the matrix is written first
+ * and the points' part after it, as refill() will write it again: GLPK
+ * puts the newest writes first in its row lists, so a problem rebuilt
+ * after a GLPK error holds its matrix in the order of every other
+ * sample's. */
 static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
@@ -387,7 +400,8 @@ static void build(struct sample_ws *ws)
 	ws->lp[LP1] = lp_new(R, 3 * m + 1);
 	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
 	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
-	write_problems(ws, 1);
+	write_fixed(ws);
+	write_points(ws);
 }
 
 static void set_points(struct sample_ws *ws, const double *xi);
@@ -505,14 +519,14 @@ static void rebuild(struct sample_ws *ws)
 /* The same problems, written again at the current contact points: the
  * problems are built once per workspace (thread and wall).  lp_clear()
  * takes each back to what lp_new() left, the matrix kept (bounds,
- * objective, the standard basis, no factorization), and
- * write_problems() writes every bound and objective again and of the
- * matrix only what the points change.  GLPK's row lists put the newest
- * writes first, so after the first refill (the workspace's canonical
- * sample) they are in the same order at every sample: a sample gives
- * the same bits whatever the thread solved before (test_sample solves
- * samples in order and in reverse order on two workspaces; the CSV is
- * byte-identical whatever the thread count, tests/cli/run.sh). */
+ * objective, the standard basis, no factorization), and write_points()
+ * writes every bound and objective again and of the matrix only what
+ * the points change.  GLPK's row lists put the newest writes first, so
+ * they are in the same order at every sample, and as build() left them:
+ * a sample gives the same bits whatever the thread solved before
+ * (test_sample solves samples in order and in reverse order on two
+ * workspaces; the CSV is byte-identical whatever the thread count,
+ * tests/cli/run.sh). */
 static void refill(struct sample_ws *ws)
 {
 	for (int p = 0; p < ROLES; p++)
@@ -522,7 +536,7 @@ static void refill(struct sample_ws *ws)
 		}
 	for (int p = 0; p < ROLES; p++)
 		lp_clear(ws->lp[p]);
-	write_problems(ws, 0);
+	write_points(ws);
 }
 
 
