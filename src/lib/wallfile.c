@@ -1285,17 +1285,47 @@ enum sw_status wallfile_load_edited(const char *path,
 
 /* ----------------------------------------------------------------- saving */
 
-/* A YAML double-quoted string. */
+/* The code point at s (UTF-8) in *cp; its length, or 1 with *cp = -1
+ * for a byte that does not start a valid sequence. */
+static int save_utf8(const unsigned char *s, long *cp)
+{
+	int n = s[0] < 0x80 ? 1 : (s[0] & 0xe0) == 0xc0 ? 2 :
+		(s[0] & 0xf0) == 0xe0 ? 3 : (s[0] & 0xf8) == 0xf0 ? 4 : 0;
+	static const long least[] = {0, 0, 0x80, 0x800, 0x10000};
+	long c = n == 1 ? s[0] : n ? s[0] & (0x7f >> n) : -1;
+	for (int i = 1; i < n && c >= 0; i++)
+		c = (s[i] & 0xc0) == 0x80 ? c << 6 | (s[i] & 0x3f) : -1;
+	if (!n || c < least[n] || c > 0x10ffff || (c >= 0xd800 && c <= 0xdfff))
+		c = -1;
+	*cp = c;
+	return c < 0 ? 1 : n;
+}
+
+/* A YAML double-quoted string that reads back to the same bytes.  YAML
+ * folds line breaks in a quoted scalar to spaces and refuses characters
+ * that are not printable, so everything but printable characters that
+ * are no line break is escaped: C0 (tab and newline too), DEL, C1
+ * (U+0085, NEL, is a YAML line break), U+2028 and U+2029 (line breaks),
+ * the byte order mark U+FEFF, U+FFFE and U+FFFF.  A byte that is not
+ * UTF-8 (no wall file can hold one) becomes U+FFFD. */
 static void save_string(FILE *f, const char *s)
 {
 	fputc('"', f);
-	for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-		if (*p == '"' || *p == '\\')
-			fprintf(f, "\\%c", *p);
-		else if (*p < 0x20 || *p == 0x7f)
-			fprintf(f, "\\x%02x", *p);
+	for (const unsigned char *p = (const unsigned char *)s; *p;) {
+		long c;
+		int n = save_utf8(p, &c);
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", (int)c);
+		else if (c < 0)
+			fputs("\\uFFFD", f);
+		else if (c < 0x20 || (c >= 0x7f && c <= 0x9f))
+			fprintf(f, "\\x%02lx", c);
+		else if (c == 0x2028 || c == 0x2029 || c == 0xfeff ||
+			 c == 0xfffe || c == 0xffff)
+			fprintf(f, "\\u%04lX", c);
 		else
-			fputc(*p, f);
+			fwrite(p, 1, (size_t)n, f);
+		p += n;
 	}
 	fputc('"', f);
 }
