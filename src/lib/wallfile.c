@@ -875,6 +875,9 @@ static int read_wall(struct reader *r, yaml_node_t *root)
  * as editing the file would.  Nodes are referred to by id, never by
  * pointer: adding a node may move the node array. */
 
+static int reader_load(struct reader *r, const char *buf, size_t len,
+		       yaml_document_t *doc);
+
 static void edit_mark(struct reader *r, int id, int k)
 {
 	yaml_node_t *n = yaml_document_get_node(&r->doc, id);
@@ -883,30 +886,38 @@ static void edit_mark(struct reader *r, int id, int k)
 }
 
 /* Copy node id of src (the edit's value) into r->doc; the new id, or 0
- * (out of memory, or nested too deep). */
-static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
-		     int depth)
+ * (out of memory, or nested too deep).  Each node of src is copied once
+ * (copied[id - 1] remembers where to): an alias stays a shared
+ * reference, as in a file, so that a value of a few hundred bytes with
+ * nested aliases cannot expand to gigabytes here (issue 23); the walk's
+ * node count then bounds the work, as for a file. */
+static int edit_copy(struct reader *r, yaml_document_t *src, int *copied,
+		     int id, int k, int depth)
 {
 	yaml_node_t *n = yaml_document_get_node(src, id);
 	int out = 0;
 	if (!n || depth > WALLFILE_MAX_DEPTH)
 		return 0;
+	if (copied[id - 1])
+		return copied[id - 1];
 	switch (n->type) {
 	case YAML_SCALAR_NODE:
 		out = yaml_document_add_scalar(&r->doc, NULL,
 					       n->data.scalar.value,
 					       (int)n->data.scalar.length,
 					       n->data.scalar.style);
+		copied[id - 1] = out;
 		break;
 	case YAML_SEQUENCE_NODE: {
 		int nitems = (int)(n->data.sequence.items.top -
 				   n->data.sequence.items.start);
-		out = yaml_document_add_sequence(&r->doc, NULL,
-						 YAML_FLOW_SEQUENCE_STYLE);
+		out = copied[id - 1] = yaml_document_add_sequence(
+			&r->doc, NULL, YAML_FLOW_SEQUENCE_STYLE);
 		for (int i = 0; out && i < nitems; i++) {
 			n = yaml_document_get_node(src, id);
-			int c = edit_copy(r, src, n->data.sequence.items.start[i],
-					  k, depth + 1);
+			int c = edit_copy(r, src, copied,
+					  n->data.sequence.items.start[i], k,
+					  depth + 1);
 			if (!c || !yaml_document_append_sequence_item(&r->doc,
 								      out, c))
 				return 0;
@@ -916,13 +927,14 @@ static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
 	case YAML_MAPPING_NODE: {
 		int npairs = (int)(n->data.mapping.pairs.top -
 				   n->data.mapping.pairs.start);
-		out = yaml_document_add_mapping(&r->doc, NULL,
-						YAML_FLOW_MAPPING_STYLE);
+		out = copied[id - 1] = yaml_document_add_mapping(
+			&r->doc, NULL, YAML_FLOW_MAPPING_STYLE);
 		for (int i = 0; out && i < npairs; i++) {
 			n = yaml_document_get_node(src, id);
 			yaml_node_pair_t p = n->data.mapping.pairs.start[i];
-			int kc = edit_copy(r, src, p.key, k, depth + 1);
-			int vc = kc ? edit_copy(r, src, p.value, k, depth + 1) : 0;
+			int kc = edit_copy(r, src, copied, p.key, k, depth + 1);
+			int vc = kc ? edit_copy(r, src, copied, p.value, k,
+						depth + 1) : 0;
 			if (!vc || !yaml_document_append_mapping_pair(&r->doc,
 								      out, kc, vc))
 				return 0;
@@ -937,7 +949,18 @@ static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
 	return out;
 }
 
-/* What one component of an edit's path did (edit_step_*). */
+/* A copy of the whole value val into r->doc (edit_copy). */
+static int edit_copy_value(struct reader *r, yaml_document_t *val, int k)
+{
+	size_t n = (size_t)(val->nodes.top - val->nodes.start);
+	int *copied = calloc(n + 1, sizeof *copied);
+	if (!copied)
+		return 0;
+	int id = edit_copy(r, val, copied, 1, k, 0);
+	free(copied);
+	return id;
+}
+
 enum edit_step { STEP_ON, STEP_DONE, STEP_FAIL, STEP_OOM };
 
 /* The component comp of edit k in the mapping cur: put the value val
@@ -956,7 +979,7 @@ static enum edit_step edit_step_mapping(struct reader *r, int k,
 			pair = q;
 	}
 	if (last) {
-		int v = edit_copy(r, val, 1, k, 0);
+		int v = edit_copy_value(r, val, k);
 		if (!v)
 			return STEP_OOM;
 		n = yaml_document_get_node(&r->doc, cur);
@@ -1020,7 +1043,7 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
 		return STEP_FAIL;
 	}
 	if (last) {
-		int v = edit_copy(r, val, 1, k, 0);
+		int v = edit_copy_value(r, val, k);
 		if (!v)
 			return STEP_OOM;
 		n = yaml_document_get_node(&r->doc, cur);
@@ -1036,7 +1059,6 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
 static int edit_apply(struct reader *r, int k)
 {
 	const struct wallfile_edit *e = &r->edits[k];
-	yaml_parser_t p;
 	yaml_document_t val;
 	char key[256];
 	int rc = -1;
@@ -1046,16 +1068,21 @@ static int edit_apply(struct reader *r, int k)
 			e->label);
 		return -1;
 	}
-	yaml_parser_initialize(&p);
-	yaml_parser_set_input_string(&p, (const unsigned char *)e->value,
-				     strlen(e->value));
-	if (!yaml_parser_load(&p, &val)) {
-		sw_fail(r->err, SW_EINPUT, "%s: not a YAML value: %s",
-			e->label, p.problem ? p.problem : "syntax error");
-		yaml_parser_delete(&p);
+	/* the value goes through the file's limits, its messages read
+	 * "LABEL:LINE:COLUMN: ..." (LINE and COLUMN in the value) */
+	struct reader vr;
+	char verr[SW_ERRLEN];
+	memset(&vr, 0, sizeof vr);
+	vr.name = "";
+	vr.err = verr;
+	if (reader_load(&vr, e->value, strlen(e->value), &val)) {
+		/* verr is ":LINE:COLUMN: what"; the label may be long */
+		int cut = strlen(e->label) > 80;
+		sw_fail(r->err, SW_EINPUT, "%.*s%s: not a YAML value: %s",
+			cut ? 77 : 80, e->label, cut ? "..." : "",
+			verr + (verr[0] == ':'));
 		return -1;
 	}
-	yaml_parser_delete(&p);
 	if (!yaml_document_get_root_node(&val)) {
 		sw_fail(r->err, SW_EINPUT, "%s: no value", e->label);
 		goto out;
@@ -1141,14 +1168,58 @@ static int wallfile_prescan(struct reader *r, const char *buf, size_t len)
 	return rc;
 }
 
+/* The one way this program parses YAML (a wall file, a --set value):
+ * the size, depth and event limits of wallfile_prescan, then the
+ * document into *doc (which the caller deletes), and no second
+ * document.  -1 and r->err on any error, *doc then empty. */
+static int reader_load(struct reader *r, const char *buf, size_t len,
+		       yaml_document_t *doc)
+{
+	yaml_parser_t p;
+	yaml_document_t extra;
+	int rc = 0;
+
+	memset(doc, 0, sizeof *doc);
+	if (len > WALLFILE_MAX_BYTES) {
+		sw_fail(r->err, SW_EINPUT, "%s: larger than %u bytes",
+			r->name, WALLFILE_MAX_BYTES);
+		return -1;
+	}
+	if (wallfile_prescan(r, buf, len))
+		return -1;
+	yaml_parser_initialize(&p);
+	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
+	if (!yaml_parser_load(&p, doc)) {
+		reader_yaml_error(r, &p, buf, len);
+		yaml_parser_delete(&p);
+		memset(doc, 0, sizeof *doc);
+		return -1;
+	}
+	/* a second document is a mistake, not something to ignore */
+	if (!yaml_parser_load(&p, &extra)) {
+		rc = reader_yaml_error(r, &p, buf, len);
+	} else {
+		yaml_node_t *root2 = yaml_document_get_root_node(&extra);
+		if (root2)
+			rc = reader_fail_at(r, root2->start_mark,
+					    "a wall file holds one YAML "
+					    "document; here starts another");
+		yaml_document_delete(&extra);
+	}
+	yaml_parser_delete(&p);
+	if (rc) {
+		yaml_document_delete(doc);
+		memset(doc, 0, sizeof *doc);
+	}
+	return rc;
+}
+
 static enum sw_status parse_edited(const char *buf, size_t len,
 				   const char *name,
 				   const struct wallfile_edit *edits,
 				   int nedits, struct wall **out, char *err)
 {
 	struct reader r;
-	yaml_parser_t p;
-	yaml_document_t extra;
 	int rc = 0;
 
 	*out = NULL;
@@ -1159,33 +1230,14 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 		return sw_fail(err, SW_EINPUT,
 			       "%s: file is larger than %u bytes", r.name,
 			       WALLFILE_MAX_BYTES);
-	if (wallfile_prescan(&r, buf, len))
+	if (reader_load(&r, buf, len, &r.doc))
 		return SW_EINPUT;
-
-	yaml_parser_initialize(&p);
-	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
-	if (!yaml_parser_load(&p, &r.doc)) {
-		reader_yaml_error(&r, &p, buf, len);
-		yaml_parser_delete(&p);
-		return SW_EINPUT;
-	}
 	yaml_node_t *root = yaml_document_get_root_node(&r.doc);
 	if (!root) {
 		sw_fail(err, SW_EINPUT, "%s:1:1: the file is empty", r.name);
 		rc = -1;
 		goto out;
 	}
-	/* a second document is a mistake, not something to ignore */
-	if (!yaml_parser_load(&p, &extra)) {
-		rc = reader_yaml_error(&r, &p, buf, len);
-		goto out;
-	}
-	yaml_node_t *root2 = yaml_document_get_root_node(&extra);
-	if (root2)
-		rc = FAIL(&r, root2, "a wall file holds one YAML document; here starts another");
-	yaml_document_delete(&extra);
-	if (rc)
-		goto out;
 
 	r.edits = edits;
 	r.nedits = nedits;
@@ -1213,7 +1265,6 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 	}
 out:
 	yaml_document_delete(&r.doc);
-	yaml_parser_delete(&p);
 	if (rc)
 		return SW_EINPUT;
 	*out = r.w;
