@@ -50,12 +50,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <yaml.h>
 
 #include "slipwall/layout.h"
 #include "slipwall/wallfile.h"
+#include "wallkeep.h"
 
 #define WALLFILE_MAX_DEPTH 64
 
@@ -1214,6 +1217,16 @@ static int reader_load(struct reader *r, const char *buf, size_t len,
 	return rc;
 }
 
+int wallfile_yaml_load(const char *buf, size_t len, const char *name,
+		       yaml_document_t *doc, char *err)
+{
+	struct reader r;
+	memset(&r, 0, sizeof r);
+	r.name = name;
+	r.err = err;
+	return reader_load(&r, buf, len, doc);
+}
+
 static enum sw_status parse_edited(const char *buf, size_t len,
 				   const char *name,
 				   const struct wallfile_edit *edits,
@@ -1585,13 +1598,127 @@ static void save_wall(FILE *f, const struct wall *w)
 	wall_free(g);
 }
 
+/* w as save_wall writes it, in memory (malloc'd, NUL-terminated). */
+static char *save_text(const struct wall *w, size_t *len)
+{
+	char *buf = NULL;
+	FILE *f = open_memstream(&buf, len);
+	if (!f)
+		return NULL;
+	save_wall(f, w);
+	if (fclose(f) != 0) {
+		free(buf);
+		return NULL;
+	}
+	return buf;
+}
+
+/* The wall file w was read from, when it is a regular file of at most
+ * WALLFILE_MAX_BYTES (O_NONBLOCK: a FIFO there cannot block the save);
+ * malloc'd, NUL-terminated, or NULL. */
+static char *save_source(const char *path, size_t *len)
+{
+	int fd = path ? open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY) : -1;
+	struct stat st;
+	char *buf = NULL;
+	if (fd < 0)
+		return NULL;
+	if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+	    (unsigned long long)st.st_size <= WALLFILE_MAX_BYTES) {
+		size_t n = (size_t)st.st_size, got = 0;
+		buf = sw_xmalloc(n + 1);
+		while (got < n) {
+			ssize_t r = read(fd, buf + got, n - got);
+			if (r <= 0)
+				break;
+			got += (size_t)r;
+		}
+		buf[got] = 0;
+		*len = got;
+	}
+	close(fd);
+	return buf;
+}
+
+/* Does text load to the model that save_wall writes as want? */
+static int save_loads_as(const char *text, size_t len, const char *want)
+{
+	char err[SW_ERRLEN];
+	struct wall *w;
+	size_t n;
+	if (wallfile_parse(text, len, "<saved>", &w, err) != SW_OK)
+		return 0;
+	char *got = save_text(w, &n);
+	int same = got && !strcmp(got, want);
+	free(got);
+	wall_free(w);
+	return same;
+}
+
+/* The text to save for w, new (save_wall's): the file w was read from
+ * when w is its model, that file with the changed values patched in
+ * place (wallkeep.c) when that loads to w, else new under the file's
+ * top comments.  See docs/wall-format.md, "Saving". */
+static char *save_keeping(const struct wall *w, char *new, size_t *len)
+{
+	size_t olen, xlen;
+	char err[SW_ERRLEN];
+	struct wall *w0;
+	char *orig = save_source(w->path, &olen);
+	if (!orig)
+		return new;
+	if (wallfile_parse(orig, olen, w->path, &w0, err) != SW_OK) {
+		free(orig);
+		return new;
+	}
+	char *old = save_text(w0, &xlen);
+	wall_free(w0);
+	char *out = NULL;
+	if (old && !strcmp(old, new)) {
+		out = orig;		/* nothing changed */
+		*len = olen;
+		orig = NULL;
+	} else if (old) {
+		size_t plen;
+		char *p = wallkeep_patch(orig, olen, old, xlen, new, *len,
+					 &plen);
+		if (p && save_loads_as(p, plen, new)) {
+			out = p;
+			*len = plen;
+		} else {
+			free(p);
+		}
+	}
+	if (!out) {		/* anew, under the file's top comments */
+		size_t h = wallkeep_header(orig, olen);
+		/* which take the place of the writer's own first line */
+		const char *nl = strchr(new, '\n');
+		size_t skip = h && nl ? (size_t)(nl + 1 - new) : 0;
+		out = sw_xmalloc(h + *len - skip + 1);
+		memcpy(out, orig, h);
+		memcpy(out + h, new + skip, *len - skip + 1);
+		*len += h - skip;
+	}
+	free(old);
+	free(orig);
+	free(new);
+	return out;
+}
+
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err)
 {
+	size_t len;
+	char *text = save_text(w, &len);
+	if (!text)
+		return sw_fail(err, SW_EIO, "%s: out of memory", path);
+	text = save_keeping(w, text, &len);
 	struct sw_whole out;
 	enum sw_status st = sw_whole_open(&out, path, err);
-	if (st != SW_OK)
-		return st;
-	save_wall(out.f, w);
-	return sw_whole_close(&out, err);
+	if (st == SW_OK) {
+		fwrite(text, 1, len, out.f);
+		st = sw_whole_close(&out, err);
+	}
+	free(text);
+	return st;
 }
