@@ -39,7 +39,15 @@
  * `blocks:`; any other wall gets every free block as an explicit
  * polygon.  Either way the wall loads again to the same model, blocks in
  * the same order.  Numbers are written with the fewest significant
- * digits (15, 16 or 17) that read back bit for bit.
+ * digits (15, 16 or 17) that read back bit for bit, strings
+ * double-quoted with every character YAML folds or refuses escaped.
+ * Saved over the file the wall was read from, that file's comments and
+ * formatting are kept: wallkeep.c patches the changed values into its
+ * text, and the result is kept only if it loads to the same model.
+ *
+ * Every YAML text the program parses (the file, each --set value) goes
+ * through reader_load, with the limits of steps 1-3 above; a value's
+ * aliases are copied as shared nodes, never expanded (edit_copy).
  */
 #include <ctype.h>
 #include <errno.h>
