@@ -53,6 +53,11 @@ struct wallkeep {
 	int np;
 };
 
+static size_t wallkeep_bom(const char *s, size_t len)
+{
+	return len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3) ? 3 : 0;
+}
+
 static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len)
 {
 	char err[SW_ERRLEN];
@@ -62,7 +67,8 @@ static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len)
 		return -1;
 	t->off = sw_xmalloc(sizeof *t->off * (len + 1));
 	t->n = 0;
-	for (size_t i = 0; i < len; i++)
+	/* libyaml's marks do not count a byte order mark */
+	for (size_t i = wallkeep_bom(s, len); i < len; i++)
 		if (((unsigned char)s[i] & 0xc0) != 0x80)
 			t->off[t->n++] = i;
 	t->off[t->n] = len;
@@ -389,7 +395,7 @@ char *wallkeep_patch(const char *orig, size_t olen, const char *old,
 
 size_t wallkeep_header(const char *text, size_t len)
 {
-	size_t at = 0;
+	size_t at = wallkeep_bom(text, len);
 	while (at < len) {
 		size_t e = at;
 		while (e < len && text[e] != '\n')
