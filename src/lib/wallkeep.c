@@ -17,10 +17,14 @@
  * where new has a flow mapping of equal values (friction: 0.8 against
  * {bed: 0.85, head: 0.85}) becomes the one value.
  *
- * Anything else (a list that grew or shrank, a key that went, a value
- * that new writes over several lines, a block mapping in orig where new
- * has a scalar) is refused: NULL, and wallfile_save writes the whole
- * file anew.  The result is only a candidate: wallfile_save keeps it
+ * A block list one item longer or shorter in new (a block added or
+ * removed) gets or loses that item's line (an item written on one
+ * line), with the prefix ("  - ") of its neighbour.
+ *
+ * Anything else (a list that changed by more than one item, a key that
+ * went, a value that new writes over several lines, a block mapping in
+ * orig where new has a scalar) is refused: NULL, and wallfile_save
+ * writes the whole file anew.  The result is only a candidate: wallfile_save keeps it
  * only when it loads to the changed model.
  */
 #include <stdlib.h>
@@ -104,6 +108,19 @@ static char *one_line(struct wallkeep_text *t, int id)
 	memcpy(s, t->s + a, b - a);
 	s[b - a] = 0;
 	return s;
+}
+
+/* Where a line after the one on which node id of orig ends goes: the
+ * end of that line (*fresh 0: the new text starts with a line break),
+ * or, when the node ends at the start of a line (a block collection
+ * ends there), that place (*fresh 1: the new text ends with one). */
+static size_t after_line(struct wallkeep *k, int id, int *fresh)
+{
+	size_t at = byte_at(&k->o, node(&k->o, id)->end_mark);
+	*fresh = at > 0 && k->o.s[at - 1] == '\n';
+	while (!*fresh && at < k->o.len && k->o.s[at] != '\n')
+		at++;
+	return at;
 }
 
 static int add_patch(struct wallkeep *k, size_t a, size_t b, char *text)
@@ -240,10 +257,8 @@ static int insert(struct wallkeep *k, int o, int key, int value)
 	if (!vt) {		/* kt is the whole section */
 		vt = kt;
 		kt = NULL;
-		size_t at = byte_at(&k->o, node(&k->o, last->value)->end_mark);
-		int at_line_start = at > 0 && k->o.s[at - 1] == '\n';
-		while (!at_line_start && at < k->o.len && k->o.s[at] != '\n')
-			at++;
+		int at_line_start;
+		size_t at = after_line(k, last->value, &at_line_start);
 		size_t need = strlen(vt) + 3;
 		char *s = sw_xmalloc(need);
 		snprintf(s, need, at_line_start ? "%s\n" : "\n%s", vt);
@@ -264,10 +279,8 @@ static int insert(struct wallkeep *k, int o, int key, int value)
 	 * column of the mapping's keys */
 	yaml_node_t *fk = node(&k->o, first->key);
 	size_t col = fk->start_mark.column;
-	size_t at = byte_at(&k->o, node(&k->o, last->value)->end_mark);
-	int at_line_start = at > 0 && k->o.s[at - 1] == '\n';
-	while (!at_line_start && at < k->o.len && k->o.s[at] != '\n')
-		at++;
+	int at_line_start;
+	size_t at = after_line(k, last->value, &at_line_start);
 	need += col;
 	char *s = sw_xmalloc(need);
 	if (at_line_start)
@@ -279,6 +292,78 @@ out:
 	free(kt);
 	free(vt);
 	return rc;
+}
+
+static int walk(struct wallkeep *k, int x, int y, int o);
+
+
+/* The bytes before item it of block list o on its line ("  - "), when
+ * they are only spaces and one dash: their start in *a and end in *b. */
+static int item_prefix(struct wallkeep *k, int it, size_t *a, size_t *b)
+{
+	*b = byte_at(&k->o, node(&k->o, it)->start_mark);
+	*a = *b;
+	while (*a > 0 && k->o.s[*a - 1] != '\n')
+		(*a)--;
+	int dashes = 0;
+	for (size_t i = *a; i < *b; i++) {
+		if (k->o.s[i] == '-')
+			dashes++;
+		else if (k->o.s[i] != ' ')
+			return -1;
+	}
+	return dashes == 1 ? 0 : -1;
+}
+
+/* Lists x (old) and y (new) one item apart (a block added or removed),
+ * o a block list with x's items: the item added to (or taken from) o on
+ * a line of its own, the others walked.  Only one item may differ. */
+static int list_item(struct wallkeep *k, int x, int y, int o)
+{
+	yaml_node_t *nx = node(&k->x, x), *ny = node(&k->y, y);
+	yaml_node_t *no = node(&k->o, o);
+	yaml_node_item_t *ix = nx->data.sequence.items.start;
+	yaml_node_item_t *iy = ny->data.sequence.items.start;
+	yaml_node_item_t *io = no->data.sequence.items.start;
+	long n = nx->data.sequence.items.top - ix;
+	long m = ny->data.sequence.items.top - iy;
+	long j = 0, add = m > n;
+	if (no->data.sequence.style == YAML_FLOW_SEQUENCE_STYLE || n < 1)
+		return replace(k, o, y);
+	while (j < n && j < m && same(&k->x, ix[j], &k->y, iy[j]))
+		j++;
+	for (long i = j; i < (add ? n : m); i++)	/* the rest, shifted */
+		if (!same(&k->x, ix[i + !add], &k->y, iy[i + add]))
+			return -1;
+	size_t a, b;
+	if (item_prefix(k, io[j < n ? j : n - 1], &a, &b))
+		return -1;
+	if (!add) {		/* take item j's line out */
+		yaml_node_t *it = node(&k->o, io[j]);
+		size_t e = byte_at(&k->o, it->end_mark);
+		if (memchr(k->o.s + b, '\n', e - b))
+			return -1;	/* over several lines */
+		while (e < k->o.len && k->o.s[e] != '\n')
+			e++;
+		return add_patch(k, a, e < k->o.len ? e + 1 : e,
+				 sw_xstrdup(""));
+	}
+	char *t = one_line(&k->y, iy[j]);
+	if (!t)
+		return -1;
+	size_t need = (b - a) + strlen(t) + 2;
+	char *s = sw_xmalloc(need);
+	size_t at = a;
+	int fresh;
+	if (j == n)		/* after the last item's line */
+		at = after_line(k, io[n - 1], &fresh);
+	if (j == n && !fresh) {
+		snprintf(s, need, "\n%.*s%s", (int)(b - a), k->o.s + a, t);
+	} else {
+		snprintf(s, need, "%.*s%s\n", (int)(b - a), k->o.s + a, t);
+	}
+	free(t);
+	return add_patch(k, at, at, s);
 }
 
 /* Walk old x, new y and orig o together (see the top of the file). */
@@ -322,8 +407,12 @@ static int walk(struct wallkeep *k, int x, int y, int o)
 	if (nx->type == YAML_SEQUENCE_NODE && ny->type == YAML_SEQUENCE_NODE &&
 	    no->type == YAML_SEQUENCE_NODE) {
 		long n = nx->data.sequence.items.top - nx->data.sequence.items.start;
-		if (n != ny->data.sequence.items.top - ny->data.sequence.items.start ||
-		    n != no->data.sequence.items.top - no->data.sequence.items.start)
+		long ny_n = ny->data.sequence.items.top - ny->data.sequence.items.start;
+		if (n != no->data.sequence.items.top - no->data.sequence.items.start)
+			return replace(k, o, y);
+		if (ny_n == n + 1 || ny_n == n - 1)
+			return list_item(k, x, y, o);
+		if (n != ny_n)
 			return replace(k, o, y);
 		for (long i = 0; i < n; i++)
 			if (walk(k, node(&k->x, x)->data.sequence.items.start[i],

@@ -329,9 +329,41 @@ static void test_save_keeps_comments(void)
 	free(text);
 	wall_free(w);
 	wall_free(back);
+	free(orig);
+
+	/* a wall of explicit blocks: a block added is one line more, and
+	 * taking it out again gives the file back byte for byte */
+	orig = slurp(SRCDIR "/walls/two-block-stack.yaml", &olen);
+	f = fopen(path, "wb");
+	fwrite(orig, 1, olen, f);
+	fclose(f);
+	w = load(path);
+	char what[96];
+	c = finish(wedit_add_block(w, 0.6, 0.1, what, sizeof what, err));
+	text = save_over(c, path, &back);
+	int nl0 = 0, nl1 = 0;
+	for (const char *p = orig; *p; p++)
+		nl0 += *p == '\n';
+	for (const char *p = text ? text : ""; *p; p++)
+		nl1 += *p == '\n';
+	tap_ok(text && lines_lost(orig, text) == 0 && nl1 == nl0 + 1 &&
+	       back && back->nblocks == w->nblocks + 1,
+	       "two-block-stack + a block: every line kept, one line more "
+	       "(%d -> %d)", nl0, nl1);
+	free(text);
+	wall_free(w);
+	w = back;
+	int u = w ? wedit_block_at(w, 0.8, 0.1) : -1;
+	c = u >= 0 ? finish(wedit_copy(w, NULL, u, err)) : NULL;
+	text = save_over(c, path, &back);
+	tap_ok(text && !strcmp(text, orig),
+	       "and without it again: the file as it was, byte for byte");
+	free(text);
+	wall_free(w);
+	wall_free(back);
+	free(orig);
 	unlink(path);
 	rmdir(dir);
-	free(orig);
 }
 
 int main(void)
