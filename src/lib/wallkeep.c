@@ -118,7 +118,9 @@ static size_t after_line(struct wallkeep *k, int id, int *fresh)
 {
 	size_t at = byte_at(&k->o, node(&k->o, id)->end_mark);
 	*fresh = at > 0 && k->o.s[at - 1] == '\n';
-	while (!*fresh && at < k->o.len && k->o.s[at] != '\n')
+	while (!*fresh && at < k->o.len && k->o.s[at] != '\n' &&
+	       !(k->o.s[at] == '\r' && at + 1 < k->o.len &&
+		 k->o.s[at + 1] == '\n'))
 		at++;
 	return at;
 }
@@ -432,24 +434,29 @@ static int by_place(const void *a, const void *b)
 	return p->seq - q->seq;
 }
 
-/* orig with the patches made; NULL when two overlap. */
+/* orig with the patches made; NULL when two overlap.  The line breaks
+ * a patch adds are orig's (CR LF when its first line ends so). */
 static char *apply(struct wallkeep *k, size_t *len)
 {
+	const char *nl = memchr(k->o.s, '\n', k->o.len);
+	int crlf = nl && nl > k->o.s && nl[-1] == '\r';
 	qsort(k->p, (size_t)k->np, sizeof *k->p, by_place);
 	size_t n = k->o.len + 1;
 	for (int i = 0; i < k->np; i++) {
 		if (i && k->p[i].a < k->p[i - 1].b)
 			return NULL;
-		n += strlen(k->p[i].text);
+		n += 2 * strlen(k->p[i].text);
 	}
 	char *out = sw_xmalloc(n);
 	size_t at = 0, w = 0;
 	for (int i = 0; i < k->np; i++) {
 		memcpy(out + w, k->o.s + at, k->p[i].a - at);
 		w += k->p[i].a - at;
-		size_t t = strlen(k->p[i].text);
-		memcpy(out + w, k->p[i].text, t);
-		w += t;
+		for (const char *t = k->p[i].text; *t; t++) {
+			if (*t == '\n' && crlf)
+				out[w++] = '\r';
+			out[w++] = *t;
+		}
 		at = k->p[i].b;
 	}
 	memcpy(out + w, k->o.s + at, k->o.len - at);
