@@ -11,7 +11,9 @@
  * workbenches sharing the directory never interleave a line.  Numbers
  * are written with %.17g (NaN as "nan"), text with its tabs and line
  * breaks turned into spaces.  Readers skip lines they cannot parse
- * (a line cut by a crash, an older format).
+ * (a line cut by a crash, an older format).  The index is used only
+ * when it is a regular file (opened O_NONBLOCK; a FIFO, a device or a
+ * directory is an error), and a reader reads at most its last 4 MiB.
  */
 #ifndef SLIPWALL_HISTORY_H
 #define SLIPWALL_HISTORY_H
@@ -47,8 +49,9 @@ int history_index_path(const char *dir, char *out, size_t len);
 /* Append one row (the header first when the file is new or empty). */
 enum sw_status history_append(const char *path, const struct history_row *r,
 			      char *err);
-/* Read the last max rows (all when max <= 0) into *rows (malloc'd,
- * the caller frees); a missing file is 0 rows. */
+/* Read the last max rows (all when max <= 0) of the last 4 MiB of the
+ * file into *rows (malloc'd, the caller frees); a missing file is 0
+ * rows, one that is not a regular file an error. */
 enum sw_status history_read(const char *path, int max,
 			    struct history_row **rows, int *n, char *err);
 

@@ -37,9 +37,13 @@ struct wallfile_edit {
 enum sw_status wallfile_load_edited(const char *path,
 				    const struct wallfile_edit *edits,
 				    int nedits, struct wall **out, char *err);
-/* Write w as YAML that loads again to the same model: material, every
- * free block as explicit vertices, supports, loads, contacts, analysis,
- * tests.  Written to PATH.tmp, flushed, then renamed over PATH. */
+/* Write w as YAML that loads again to the same model: material, its
+ * layout or every free block as explicit vertices, supports, loads,
+ * contacts, analysis, tests.  When w->path names a wall file, its text
+ * is kept (comments, formatting) and only the values that differ are
+ * changed in it, if the result loads to w; else the whole file is
+ * written under that file's top comments (docs/wall-format.md,
+ * "Saving").  Written to PATH.tmp, flushed, then renamed over PATH. */
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err);
 

@@ -1,6 +1,13 @@
 /*
  * history.c - the workbench's run history and its index file
  * (history.h).
+ *
+ * The index is opened with O_NONBLOCK and used only when it is a
+ * regular file: a FIFO there would block the first edit (an open for
+ * writing waits for a reader), and /dev/zero (a link, say) would feed
+ * the reader for ever.  The reader reads at most the last
+ * HISTORY_MAX_BYTES of the file, so the H screen never waits on a
+ * large file either.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -18,6 +25,42 @@
 	"session\trun\twall\twhat\tmu_bed\tmu_head\tdepth\tanywhere\tload\t" \
 	"x\ty\tdx\tdy\tsamples\taccepted\tp05\tp05_lo\tp05_hi\tp50\tp95\tfile\n"
 #define HISTORY_COLS 21
+#define HISTORY_MAX_BYTES (4L << 20)	/* read at most the last 4 MiB */
+
+/* Open path with flags (O_NONBLOCK added); -1 and err unless it is a
+ * regular file (or missing, *missing set, when flags lack O_CREAT). */
+static int history_open(const char *path, int flags, int *missing,
+			char *err)
+{
+	struct stat st;
+	if (missing)
+		*missing = 0;
+	/* stat first: opening a FIFO for writing with no reader fails
+	 * (ENXIO) with a message that does not say why */
+	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+		sw_fail(err, SW_EIO, "%s: not a regular file (%s)", path,
+			S_ISDIR(st.st_mode) ? "a directory" :
+			S_ISFIFO(st.st_mode) ? "a FIFO" :
+			S_ISCHR(st.st_mode) ? "a device" : "not a file");
+		return -1;
+	}
+	int fd = open(path, flags | O_NONBLOCK | O_NOCTTY | O_CLOEXEC, 0666);
+	if (fd < 0) {
+		if (missing && errno == ENOENT) {
+			*missing = 1;
+			return -1;
+		}
+		sw_fail(err, SW_EIO, "%s: cannot open: %s", path,
+			strerror(errno));
+		return -1;
+	}
+	if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+		close(fd);
+		sw_fail(err, SW_EIO, "%s: not a regular file", path);
+		return -1;
+	}
+	return fd;
+}
 
 int history_runs_dir(char *out, size_t len, char *err)
 {
@@ -84,10 +127,9 @@ enum sw_status history_append(const char *path, const struct history_row *r,
 			 r->p95, file);
 	if (n < 0 || (size_t)n >= sizeof line)
 		return sw_fail(err, SW_EIO, "%s: history line too long", path);
-	int fd = open(path, O_WRONLY | O_APPEND | O_CREAT, 0666);
+	int fd = history_open(path, O_WRONLY | O_APPEND | O_CREAT, NULL, err);
 	if (fd < 0)
-		return sw_fail(err, SW_EIO, "%s: cannot open: %s", path,
-			       strerror(errno));
+		return SW_EIO;
 	struct stat st;
 	int bad = fstat(fd, &st) != 0;
 	if (!bad && st.st_size == 0) {
@@ -182,24 +224,38 @@ enum sw_status history_read(const char *path, int max,
 {
 	*rows = NULL;
 	*n = 0;
-	FILE *fp = fopen(path, "r");
+	int missing;
+	int fd = history_open(path, O_RDONLY, &missing, err);
+	if (fd < 0)
+		return missing ? SW_OK : SW_EIO;
+	/* the last HISTORY_MAX_BYTES only; the first line there may be
+	 * cut, and is dropped */
+	struct stat st;
+	int cut = fstat(fd, &st) == 0 && st.st_size > HISTORY_MAX_BYTES &&
+		  lseek(fd, st.st_size - HISTORY_MAX_BYTES, SEEK_SET) >= 0;
+	FILE *fp = fdopen(fd, "r");
 	if (!fp) {
-		if (errno == ENOENT)
-			return SW_OK;
+		close(fd);
 		return sw_fail(err, SW_EIO, "%s: cannot open: %s", path,
 			       strerror(errno));
 	}
+	long left = HISTORY_MAX_BYTES;
 	/* a ring of the last max rows */
 	int cap = max > 0 ? max : 64, cnt = 0, head = 0;
 	struct history_row *ring = sw_xmalloc(sizeof *ring * (size_t)cap);
 	char line[4 * PATH_MAX];
 	struct history_row r;
-	while (fgets(line, sizeof line, fp)) {
+	while (left > 0 && fgets(line, sizeof line, fp)) {
+		left -= (long)strlen(line);
+		if (cut) {	/* the rest of a line before the window */
+			cut = strchr(line, '\n') == NULL;
+			continue;
+		}
 		if (!strchr(line, '\n') && !feof(fp)) {
 			/* too long to be a row: skip the rest of it */
 			int c;
-			while ((c = fgetc(fp)) != EOF && c != '\n')
-				;
+			while (left > 0 && (c = fgetc(fp)) != EOF && c != '\n')
+				left--;
 			continue;
 		}
 		if (history_parse(line, &r))

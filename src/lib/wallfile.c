@@ -39,7 +39,15 @@
  * `blocks:`; any other wall gets every free block as an explicit
  * polygon.  Either way the wall loads again to the same model, blocks in
  * the same order.  Numbers are written with the fewest significant
- * digits (15, 16 or 17) that read back bit for bit.
+ * digits (15, 16 or 17) that read back bit for bit, strings
+ * double-quoted with every character YAML folds or refuses escaped.
+ * Saved over the file the wall was read from, that file's comments and
+ * formatting are kept: wallkeep.c patches the changed values into its
+ * text, and the result is kept only if it loads to the same model.
+ *
+ * Every YAML text the program parses (the file, each --set value) goes
+ * through reader_load, with the limits of steps 1-3 above; a value's
+ * aliases are copied as shared nodes, never expanded (edit_copy).
  */
 #include <ctype.h>
 #include <errno.h>
@@ -50,12 +58,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <yaml.h>
 
 #include "slipwall/layout.h"
 #include "slipwall/wallfile.h"
+#include "wallkeep.h"
 
 #define WALLFILE_MAX_DEPTH 64
 
@@ -875,6 +886,9 @@ static int read_wall(struct reader *r, yaml_node_t *root)
  * as editing the file would.  Nodes are referred to by id, never by
  * pointer: adding a node may move the node array. */
 
+static int reader_load(struct reader *r, const char *buf, size_t len,
+		       yaml_document_t *doc);
+
 static void edit_mark(struct reader *r, int id, int k)
 {
 	yaml_node_t *n = yaml_document_get_node(&r->doc, id);
@@ -883,30 +897,38 @@ static void edit_mark(struct reader *r, int id, int k)
 }
 
 /* Copy node id of src (the edit's value) into r->doc; the new id, or 0
- * (out of memory, or nested too deep). */
-static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
-		     int depth)
+ * (out of memory, or nested too deep).  Each node of src is copied once
+ * (copied[id - 1] remembers where to): an alias stays a shared
+ * reference, as in a file, so that a value of a few hundred bytes with
+ * nested aliases cannot expand to gigabytes here (issue 23); the walk's
+ * node count then bounds the work, as for a file. */
+static int edit_copy(struct reader *r, yaml_document_t *src, int *copied,
+		     int id, int k, int depth)
 {
 	yaml_node_t *n = yaml_document_get_node(src, id);
 	int out = 0;
 	if (!n || depth > WALLFILE_MAX_DEPTH)
 		return 0;
+	if (copied[id - 1])
+		return copied[id - 1];
 	switch (n->type) {
 	case YAML_SCALAR_NODE:
 		out = yaml_document_add_scalar(&r->doc, NULL,
 					       n->data.scalar.value,
 					       (int)n->data.scalar.length,
 					       n->data.scalar.style);
+		copied[id - 1] = out;
 		break;
 	case YAML_SEQUENCE_NODE: {
 		int nitems = (int)(n->data.sequence.items.top -
 				   n->data.sequence.items.start);
-		out = yaml_document_add_sequence(&r->doc, NULL,
-						 YAML_FLOW_SEQUENCE_STYLE);
+		out = copied[id - 1] = yaml_document_add_sequence(
+			&r->doc, NULL, YAML_FLOW_SEQUENCE_STYLE);
 		for (int i = 0; out && i < nitems; i++) {
 			n = yaml_document_get_node(src, id);
-			int c = edit_copy(r, src, n->data.sequence.items.start[i],
-					  k, depth + 1);
+			int c = edit_copy(r, src, copied,
+					  n->data.sequence.items.start[i], k,
+					  depth + 1);
 			if (!c || !yaml_document_append_sequence_item(&r->doc,
 								      out, c))
 				return 0;
@@ -916,13 +938,14 @@ static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
 	case YAML_MAPPING_NODE: {
 		int npairs = (int)(n->data.mapping.pairs.top -
 				   n->data.mapping.pairs.start);
-		out = yaml_document_add_mapping(&r->doc, NULL,
-						YAML_FLOW_MAPPING_STYLE);
+		out = copied[id - 1] = yaml_document_add_mapping(
+			&r->doc, NULL, YAML_FLOW_MAPPING_STYLE);
 		for (int i = 0; out && i < npairs; i++) {
 			n = yaml_document_get_node(src, id);
 			yaml_node_pair_t p = n->data.mapping.pairs.start[i];
-			int kc = edit_copy(r, src, p.key, k, depth + 1);
-			int vc = kc ? edit_copy(r, src, p.value, k, depth + 1) : 0;
+			int kc = edit_copy(r, src, copied, p.key, k, depth + 1);
+			int vc = kc ? edit_copy(r, src, copied, p.value, k,
+						depth + 1) : 0;
 			if (!vc || !yaml_document_append_mapping_pair(&r->doc,
 								      out, kc, vc))
 				return 0;
@@ -937,7 +960,18 @@ static int edit_copy(struct reader *r, yaml_document_t *src, int id, int k,
 	return out;
 }
 
-/* What one component of an edit's path did (edit_step_*). */
+/* A copy of the whole value val into r->doc (edit_copy). */
+static int edit_copy_value(struct reader *r, yaml_document_t *val, int k)
+{
+	size_t n = (size_t)(val->nodes.top - val->nodes.start);
+	int *copied = calloc(n + 1, sizeof *copied);
+	if (!copied)
+		return 0;
+	int id = edit_copy(r, val, copied, 1, k, 0);
+	free(copied);
+	return id;
+}
+
 enum edit_step { STEP_ON, STEP_DONE, STEP_FAIL, STEP_OOM };
 
 /* The component comp of edit k in the mapping cur: put the value val
@@ -956,7 +990,7 @@ static enum edit_step edit_step_mapping(struct reader *r, int k,
 			pair = q;
 	}
 	if (last) {
-		int v = edit_copy(r, val, 1, k, 0);
+		int v = edit_copy_value(r, val, k);
 		if (!v)
 			return STEP_OOM;
 		n = yaml_document_get_node(&r->doc, cur);
@@ -1020,7 +1054,7 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
 		return STEP_FAIL;
 	}
 	if (last) {
-		int v = edit_copy(r, val, 1, k, 0);
+		int v = edit_copy_value(r, val, k);
 		if (!v)
 			return STEP_OOM;
 		n = yaml_document_get_node(&r->doc, cur);
@@ -1036,7 +1070,6 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
 static int edit_apply(struct reader *r, int k)
 {
 	const struct wallfile_edit *e = &r->edits[k];
-	yaml_parser_t p;
 	yaml_document_t val;
 	char key[256];
 	int rc = -1;
@@ -1046,16 +1079,21 @@ static int edit_apply(struct reader *r, int k)
 			e->label);
 		return -1;
 	}
-	yaml_parser_initialize(&p);
-	yaml_parser_set_input_string(&p, (const unsigned char *)e->value,
-				     strlen(e->value));
-	if (!yaml_parser_load(&p, &val)) {
-		sw_fail(r->err, SW_EINPUT, "%s: not a YAML value: %s",
-			e->label, p.problem ? p.problem : "syntax error");
-		yaml_parser_delete(&p);
+	/* the value goes through the file's limits, its messages read
+	 * "LABEL:LINE:COLUMN: ..." (LINE and COLUMN in the value) */
+	struct reader vr;
+	char verr[SW_ERRLEN];
+	memset(&vr, 0, sizeof vr);
+	vr.name = "";
+	vr.err = verr;
+	if (reader_load(&vr, e->value, strlen(e->value), &val)) {
+		/* verr is ":LINE:COLUMN: what"; the label may be long */
+		int cut = strlen(e->label) > 80;
+		sw_fail(r->err, SW_EINPUT, "%.*s%s: not a YAML value: %s",
+			cut ? 77 : 80, e->label, cut ? "..." : "",
+			verr + (verr[0] == ':'));
 		return -1;
 	}
-	yaml_parser_delete(&p);
 	if (!yaml_document_get_root_node(&val)) {
 		sw_fail(r->err, SW_EINPUT, "%s: no value", e->label);
 		goto out;
@@ -1141,14 +1179,68 @@ static int wallfile_prescan(struct reader *r, const char *buf, size_t len)
 	return rc;
 }
 
+/* The one way this program parses YAML (a wall file, a --set value):
+ * the size, depth and event limits of wallfile_prescan, then the
+ * document into *doc (which the caller deletes), and no second
+ * document.  -1 and r->err on any error, *doc then empty. */
+static int reader_load(struct reader *r, const char *buf, size_t len,
+		       yaml_document_t *doc)
+{
+	yaml_parser_t p;
+	yaml_document_t extra;
+	int rc = 0;
+
+	memset(doc, 0, sizeof *doc);
+	if (len > WALLFILE_MAX_BYTES) {
+		sw_fail(r->err, SW_EINPUT, "%s: larger than %u bytes",
+			r->name, WALLFILE_MAX_BYTES);
+		return -1;
+	}
+	if (wallfile_prescan(r, buf, len))
+		return -1;
+	yaml_parser_initialize(&p);
+	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
+	if (!yaml_parser_load(&p, doc)) {
+		reader_yaml_error(r, &p, buf, len);
+		yaml_parser_delete(&p);
+		memset(doc, 0, sizeof *doc);
+		return -1;
+	}
+	/* a second document is a mistake, not something to ignore */
+	if (!yaml_parser_load(&p, &extra)) {
+		rc = reader_yaml_error(r, &p, buf, len);
+	} else {
+		yaml_node_t *root2 = yaml_document_get_root_node(&extra);
+		if (root2)
+			rc = reader_fail_at(r, root2->start_mark,
+					    "a wall file holds one YAML "
+					    "document; here starts another");
+		yaml_document_delete(&extra);
+	}
+	yaml_parser_delete(&p);
+	if (rc) {
+		yaml_document_delete(doc);
+		memset(doc, 0, sizeof *doc);
+	}
+	return rc;
+}
+
+int wallfile_yaml_load(const char *buf, size_t len, const char *name,
+		       yaml_document_t *doc, char *err)
+{
+	struct reader r;
+	memset(&r, 0, sizeof r);
+	r.name = name;
+	r.err = err;
+	return reader_load(&r, buf, len, doc);
+}
+
 static enum sw_status parse_edited(const char *buf, size_t len,
 				   const char *name,
 				   const struct wallfile_edit *edits,
 				   int nedits, struct wall **out, char *err)
 {
 	struct reader r;
-	yaml_parser_t p;
-	yaml_document_t extra;
 	int rc = 0;
 
 	*out = NULL;
@@ -1159,33 +1251,14 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 		return sw_fail(err, SW_EINPUT,
 			       "%s: file is larger than %u bytes", r.name,
 			       WALLFILE_MAX_BYTES);
-	if (wallfile_prescan(&r, buf, len))
+	if (reader_load(&r, buf, len, &r.doc))
 		return SW_EINPUT;
-
-	yaml_parser_initialize(&p);
-	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
-	if (!yaml_parser_load(&p, &r.doc)) {
-		reader_yaml_error(&r, &p, buf, len);
-		yaml_parser_delete(&p);
-		return SW_EINPUT;
-	}
 	yaml_node_t *root = yaml_document_get_root_node(&r.doc);
 	if (!root) {
 		sw_fail(err, SW_EINPUT, "%s:1:1: the file is empty", r.name);
 		rc = -1;
 		goto out;
 	}
-	/* a second document is a mistake, not something to ignore */
-	if (!yaml_parser_load(&p, &extra)) {
-		rc = reader_yaml_error(&r, &p, buf, len);
-		goto out;
-	}
-	yaml_node_t *root2 = yaml_document_get_root_node(&extra);
-	if (root2)
-		rc = FAIL(&r, root2, "a wall file holds one YAML document; here starts another");
-	yaml_document_delete(&extra);
-	if (rc)
-		goto out;
 
 	r.edits = edits;
 	r.nedits = nedits;
@@ -1213,7 +1286,6 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 	}
 out:
 	yaml_document_delete(&r.doc);
-	yaml_parser_delete(&p);
 	if (rc)
 		return SW_EINPUT;
 	*out = r.w;
@@ -1285,17 +1357,47 @@ enum sw_status wallfile_load_edited(const char *path,
 
 /* ----------------------------------------------------------------- saving */
 
-/* A YAML double-quoted string. */
+/* The code point at s (UTF-8) in *cp; its length, or 1 with *cp = -1
+ * for a byte that does not start a valid sequence. */
+static int save_utf8(const unsigned char *s, long *cp)
+{
+	int n = s[0] < 0x80 ? 1 : (s[0] & 0xe0) == 0xc0 ? 2 :
+		(s[0] & 0xf0) == 0xe0 ? 3 : (s[0] & 0xf8) == 0xf0 ? 4 : 0;
+	static const long least[] = {0, 0, 0x80, 0x800, 0x10000};
+	long c = n == 1 ? s[0] : n ? s[0] & (0x7f >> n) : -1;
+	for (int i = 1; i < n && c >= 0; i++)
+		c = (s[i] & 0xc0) == 0x80 ? c << 6 | (s[i] & 0x3f) : -1;
+	if (!n || c < least[n] || c > 0x10ffff || (c >= 0xd800 && c <= 0xdfff))
+		c = -1;
+	*cp = c;
+	return c < 0 ? 1 : n;
+}
+
+/* A YAML double-quoted string that reads back to the same bytes.  YAML
+ * folds line breaks in a quoted scalar to spaces and refuses characters
+ * that are not printable, so everything but printable characters that
+ * are no line break is escaped: C0 (tab and newline too), DEL, C1
+ * (U+0085, NEL, is a YAML line break), U+2028 and U+2029 (line breaks),
+ * the byte order mark U+FEFF, U+FFFE and U+FFFF.  A byte that is not
+ * UTF-8 (no wall file can hold one) becomes U+FFFD. */
 static void save_string(FILE *f, const char *s)
 {
 	fputc('"', f);
-	for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
-		if (*p == '"' || *p == '\\')
-			fprintf(f, "\\%c", *p);
-		else if (*p < 0x20 || *p == 0x7f)
-			fprintf(f, "\\x%02x", *p);
+	for (const unsigned char *p = (const unsigned char *)s; *p;) {
+		long c;
+		int n = save_utf8(p, &c);
+		if (c == '"' || c == '\\')
+			fprintf(f, "\\%c", (int)c);
+		else if (c < 0)
+			fputs("\\uFFFD", f);
+		else if (c < 0x20 || (c >= 0x7f && c <= 0x9f))
+			fprintf(f, "\\x%02lx", c);
+		else if (c == 0x2028 || c == 0x2029 || c == 0xfeff ||
+			 c == 0xfffe || c == 0xffff)
+			fprintf(f, "\\u%04lX", c);
 		else
-			fputc(*p, f);
+			fwrite(p, 1, (size_t)n, f);
+		p += n;
 	}
 	fputc('"', f);
 }
@@ -1504,13 +1606,127 @@ static void save_wall(FILE *f, const struct wall *w)
 	wall_free(g);
 }
 
+/* w as save_wall writes it, in memory (malloc'd, NUL-terminated). */
+static char *save_text(const struct wall *w, size_t *len)
+{
+	char *buf = NULL;
+	FILE *f = open_memstream(&buf, len);
+	if (!f)
+		return NULL;
+	save_wall(f, w);
+	if (fclose(f) != 0) {
+		free(buf);
+		return NULL;
+	}
+	return buf;
+}
+
+/* The wall file w was read from, when it is a regular file of at most
+ * WALLFILE_MAX_BYTES (O_NONBLOCK: a FIFO there cannot block the save);
+ * malloc'd, NUL-terminated, or NULL. */
+static char *save_source(const char *path, size_t *len)
+{
+	int fd = path ? open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY) : -1;
+	struct stat st;
+	char *buf = NULL;
+	if (fd < 0)
+		return NULL;
+	if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+	    (unsigned long long)st.st_size <= WALLFILE_MAX_BYTES) {
+		size_t n = (size_t)st.st_size, got = 0;
+		buf = sw_xmalloc(n + 1);
+		while (got < n) {
+			ssize_t r = read(fd, buf + got, n - got);
+			if (r <= 0)
+				break;
+			got += (size_t)r;
+		}
+		buf[got] = 0;
+		*len = got;
+	}
+	close(fd);
+	return buf;
+}
+
+/* Does text load to the model that save_wall writes as want? */
+static int save_loads_as(const char *text, size_t len, const char *want)
+{
+	char err[SW_ERRLEN];
+	struct wall *w;
+	size_t n;
+	if (wallfile_parse(text, len, "<saved>", &w, err) != SW_OK)
+		return 0;
+	char *got = save_text(w, &n);
+	int same = got && !strcmp(got, want);
+	free(got);
+	wall_free(w);
+	return same;
+}
+
+/* The text to save for w, new (save_wall's): the file w was read from
+ * when w is its model, that file with the changed values patched in
+ * place (wallkeep.c) when that loads to w, else new under the file's
+ * top comments.  See docs/wall-format.md, "Saving". */
+static char *save_keeping(const struct wall *w, char *new, size_t *len)
+{
+	size_t olen, xlen;
+	char err[SW_ERRLEN];
+	struct wall *w0;
+	char *orig = save_source(w->path, &olen);
+	if (!orig)
+		return new;
+	if (wallfile_parse(orig, olen, w->path, &w0, err) != SW_OK) {
+		free(orig);
+		return new;
+	}
+	char *old = save_text(w0, &xlen);
+	wall_free(w0);
+	char *out = NULL;
+	if (old && !strcmp(old, new)) {
+		out = orig;		/* nothing changed */
+		*len = olen;
+		orig = NULL;
+	} else if (old) {
+		size_t plen;
+		char *p = wallkeep_patch(orig, olen, old, xlen, new, *len,
+					 &plen);
+		if (p && save_loads_as(p, plen, new)) {
+			out = p;
+			*len = plen;
+		} else {
+			free(p);
+		}
+	}
+	if (!out) {		/* anew, under the file's top comments */
+		size_t h = wallkeep_header(orig, olen);
+		/* which take the place of the writer's own first line */
+		const char *nl = strchr(new, '\n');
+		size_t skip = h && nl ? (size_t)(nl + 1 - new) : 0;
+		out = sw_xmalloc(h + *len - skip + 1);
+		memcpy(out, orig, h);
+		memcpy(out + h, new + skip, *len - skip + 1);
+		*len += h - skip;
+	}
+	free(old);
+	free(orig);
+	free(new);
+	return out;
+}
+
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err)
 {
+	size_t len;
+	char *text = save_text(w, &len);
+	if (!text)
+		return sw_fail(err, SW_EIO, "%s: out of memory", path);
+	text = save_keeping(w, text, &len);
 	struct sw_whole out;
 	enum sw_status st = sw_whole_open(&out, path, err);
-	if (st != SW_OK)
-		return st;
-	save_wall(out.f, w);
-	return sw_whole_close(&out, err);
+	if (st == SW_OK) {
+		fwrite(text, 1, len, out.f);
+		st = sw_whole_close(&out, err);
+	}
+	free(text);
+	return st;
 }

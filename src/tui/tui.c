@@ -48,6 +48,7 @@ static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
 
 static void tui_key(struct tui *t, int ch)
 {
+	t->note[0] = 0;		/* seen: the key was the answer */
 	enum tui_screen_id next = tui_screens[t->screen].key(t, ch);
 	if (next != t->screen)
 		tui_switch_screen(t, next);
@@ -277,6 +278,8 @@ static void tui_finish(struct tui *t)
 	free(t->files);
 	if (t->hist_path[0] && t->nhist)
 		printf("history: %s\n", t->hist_path);
+	else if (t->hist_err[0])
+		printf("history: not kept: %s\n", t->hist_err);
 	fflush(stdout);
 	free(t->hist);
 	free(t->prev_lam);

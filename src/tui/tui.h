@@ -128,6 +128,11 @@ struct tui {
 
 	char msg[2 * SW_ERRLEN];/* message line; msg_err: show as an error */
 	int msg_err;
+	/* an error that must not be lost under the next message (the run
+	 * history could not be written): shown above the message line
+	 * until the next key (tui_note) */
+	char note[2 * SW_ERRLEN];
+	char hist_err[SW_ERRLEN];	/* why the history is not kept */
 
 	int mech_sel;		/* 0: latest accepted; k: k-th most frequent */
 	int cursor_mode;	/* arrows move the block cursor, not the load */
@@ -139,6 +144,9 @@ struct tui {
 /* tui_draw.c: the leaf */
 void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
+/* An error shown above the message line until the next key. */
+void tui_note(struct tui *t, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
 /* A file the session wrote (kind: "samples", "wall", ...), printed at q. */
 void tui_note_file(struct tui *t, const char *kind, const char *path);
 /* Draw a UTF-8 or an ASCII string depending on the locale. */

@@ -24,6 +24,14 @@ void tui_message(struct tui *t, int is_err, const char *fmt, ...)
 	t->msg_err = is_err;
 }
 
+void tui_note(struct tui *t, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(t->note, sizeof t->note, fmt, ap);
+	va_end(ap);
+}
+
 void tui_note_file(struct tui *t, const char *kind, const char *path)
 {
 	char *line;

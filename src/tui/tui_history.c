@@ -76,7 +76,10 @@ void tui_history_record(struct tui *t)
 		t->hist[t->nhist++] = h;
 	}
 	if (t->hist_path[0] && history_append(t->hist_path, &h, err) != SW_OK) {
-		tui_message(t, 1, "run history: %s (not kept after quitting)", err);
+		/* the edit that ended the run writes its own message at
+		 * once: a note stays until the next key (issue 23) */
+		tui_note(t, "run history: %s (not kept after quitting)", err);
+		snprintf(t->hist_err, sizeof t->hist_err, "%s", err);
 		t->hist_path[0] = 0;
 	}
 	/* the previous run, for the histogram's outline */
@@ -149,6 +152,7 @@ void tui_history_print(const struct tui *t, FILE *f)
 static int tui_history_top;	/* rows scrolled away */
 static struct history_row *tui_history_old;	/* earlier sessions */
 static int tui_history_nold;
+static char tui_history_rerr[SW_ERRLEN + 64];	/* the index could not be read */
 
 void tui_history_init(struct tui *t)
 {
@@ -159,9 +163,14 @@ void tui_history_init(struct tui *t)
 	tui_history_old = NULL;
 	tui_history_nold = 0;
 	tui_history_top = -1;	/* at the bottom */
-	if (!t->hist_path[0] ||
-	    history_read(t->hist_path, TUI_HISTORY_OLD, &all, &n, err) != SW_OK)
+	tui_history_rerr[0] = 0;
+	if (!t->hist_path[0])
 		return;
+	if (history_read(t->hist_path, TUI_HISTORY_OLD, &all, &n, err) != SW_OK) {
+		snprintf(tui_history_rerr, sizeof tui_history_rerr,
+			 "earlier sessions not shown: %s", err);
+		return;
+	}
 	/* this session's rows are in t->hist */
 	int k = 0;
 	for (int i = 0; i < n; i++)
@@ -242,14 +251,17 @@ void tui_history_draw(struct tui *t)
 
 	int nrows = tui_history_nold + t->nhist + running;
 	int body = R - 3;	/* rows 1 .. R-3 */
-	int lines = 3 * nrows + (tui_history_nold ? 1 : 0);
+	int lines = 3 * nrows + (tui_history_nold ? 1 : 0) +
+		    (tui_history_rerr[0] ? 1 : 0) + (t->hist_err[0] ? 1 : 0);
 	int maxtop = lines > body ? lines - body : 0;
 	if (tui_history_top < 0 || tui_history_top > maxtop)
 		tui_history_top = maxtop;
 
-	snprintf(buf, sizeof buf, " run history: %d runs this session%s%s", t->nhist + running,
-		 t->hist_path[0] ? "; index " : " (not kept: no index file)",
-		 t->hist_path);
+	snprintf(buf, sizeof buf, " run history: %d runs this session%s%s",
+		 t->nhist + running,
+		 t->hist_path[0] ? "; index " :
+		 t->hist_err[0] ? " (not kept: the line below says why)" :
+		 " (not kept: no index file)", t->hist_path);
 	attron(A_REVERSE);
 	move(0, 0);
 	for (int c = 0; c < C; c++)
@@ -260,6 +272,16 @@ void tui_history_draw(struct tui *t)
 	attroff(A_REVERSE);
 
 	int y = 1 - tui_history_top, y1 = R - 2;
+	/* why the index was not written or read, above the rows */
+	const char *why[] = {t->hist_err, tui_history_rerr};
+	for (int i = 0; i < 2; i++) {
+		if (!why[i][0])
+			continue;
+		snprintf(buf, sizeof buf, "%s%s", i ? "" : "not kept: ", why[i]);
+		if (y >= 1 && y < y1)
+			tui_text(y, 0, C, buf);
+		y++;
+	}
 	if (tui_history_nold) {
 		if (y >= 1 && y < y1)
 			tui_text(y, 0, C, "earlier sessions (session, run):");

@@ -285,6 +285,19 @@ static void tui_home_message(struct tui *t)
 		attroff(attr);
 }
 
+/* The note (tui_note): an error above the message line, until a key. */
+static void tui_home_note(struct tui *t)
+{
+	char buf[sizeof t->note + 8];
+	int attr = t->colors ? COLOR_PAIR(5) : A_BOLD;
+	tui_abbrev(t, buf, sizeof buf, t->note, t->cols);
+	attron(attr);
+	move(t->rows - 3, 0);
+	clrtoeol();
+	tui_text(t->rows - 3, 0, t->cols, buf);
+	attroff(attr);
+}
+
 /* The status line: the keys that work now, as many as fit. */
 static void tui_home_keybar(struct tui *t)
 {
@@ -329,5 +342,7 @@ void tui_home_draw(struct tui *t)
 		tui_prompt_draw(t, R - 2);
 	else if (t->msg[0])
 		tui_home_message(t);
+	if (t->note[0])
+		tui_home_note(t);
 	tui_home_keybar(t);
 }

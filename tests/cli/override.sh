@@ -148,4 +148,48 @@ bad "--friction without a value" "needs a value" run $block --friction
 bad "compare --friction abc" "--friction: 'abc'" compare $block --tests walls/demo-loads.txt --friction abc
 bad "report --set x=1" "unknown key 'x'" report $block --out "$tmp/r3" --set x=1
 
+# ---- every YAML the program parses has the file's limits (issue 23) ------
+# A --set value went to libyaml without the wall file's depth limit
+# (60,000 '[' took 12-40 s) and its aliases were copied out (a value of
+# 7 alias levels expanded to about 2 GB, 8 levels exhausted memory).
+# Now the value passes the same depth check as a file, and an alias
+# stays a shared node: the schema's message comes at once.  The memory
+# limit is a guard for the old code, not an assertion of time.
+deep=$(printf '%60000s' '' | tr ' ' '[')
+bad "--set 60,000 nested brackets: the file's depth limit" \
+	"^--set material\.friction=\[+\.\.\.: not a YAML value: 1:65: nested deeper than 64 levels" \
+	run $block --set "material.friction=$deep"
+bomb7='[&a [0,0,0,0,0,0,0,0,0,0]'
+prev=a
+for l in b c d e f g h; do
+	bomb7="$bomb7, &$l [$(printf "*$prev,%.0s" 1 2 3 4 5 6 7 8 9)*$prev]"
+	prev=$l
+done
+bomb7="$bomb7]"
+bomb8="${bomb7%]}, &i [$(printf '*h,%.0s' 1 2 3 4 5 6 7 8 9)*h]]"
+# AddressSanitizer reserves terabytes of address space: no ulimit -v there
+vlimit="ulimit -v 1048576;"
+grep -q __asan_init "$bin" 2>/dev/null && vlimit=
+for b in 7 8; do
+	v=bomb$b
+	(eval "$vlimit"; ulimit -t 120
+	 exec "$bin" run $block -n 1 --set "tests.loads=${!v}") \
+		>"$tmp/bomb.out" 2>"$tmp/bomb.err"
+	rc=$?
+	if [ $rc = 2 ] && grep -q ": a test load must be a number, not a list" "$tmp/bomb.err"; then
+		ok "--set a value of $b alias levels ($(printf %s "${!v}" | wc -c) bytes): exit 2 with the schema's message, nothing expanded"
+	else
+		not_ok "--set a value of $b alias levels: exit 2 with the schema's message" \
+			"exit $rc" "$(tail -c 300 "$tmp/bomb.err")"
+	fi
+done
+"$bin" run $block -n 5 --threads 1 --set 'material.friction={bed: &m 0.7, head: *m}' \
+	--json >"$tmp/alias.json" 2>"$tmp/alias.err"
+rc=$?
+if [ $rc = 0 ] && grep -q '"accepted": 5' "$tmp/alias.json"; then
+	ok "--set a value with an alias still works"
+else
+	not_ok "--set a value with an alias still works" "exit $rc" "$(cat "$tmp/alias.err")"
+fi
+
 tap_end

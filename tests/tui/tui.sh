@@ -239,7 +239,7 @@ else
 	not_ok "s writes saved.yaml and saved.json" "$(screen w)"
 fi
 if "$bin" check "$tmp/saved.yaml" >"$tmp/check.out" 2>&1 &&
-   grep -q 'bed: 0.65' "$tmp/saved.yaml"; then
+   grep -qE 'friction: (0\.65\b|\{bed: 0\.65)' "$tmp/saved.yaml"; then
 	ok "slipwall check accepts the saved wall (with the edited friction)"
 else
 	not_ok "slipwall check accepts the saved wall" "$(cat "$tmp/check.out")"

@@ -2,12 +2,14 @@
  * test_history.c - the run history's index file: rows read back as
  * written (numbers to the last bit, NaN, text with tabs), the header
  * written once, the last N rows, lines that are not rows skipped, the
- * runs directory from $SLIPWALL_RUNS made when missing.
+ * runs directory from $SLIPWALL_RUNS made when missing; a file over
+ * 4 MiB read from its end only; /dev/zero and a FIFO refused.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "slipwall/history.h"
@@ -99,6 +101,42 @@ int main(void)
 		headers += !strncmp(line, "session\trun\t", 12);
 	fclose(f);
 	tap_ok(headers == 1, "the header is written once (%d)", headers);
+
+	/* a file larger than the reader's bound (4 MiB): only its end is
+	 * read, and the first (cut) line there is dropped (issue 23) */
+	struct history_row big;
+	row(&big, 7);
+	int nbig = 0;
+	while (nbig < 40000) {
+		big.run = ++nbig;
+		if (history_append(path, &big, err) != SW_OK)
+			break;
+	}
+	st = history_read(path, 0, &r, &n, err);
+	tap_ok(st == SW_OK && n > 1000 && n < nbig && r[n - 1].run == nbig &&
+	       r[0].run == nbig - n + 1,
+	       "of %d rows in a file over 4 MiB, the last %d are read, whole",
+	       nbig, n);
+	free(r);
+	unlink(path);
+
+	/* what is not a regular file is refused, at once (a FIFO would
+	 * block the writer, /dev/zero feed the reader for ever) */
+	if (symlink("/dev/zero", path) == 0) {
+		tap_ok(history_read(path, 0, &r, &n, err) == SW_EIO &&
+		       strstr(err, "not a regular file"),
+		       "history.tsv -> /dev/zero: not read (%s)", err);
+		tap_ok(history_append(path, &big, err) == SW_EIO &&
+		       strstr(err, "not a regular file"),
+		       "history.tsv -> /dev/zero: not written (%s)", err);
+		unlink(path);
+	}
+	if (mkfifo(path, 0600) == 0) {
+		tap_ok(history_append(path, &big, err) == SW_EIO &&
+		       strstr(err, "not a regular file (a FIFO)"),
+		       "history.tsv a FIFO: not opened (%s)", err);
+		unlink(path);
+	}
 
 	unlink(path);
 	rmdir(dir);

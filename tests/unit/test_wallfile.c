@@ -455,6 +455,112 @@ static void test_save(void)
 	wall_free(w);
 }
 
+/* Save w to a temporary file and load it back; NULL (and a diagnostic)
+ * when the saved file does not load. */
+static struct wall *save_load(const struct wall *w, const char *what)
+{
+	char err[SW_ERRLEN], path[] = "/tmp/slipwall-save-XXXXXX";
+	struct wall *b = NULL;
+	int fd = mkstemp(path);
+	if (fd < 0)
+		return NULL;
+	close(fd);
+	if (wallfile_save(w, path, err) != SW_OK ||
+	    wallfile_load(path, &b, err) != SW_OK) {
+		tap_diag("%s: %s", what, err);
+		b = NULL;
+	}
+	unlink(path);
+	return b;
+}
+
+/* Append code point c to s as UTF-8. */
+static size_t put_utf8(char *s, size_t k, long c)
+{
+	if (c < 0x80) {
+		s[k++] = (char)c;
+	} else if (c < 0x800) {
+		s[k++] = (char)(0xc0 | c >> 6);
+		s[k++] = (char)(0x80 | (c & 0x3f));
+	} else if (c < 0x10000) {
+		s[k++] = (char)(0xe0 | c >> 12);
+		s[k++] = (char)(0x80 | (c >> 6 & 0x3f));
+		s[k++] = (char)(0x80 | (c & 0x3f));
+	} else {
+		s[k++] = (char)(0xf0 | c >> 18);
+		s[k++] = (char)(0x80 | (c >> 12 & 0x3f));
+		s[k++] = (char)(0x80 | (c >> 6 & 0x3f));
+		s[k++] = (char)(0x80 | (c & 0x3f));
+	}
+	return k;
+}
+
+/* Ids and names with the characters YAML folds (NEL U+0085, U+2028,
+ * U+2029, line breaks, tabs) or refuses (C0, DEL, C1, U+FFFE) or reads
+ * specially (a BOM, quotes, backslashes, ': ', ' #', leading and
+ * trailing spaces) survive a save and a load byte for byte, and two ids
+ * that differ only there stay two ids (issue 23). */
+static void test_save_odd_strings(void)
+{
+	static const long odd[] = {
+		0x85, 0x2028, 0x2029, 0xfeff, 0x0a, 0x0d, 0x09, 0x01, 0x1b,
+		0x7f, 0x80, 0x9f, 0xa0, 0xfffe, 0xffff, '"', '\\', ':', '#',
+		' ', '\'', '&', '*', '!', '{', '[', ',', 'a', 'Z', '0', 0xe9,
+		0x3bb, 0x1f9f1, 0x10ffff, 0xfffd};
+	char err[SW_ERRLEN];
+	struct wall *w = parse(small, err);
+	if (!w) {
+		tap_ok(0, "odd strings: parse (%s)", err);
+		return;
+	}
+	/* the case of the issue: "a<NEL>b" and "a b" */
+	free(w->blocks[0].id);
+	free(w->blocks[1].id);
+	w->blocks[0].id = sw_xstrdup("a\xc2\x85" "b");
+	w->blocks[1].id = sw_xstrdup("a b");
+	struct wall *b = save_load(w, "NEL");
+	tap_ok(b && !strcmp(b->blocks[0].id, "a\xc2\x85" "b") &&
+	       !strcmp(b->blocks[1].id, "a b"),
+	       "ids 'a<U+0085>b' and 'a b' survive a save and a load, distinct");
+	wall_free(b);
+
+	unsigned long x = 88172645463325252UL;	/* xorshift64 */
+	int bad = 0, rounds = 200;
+	for (int r = 0; r < rounds; r++) {
+		char s[3][64];
+		for (int j = 0; j < 3; j++) {
+			size_t k = 0;
+			int len = 1 + r % 7 + j;
+			for (int i = 0; i < len; i++) {
+				x ^= x << 13;
+				x ^= x >> 7;
+				x ^= x << 17;
+				k = put_utf8(s[j], k,
+					     odd[x % (sizeof odd / sizeof *odd)]);
+			}
+			s[j][k] = 0;
+		}
+		if (!strcmp(s[0], s[1]))
+			strcat(s[1], "1");
+		free(w->blocks[0].id);
+		free(w->blocks[1].id);
+		free(w->name);
+		w->blocks[0].id = sw_xstrdup(s[0]);
+		w->blocks[1].id = sw_xstrdup(s[1]);
+		w->name = sw_xstrdup(s[2]);
+		b = save_load(w, "odd strings");
+		if (!b || strcmp(b->blocks[0].id, s[0]) ||
+		    strcmp(b->blocks[1].id, s[1]) || !b->name ||
+		    strcmp(b->name, s[2]))
+			bad++;
+		wall_free(b);
+	}
+	tap_ok(bad == 0, "%d walls with random ids and names of odd "
+	       "characters: each saved file loads to the same strings (%d "
+	       "did not)", rounds, bad);
+	wall_free(w);
+}
+
 /* A generated wall stays generated: layout, the blocks left out (omit)
  * and the blocks of its own, in the same order; numbers in the fewest
  * digits that read back bit for bit. */
@@ -547,5 +653,6 @@ int main(void)
 	test_files();
 	test_save();
 	test_save_layout();
+	test_save_odd_strings();
 	return tap_done();
 }

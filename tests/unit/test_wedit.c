@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "slipwall/wedit.h"
 #include "slipwall/layout.h"
@@ -207,6 +208,164 @@ static void test_cursor_turn(const struct wall *s)
 	       d[0], d[1]);
 }
 
+/* ---- saving over the opened file keeps its comments (issue 23) ---- */
+
+static char *slurp(const char *path, size_t *len)
+{
+	FILE *f = fopen(path, "rb");
+	char *buf = NULL;
+	*len = 0;
+	if (!f)
+		return NULL;
+	buf = malloc(1 << 20);
+	*len = fread(buf, 1, (1 << 20) - 1, f);
+	buf[*len] = 0;
+	fclose(f);
+	return buf;
+}
+
+/* How many lines of a are not lines of b (each line of b matches once). */
+static int lines_lost(const char *a, const char *b)
+{
+	char *bb = strdup(b), *save = NULL;
+	int lost = 0;
+	char *ac = strdup(a);
+	for (char *l = strtok_r(ac, "\n", &save); l; l = strtok_r(NULL, "\n", &save)) {
+		size_t n = strlen(l);
+		char *p = bb;
+		while ((p = strstr(p, l)) &&
+		       !((p == bb || p[-1] == '\n') && (p[n] == '\n' || !p[n])))
+			p++;
+		if (p)
+			p[0] = '\x01';	/* used */
+		else
+			lost++;
+	}
+	free(ac);
+	free(bb);
+	return lost;
+}
+
+/* Save edited (taking it) over path, a copy of the demo; the text saved,
+ * and the wall it loads to in *back. */
+static char *save_over(struct wall *edited, const char *path,
+		       struct wall **back)
+{
+	char err[SW_ERRLEN];
+	size_t len;
+	*back = NULL;
+	if (!edited)
+		return NULL;
+	if (wallfile_save(edited, path, err) != SW_OK) {
+		tap_diag("save: %s", err);
+		wall_free(edited);
+		return NULL;
+	}
+	wall_free(edited);
+	if (wallfile_load(path, back, err) != SW_OK)
+		tap_diag("the saved file: %s", err);
+	return slurp(path, &len);
+}
+
+static void test_save_keeps_comments(void)
+{
+	char err[SW_ERRLEN], dir[] = "/tmp/slipwall-keep-XXXXXX", path[64];
+	size_t olen;
+	char *orig = slurp(SRCDIR "/walls/demo.yaml", &olen);
+	if (!orig || !mkdtemp(dir)) {
+		tap_ok(0, "keep comments: set up");
+		return;
+	}
+	snprintf(path, sizeof path, "%s/demo.yaml", dir);
+	int ncomments = 0;
+	for (const char *p = orig; (p = strchr(p, '#')); p++)
+		ncomments += p == orig || p[-1] == '\n';
+
+	/* friction, as f or the prompt makes it: one line changes */
+	FILE *f = fopen(path, "wb");
+	fwrite(orig, 1, olen, f);
+	fclose(f);
+	struct wall *w = load(path), *back;
+	struct wall *c = finish(wedit_copy(w, NULL, -1, err));
+	c->mu_bed = c->mu_head = 0.85;
+	char *text = save_over(c, path, &back);
+	tap_ok(text && lines_lost(orig, text) == 1 && strstr(text, "\n  friction: 0.85\n"),
+	       "friction 0.8 -> 0.85 saved over the demo: its %d comment lines "
+	       "and every other line kept, 'friction: 0.85' in place", ncomments);
+	tap_ok(back && back->mu_bed == 0.85 && back->mu_head == 0.85,
+	       "the saved demo loads with friction 0.85");
+	if (text && lines_lost(orig, text) != 1)
+		tap_diag("saved:\n%s", text);
+	wall_free(back);
+	free(text);
+
+	/* more edits over that file: a default that changes (positions),
+	 * a block removed (omit), bed and head apart, fewer courses */
+	wall_free(w);
+	w = load(path);
+	c = finish(wedit_copy(w, NULL, -1, err));
+	c->anywhere = 1;
+	c->depth = 0.3;
+	c->mu_head = 0.5;
+	text = save_over(c, path, &back);
+	tap_ok(text && lines_lost(orig, text) == 2 &&
+	       back && back->anywhere && back->depth == 0.3 &&
+	       back->mu_bed == 0.85 && back->mu_head == 0.5,
+	       "positions anywhere, depth 0.3, head 0.5: loads so, only the "
+	       "friction and depth lines differ from the demo (positions added)");
+	if (text && lines_lost(orig, text) != 2)
+		tap_diag("saved:\n%s", text);
+	free(text);
+	wall_free(w);
+	w = back;
+	int k = wedit_block_at(w, 0.3, 1.1);
+	c = finish(wedit_copy(w, NULL, k, err));
+	text = save_over(c, path, &back);
+	tap_ok(text && k >= 0 && lines_lost(orig, text) == 2 &&
+	       strstr(text, "omit:") && back && back->nblocks == w->nblocks - 1,
+	       "a block removed: 'omit:' added to the layout, every comment kept");
+	if (text && lines_lost(orig, text) != 2)
+		tap_diag("saved:\n%s", text);
+	free(text);
+	wall_free(w);
+	wall_free(back);
+	free(orig);
+
+	/* a wall of explicit blocks: a block added is one line more, and
+	 * taking it out again gives the file back byte for byte */
+	orig = slurp(SRCDIR "/walls/two-block-stack.yaml", &olen);
+	f = fopen(path, "wb");
+	fwrite(orig, 1, olen, f);
+	fclose(f);
+	w = load(path);
+	char what[96];
+	c = finish(wedit_add_block(w, 0.6, 0.1, what, sizeof what, err));
+	text = save_over(c, path, &back);
+	int nl0 = 0, nl1 = 0;
+	for (const char *p = orig; *p; p++)
+		nl0 += *p == '\n';
+	for (const char *p = text ? text : ""; *p; p++)
+		nl1 += *p == '\n';
+	tap_ok(text && lines_lost(orig, text) == 0 && nl1 == nl0 + 1 &&
+	       back && back->nblocks == w->nblocks + 1,
+	       "two-block-stack + a block: every line kept, one line more "
+	       "(%d -> %d)", nl0, nl1);
+	free(text);
+	wall_free(w);
+	w = back;
+	int u = w ? wedit_block_at(w, 0.8, 0.1) : -1;
+	c = u >= 0 ? finish(wedit_copy(w, NULL, u, err)) : NULL;
+	text = save_over(c, path, &back);
+	tap_ok(text && !strcmp(text, orig),
+	       "and without it again: the file as it was, byte for byte");
+	free(text);
+	wall_free(w);
+	wall_free(back);
+	free(orig);
+	unlink(path);
+	rmdir(dir);
+}
+
 int main(void)
 {
 	struct wall *w = load(SRCDIR "/walls/demo.yaml");
@@ -219,6 +378,7 @@ int main(void)
 	test_layout(w);
 	test_stations(s);
 	test_cursor_turn(s);
+	test_save_keeps_comments();
 	wall_free(w);
 	wall_free(s);
 	return tap_done();
