@@ -39,7 +39,8 @@ enum sw_status wallfile_load_edited(const char *path,
 				    int nedits, struct wall **out, char *err);
 /* Write w as YAML that loads again to the same model: material, every
  * free block as explicit vertices, supports, loads, contacts, analysis,
- * tests.  Written to PATH.tmp, flushed, then renamed over PATH. */
+ * tests.  Written whole (outfile: PATH.tmp, flushed, renamed over PATH);
+ * PATH must be a regular file or a new one. */
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err);
 

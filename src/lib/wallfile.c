@@ -55,6 +55,7 @@
 #include <yaml.h>
 
 #include "slipwall/layout.h"
+#include "slipwall/outfile.h"
 #include "slipwall/wallfile.h"
 
 #define WALLFILE_MAX_DEPTH 64
@@ -1507,10 +1508,11 @@ static void save_wall(FILE *f, const struct wall *w)
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err)
 {
-	struct sw_whole out;
-	enum sw_status st = sw_whole_open(&out, path, err);
+	struct outfile out;
+	enum sw_status st = outfile_open(&out, path, NULL, 0, "the wall",
+					 err);
 	if (st != SW_OK)
 		return st;
 	save_wall(out.f, w);
-	return sw_whole_close(&out, err);
+	return outfile_commit(&out, err);
 }
