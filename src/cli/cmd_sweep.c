@@ -18,7 +18,13 @@
  *
  * Output: a table (value, accepted, p05 and its 99 % interval, p50, p95,
  * mechanisms), or --json; --csv FILE writes the table's rows; --out DIR
- * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).
+ * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).  The output
+ * policy (outfile.h): --csv and --out are checked before the first
+ * value; --csv is never the wall and is written whole (or into a
+ * stream); the signal handlers stay through the writing, which finishes
+ * the table and the CSV and cancels the figure.  A value that stops the
+ * sweep (a load point off the wall, a run that fails) keeps the values
+ * done: they are printed and written, then the message.
  */
 #include <errno.h>
 #include <math.h>
