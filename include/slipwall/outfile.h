@@ -14,7 +14,10 @@
  *  - A stream - a FIFO or a character device (/dev/null, /dev/stdout, a
  *    terminal) - is written directly, never replaced by a regular file,
  *    where the output allows it (OUTFILE_STREAM: run --samples, sweep
- *    --csv).  A FIFO that no process reads is never waited on in
+ *    --csv); so is one of the process's own descriptors (/dev/stdout,
+ *    /dev/fd/N: through a copy of it, at its offset, whatever it is:
+ *    `sweep --csv /dev/stdout > f` puts the CSV after the table in f).
+ *    A FIFO that no process reads is never waited on in
  *    silence: "slipwall: PATH: waiting for a process to read this FIFO"
  *    goes to stderr, then the open waits (a reader started beside the
  *    command, `cat FIFO &`, may come a moment later; Ctrl-C stops the

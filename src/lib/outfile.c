@@ -46,6 +46,24 @@ static int is_stream(mode_t m)
 	return S_ISFIFO(m) || S_ISCHR(m);
 }
 
+/* The descriptor path names when it is one of the process's own
+ * (/dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N), else -1: a
+ * stream output there is written through that descriptor, at its
+ * offset (`--csv /dev/stdout > f` appends to f after the table, where
+ * opening the path anew would truncate f, and a rename replace it). */
+static int own_fd(const char *path)
+{
+	if (!strcmp(path, "/dev/stdout"))
+		return STDOUT_FILENO;
+	if (!strcmp(path, "/dev/stderr"))
+		return STDERR_FILENO;
+	const char *p = !strncmp(path, "/dev/fd/", 8) ? path + 8 :
+			!strncmp(path, "/proc/self/fd/", 14) ? path + 14 : NULL;
+	if (!p || !*p || strlen(p) > 6 || strspn(p, "0123456789") != strlen(p))
+		return -1;
+	return atoi(p);
+}
+
 /* The directory of path (malloc'd): "." for a bare name. */
 static char *parent_of(const char *path)
 {
@@ -94,6 +112,15 @@ static enum sw_status check(const char *path, const char *const *inputs,
 			    int flags, const char *what, int dir, char *err)
 {
 	struct stat st;
+	int fd = flags & OUTFILE_STREAM ? own_fd(path) : -1;
+	if (fd >= 0 && fstat(fd, &st) == 0) {
+		int k = outfile_input(&st, inputs);
+		if (k >= 0)
+			return sw_fail(err, SW_EINPUT, "%s: this is the input "
+				       "file %s: %s would overwrite it", path,
+				       inputs[k], what);
+		return SW_OK;
+	}
 	if (stat(path, &st) != 0) {
 		if (errno != ENOENT)
 			return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
@@ -188,6 +215,17 @@ enum sw_status outfile_open(struct outfile *o, const char *path,
 	if (rc != SW_OK)
 		return rc;
 	struct stat st;
+	int own = flags & OUTFILE_STREAM ? own_fd(path) : -1;
+	if (own >= 0 && (own = dup(own)) >= 0) {
+		if (!(o->f = fdopen(own, "w"))) {
+			close(own);
+			return sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
+				       strerror(errno));
+		}
+		o->path = sw_xstrdup(path);
+		errno = 0;
+		return SW_OK;
+	}
 	int exists = stat(path, &st) == 0;
 	if (exists && is_stream(st.st_mode)) {
 		int fd = outfile_open_fd(path, 0, inputs, what, &st, &rc, err);

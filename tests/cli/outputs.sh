@@ -57,6 +57,26 @@ else
 		"$(wc -c <"$tmp/full.csv") bytes, was $(wc -c <"$tmp/full.ref"); $(ls "$tmp" | tr '\n' ' ')"
 fi
 
+# ---- streams are written, not replaced ---------------------------------------------
+# --csv /dev/stdout into a file: the CSV after the table (opening the path
+# anew truncated the file: fa21007 left the CSV alone, the table lost)
+"$bin" sweep $block $sweep3 --csv /dev/stdout >"$tmp/both" 2>"$tmp/e"
+rc=$?
+if [ $rc = 0 ] && head -n 1 "$tmp/both" | grep -q '^Single block' &&
+   [ "$(grep -c '^0\.[345]  ' "$tmp/both")" = 3 ] && [ "$(grep -c '^friction,samples' "$tmp/both")" = 1 ] &&
+   [ "$(tail -n 1 "$tmp/both" | cut -d, -f1)" = 0.5 ]; then
+	ok "sweep --csv /dev/stdout > FILE: the table, then the CSV, in FILE"
+else
+	not_ok "sweep --csv /dev/stdout > FILE keeps the table" "exit $rc" "$(head -n 3 "$tmp/both")"
+fi
+"$bin" sweep $block $sweep3 --csv /dev/null >/dev/null 2>"$tmp/e"
+rc=$?
+if [ $rc = 0 ] && [ -c /dev/null ]; then
+	ok "sweep --csv /dev/null: exit 0, /dev/null still a device"
+else
+	not_ok "sweep --csv /dev/null" "exit $rc" "$(head -c 300 "$tmp/e")"
+fi
+
 # ---- a signal in sweep's output phase --------------------------------------------
 # 1000 values of one sample: the table is 85 KB, more than a pipe holds.
 # stdout is a FIFO; its first line read means every value is sampled and
