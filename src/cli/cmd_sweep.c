@@ -673,10 +673,8 @@ int cmd_sweep(int argc, char **argv)
 		rc = sw_status_exit(SW_EINTR);
 	} else if (late) {
 		fprintf(stderr, "slipwall sweep: interrupted (%s) while "
-			"writing: the %d values are in every file written, "
-			"each whole%s\n", strsignal(late), done,
-			a.out ? "; the figure's formats not drawn are missing" :
-			"");
+			"writing: every file written holds the %d values, "
+			"whole\n", strsignal(late), done);
 		rc = sw_status_exit(SW_EINTR);
 	}
 	free(pt);
