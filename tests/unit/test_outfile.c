@@ -143,6 +143,18 @@ static void test_streams(void)
 	tap_ok(rc == SW_EIO && strstr(err, "a FIFO"),
 	       "... refused where a stream is not allowed (%s)",
 	       err + strlen(dir) + 1);
+	/* one of the process's own descriptors: through a copy of it */
+	int pfd[2];
+	if (pipe(pfd) == 0) {
+		char fdpath[64];
+		snprintf(fdpath, sizeof fdpath, "/dev/fd/%d", pfd[1]);
+		rc = write_to(fdpath, NULL, OUTFILE_STREAM, "own\n", err);
+		close(pfd[1]);
+		n = read(pfd[0], buf, sizeof buf - 1);
+		tap_ok(rc == SW_OK && n == 4 && !memcmp(buf, "own\n", 4),
+		       "/dev/fd/N: written through the descriptor");
+		close(pfd[0]);
+	}
 	rc = write_to(at("real"), NULL, OUTFILE_STREAM, "x\n", err);
 	tap_ok(rc == SW_EIO && strstr(err, "Is a directory"),
 	       "a directory is refused (%s)", err);
