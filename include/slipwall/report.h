@@ -136,10 +136,17 @@ struct report_sweep {
 /* Draw sweep.svg, sweep.pdf and sweep.png (o->formats) into dir
  * (created if missing): p05 with its 99 % band, p50 and p95 against
  * the value, in the style of the report's figures.  Errors as for
- * report_write. */
+ * report_write; o->cancel stops it between two formats (SW_EINTR): the
+ * formats drawn before are whole, the others not written. */
 enum sw_status report_write_sweep(const struct report_sweep *s,
 				  const char *dir, const struct report_opts *o,
 				  char *err);
+
+/* The files report_write (sweep 0) or report_write_sweep (sweep 1)
+ * writes into its directory, or removes there (an older report's
+ * figures): "frequencies.svg", ..., "report.md"; NULL-terminated.  For
+ * the output policy's check of the directory (outfile_check_dir). */
+const char *const *report_files(int sweep);
 
 /* Free the process-wide caches of cairo and fontconfig (fonts, glyphs),
  * so that a leak checker sees a clean exit.  Call once, at exit, when

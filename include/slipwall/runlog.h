@@ -36,7 +36,9 @@ struct runlog;
  * path that is one of them, however spelled (device and inode), is
  * refused with SW_EINPUT, and so is a regular file that another process
  * holds open through runlog_create (an exclusive flock, held until
- * runlog_close).  SW_EIO when the file cannot be created. */
+ * runlog_close).  SW_EIO when the file cannot be created.  A FIFO or a
+ * character device is written to, not replaced; a FIFO that no process
+ * reads is waited for, said on stderr first (outfile.h). */
 enum sw_status runlog_create(struct runlog **l, const char *path,
 			     const struct wall *w, const char *const *keep,
 			     char *err);

@@ -22,6 +22,10 @@
 #include "slipwall/status.h"
 /* sys       the monotonic clock and mkdir -p, one copy each */
 #include "slipwall/sys.h"
+/* outfile   the one output policy: never an input, files written whole
+ *           (PATH.tmp + rename), streams written directly, directories
+ *           checked before any work */
+#include "slipwall/outfile.h"
 /* text      lines read with a bound; names and messages made safe to
  *           print; whole-string number parsing */
 #include "slipwall/text.h"

@@ -47,21 +47,6 @@ void *sw_xcalloc(size_t n, size_t size);
 void *sw_xrealloc(void *p, size_t n);
 char *sw_xstrdup(const char *s);
 
-/* A file written whole or not at all.  sw_whole_open opens PATH.tmp for
- * writing (w->f); sw_whole_close flushes it to the disk (fsync), closes
- * it and renames it over PATH.  Either one, failing, removes PATH.tmp
- * and returns SW_EIO with "PATH.tmp: cannot write: why" (the temporary
- * file cannot be created) or "PATH: cannot write: why" (anything after:
- * a write, the flush, the rename).  A crash or a kill in between leaves
- * the old PATH, or none, never half of it.  After a successful open,
- * sw_whole_close must be called, whatever was written. */
-struct sw_whole {
-	FILE *f;
-	char *tmp, *path;
-};
-enum sw_status sw_whole_open(struct sw_whole *w, const char *path, char *err);
-enum sw_status sw_whole_close(struct sw_whole *w, char *err);
-
 /* The program's version ("0.1.0"), from meson.build. */
 const char *sw_version(void);
 

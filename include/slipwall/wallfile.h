@@ -43,7 +43,8 @@ enum sw_status wallfile_load_edited(const char *path,
  * is kept (comments, formatting) and only the values that differ are
  * changed in it, if the result loads to w; else the whole file is
  * written under that file's top comments (docs/wall-format.md,
- * "Saving").  Written to PATH.tmp, flushed, then renamed over PATH. */
+ * "Saving").  Written whole (outfile: PATH.tmp, flushed, renamed over
+ * PATH); PATH must be a regular file or a new one. */
 enum sw_status wallfile_save(const struct wall *w, const char *path,
 			     char *err);
 

@@ -36,6 +36,7 @@
 #include "slipwall/collapse.h"
 #include "override.h"
 #include "slipwall/mc.h"
+#include "slipwall/outfile.h"
 #include "slipwall/report.h"
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
@@ -470,6 +471,27 @@ static int write_report(const struct report_args *a, const struct wall *w,
 	return status;
 }
 
+/* --out before any sampling (the output policy, outfile.h): a
+ * directory (a symbolic link to one is one) or one that can be made,
+ * none of its report files an input.  0 or the exit status. */
+static int check_out(const struct report_args *a)
+{
+	const char *in[4];
+	int k = 0;
+	in[k++] = a->wall;
+	if (a->samples)
+		in[k++] = a->samples;
+	if (a->tests)
+		in[k++] = a->tests;
+	in[k] = NULL;
+	char err[SW_ERRLEN];
+	enum sw_status st = outfile_check_dir(a->out, report_files(0), in,
+					      "the report", err);
+	if (st != SW_OK)
+		cli_errorf("slipwall report: %s", err);
+	return sw_status_exit(st);
+}
+
 static int report_main(int argc, char **argv)
 {
 	struct report_args a;
@@ -483,6 +505,8 @@ static int report_main(int argc, char **argv)
 	tally_init(&d.t, w);
 	mc_config_default(&d.cfg, w);
 	status = cli_check_depth(CMD, w, a.wall, a.depth);
+	if (!status)
+		status = check_out(&a);
 	if (!status && !(status = cli_tests(a.tests, w, &d.tests, &d.ntests)))
 		status = a.samples ? model_of_file(&a, w, &d) :
 			 model_of_run(&a, w, &d);

@@ -18,7 +18,13 @@
  *
  * Output: a table (value, accepted, p05 and its 99 % interval, p50, p95,
  * mechanisms), or --json; --csv FILE writes the table's rows; --out DIR
- * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).
+ * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).  The output
+ * policy (outfile.h): --csv and --out are checked before the first
+ * value; --csv is never the wall and is written whole (or into a
+ * stream); the signal handlers stay through the writing, which finishes
+ * the table and the CSV and cancels the figure.  A value that stops the
+ * sweep (a load point off the wall, a run that fails) keeps the values
+ * done: they are printed and written, then the message.
  */
 #include <errno.h>
 #include <math.h>
@@ -32,6 +38,7 @@
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
+#include "slipwall/outfile.h"
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
 #include "slipwall/run.h"
@@ -54,7 +61,8 @@ struct sweep_args {
 	const char *range;	/* as given */
 	double *val;		/* the values (friction, depth; load-at: t) */
 	double (*at)[2];	/* load-at: the points */
-	int nval;
+	int nval;		/* the values (after a stop: those done) */
+	int asked;		/* the values of the range */
 	struct overrides ov;	/* fixed for every value */
 };
 
@@ -237,6 +245,7 @@ static int parse_args(int argc, char **argv, struct sweep_args *a)
 		return cli_usage_error(CMD, "what to sweep? --friction A:B:STEP, "
 				       "--depth A:B:STEP or --load-at "
 				       "X1,Y1:X2,Y2:N");
+	a->asked = a->nval;
 	return 0;
 }
 
@@ -322,15 +331,23 @@ static const char *param_name(enum sweep_param p)
 static void print_table(const struct sweep_args *a, const struct wall *w,
 			const struct point *pt, unsigned long seed, long n)
 {
-	printf("%s  [%s]\n", w->name ? w->name : a->wall, a->wall);
+	/* names, paths and override values are the user's: their control
+	 * characters printed as escapes (cli_text) */
+	printf("%s  [%s]\n", cli_text(w->name ? w->name : a->wall),
+	       cli_text(a->wall));
 	if (a->ov.n > 0) {
 		char d[1024];
 		override_describe(&a->ov, d, sizeof d);
-		printf("overrides: %s\n", d);
+		printf("overrides: %s\n", cli_text(d));
 	}
-	printf("sweep of %s %s: %d values, %ld samples each, seed %lu (the "
+	char count[64];
+	if (a->nval < a->asked)
+		snprintf(count, sizeof count, "%d of %d", a->nval, a->asked);
+	else
+		snprintf(count, sizeof count, "%d", a->nval);
+	printf("sweep of %s %s: %s values, %ld samples each, seed %lu (the "
 	       "same contact draws at every value)\n\n", param_name(a->param),
-	       a->range, a->nval, n, seed);
+	       cli_text(a->range), count, n, seed);
 	if (a->param == SW_LOAD_AT)
 		printf("%-10s %-10s %-10s", "distance", "x", "y");
 	else
@@ -369,7 +386,7 @@ static void print_json(const struct sweep_args *a, const struct point *pt,
 	json_string(&j, a->range);
 	override_json(&a->ov, &j);
 	json_key(&j, "seed");
-	json_int(&j, (long long)seed);
+	json_uint(&j, seed);
 	json_key(&j, "samples");
 	json_int(&j, n);
 	json_key(&j, "points");
@@ -414,14 +431,20 @@ static void print_json(const struct sweep_args *a, const struct point *pt,
 	json_end(&j);
 }
 
+/* --csv: written whole (PATH.tmp, then renamed: a full disk leaves the
+ * old file), or straight into a stream (a FIFO, /dev/stdout); never
+ * over the wall (outfile.h). */
 static int write_csv(const struct sweep_args *a, const struct point *pt)
 {
-	FILE *f = fopen(a->csv, "w");
-	if (!f) {
-		fprintf(stderr, "slipwall sweep: %s: cannot write: %s\n", a->csv,
-			strerror(errno));
+	const char *in[] = {a->wall, NULL};
+	char err[SW_ERRLEN];
+	struct outfile o;
+	if (outfile_open(&o, a->csv, in, OUTFILE_STREAM, "the CSV", err) !=
+	    SW_OK) {
+		cli_errorf("slipwall sweep: %s", err);
 		return 1;
 	}
+	FILE *f = o.f;
 	fprintf(f, "%s,%ssamples,accepted,p05,p05_lo,p05_hi,p50,p95,"
 		"mechanisms\n", a->param == SW_LOAD_AT ? "distance" :
 		param_name(a->param), a->param == SW_LOAD_AT ? "x,y," : "");
@@ -434,16 +457,18 @@ static int write_csv(const struct sweep_args *a, const struct point *pt)
 			p->samples, p->accepted, p->s.p05, p->s.p05_lo,
 			p->s.p05_hi, p->s.p50, p->s.p95, p->mechanisms);
 	}
-	if (fclose(f) != 0) {
-		fprintf(stderr, "slipwall sweep: %s: cannot write: %s\n", a->csv,
-			strerror(errno));
+	if (outfile_commit(&o, err) != SW_OK) {
+		cli_errorf("slipwall sweep: %s", err);
 		return 1;
 	}
 	return 0;
 }
 
+/* --out: the figure, its formats cancelled by a signal when cancel is
+ * set (report.h). */
 static int write_figure(const struct sweep_args *a, const struct wall *w,
-			const struct point *pt, unsigned long seed, long n)
+			const struct point *pt, unsigned long seed, long n,
+			int cancel)
 {
 	struct report_sweep_point *rp = sw_xmalloc(sizeof *rp *
 						   (size_t)a->nval);
@@ -470,21 +495,123 @@ static int write_figure(const struct sweep_args *a, const struct wall *w,
 	struct report_sweep rs = {w, xlabel, cap, sw_version(), rp,
 				  a->nval};
 	char err[SW_ERRLEN];
-	enum sw_status st = report_write_sweep(&rs, a->out, NULL, err);
+	struct report_opts ro;
+	report_opts_default(&ro);
+	ro.cancel = cancel ? run_signal_flag() : NULL;
+	enum sw_status st = report_write_sweep(&rs, a->out, &ro, err);
 	free(rp);
 	report_cleanup();
 	if (st != SW_OK) {
-		fprintf(stderr, "slipwall sweep: %s\n", err);
+		cli_errorf("slipwall sweep: %s", err);
 		return 1;
 	}
 	if (!a->json)
 		printf("\n%s/sweep.svg, .pdf, .png: p05 with its 99 %% interval, "
-		       "p50 and p95 against the %s\n", a->out,
+		       "p50 and p95 against the %s\n", cli_text(a->out),
 		       param_name(a->param));
 	return 0;
 }
 
 /* ---- the command -------------------------------------------------------------- */
+
+/* The outputs, before any sampling (the output policy, outfile.h):
+ * --csv a file (written whole) or a stream, --out a directory or one
+ * that can be made; neither the wall.  0 or the exit status. */
+static int check_outputs(const struct sweep_args *a)
+{
+	const char *in[] = {a->wall, NULL};
+	char err[SW_ERRLEN];
+	enum sw_status st = SW_OK;
+	if (a->csv)
+		st = outfile_check(a->csv, in, OUTFILE_STREAM, "the CSV", err);
+	if (st == SW_OK && a->out)
+		st = outfile_check_dir(a->out, report_files(1), in,
+				       "the figure", err);
+	if (st != SW_OK)
+		cli_errorf("slipwall sweep: %s", err);
+	return sw_status_exit(st);
+}
+
+/* "value 4 of 5 (--load-at 0,1.325)", for the messages. */
+static void value_name(const struct sweep_args *a, int k, char *buf,
+		       size_t len)
+{
+	if (a->param == SW_LOAD_AT)
+		snprintf(buf, len, "value %d of %d (--load-at %.6g,%.6g)", k + 1,
+			 a->nval, a->at[k][0], a->at[k][1]);
+	else
+		snprintf(buf, len, "value %d of %d (--%s %.6g)", k + 1, a->nval,
+			 param_name(a->param), a->val[k]);
+}
+
+/* Run the values in order until the last, a signal or a failure.
+ * *done: the values finished (pt[0..*done)), *failed: those of them
+ * without an accepted sample.  Returns 0, or the exit status of the
+ * failure after its message: 2 when a value makes the wall invalid (a
+ * load point off the wall), 1 when its run failed. */
+static int sample_values(const struct sweep_args *a, unsigned long seed,
+			 long n, struct point *pt, int *done, int *failed)
+{
+	char what[160], err[SW_ERRLEN];
+	int rc = 0;
+	*done = *failed = 0;
+	for (int k = 0; k < a->nval; k++) {
+		struct wall *w = NULL;
+		memset(&pt[k], 0, sizeof pt[k]);
+		pt[k].value = a->val[k];
+		if (a->at) {
+			pt[k].at[0] = a->at[k][0];
+			pt[k].at[1] = a->at[k][1];
+		}
+		value_name(a, k, what, sizeof what);
+		if ((rc = wall_for(a, k, &w))) {
+			/* wall_for said why, FILE: what is wrong */
+			cli_errorf("slipwall sweep: %s: the wall is invalid "
+				   "there (above)", what);
+			break;
+		}
+		struct mc_config cfg;
+		mc_config_default(&cfg, w);
+		cfg.n = n;
+		cfg.seed = seed;
+		cfg.threads = a->threads ? a->threads : mc_ncpu();
+		cfg.depth = a->param == SW_DEPTH ? a->val[k] : -1;
+		enum sw_status vs = run_value(&cfg, &pt[k], k, a->nval, err);
+		wall_free(w);
+		if (vs == SW_EINTR)
+			break;
+		if (vs != SW_OK) {
+			cli_errorf("slipwall sweep: %s: %s", what, err);
+			rc = 1;
+			break;
+		}
+		*failed += pt[k].accepted == 0;
+		++*done;
+	}
+	if (isatty(STDERR_FILENO))
+		fprintf(stderr, "\r\033[K");
+	return rc;
+}
+
+/* The values done (a->nval of them): the table or the JSON, --csv, the
+ * figure (cancelled between two formats by a signal when cancel is
+ * set).  0, or 1 after the message. */
+static int write_outputs(const struct sweep_args *a, const struct wall *base,
+			 const struct point *pt, unsigned long seed, long n,
+			 int cancel)
+{
+	if (a->json)
+		print_json(a, pt, seed, n);
+	else
+		print_table(a, base, pt, seed, n);
+	fflush(stdout);
+	int rc = 0;
+	if (a->csv)
+		rc = write_csv(a, pt);
+	if (!rc && a->out)
+		rc = write_figure(a, base, pt, seed, n, cancel);
+	return rc;
+}
 
 int cmd_sweep(int argc, char **argv)
 {
@@ -500,76 +627,54 @@ int cmd_sweep(int argc, char **argv)
 		return rc;
 	}
 	if ((rc = cli_check_depth(CMD, base, a.wall,
-				  a.param == SW_DEPTH ? 0 : -1)))
+				  a.param == SW_DEPTH ? 0 : -1)) ||
+	    (rc = check_outputs(&a)))
 		goto out;
 	unsigned long seed = a.seed_set ? a.seed : base->seed;
 	long n = a.n_set ? a.n : base->samples;
 	struct point *pt = sw_xmalloc(sizeof *pt * (size_t)a.nval);
-	int failed = 0, done = 0;
-	/* SIGINT, SIGTERM, SIGHUP (run.h's one policy): the value being
-	 * run is dropped, the values done are written, exit 1 */
+	int failed, done, nval = a.nval;
+	/* SIGINT, SIGTERM, SIGHUP (run.h's one policy), to the end: during
+	 * the sampling the value being run is dropped and the values done
+	 * are written (the figure too); during the writing the table and
+	 * the CSV are finished and the figure is not drawn (the formats
+	 * drawn are whole).  Exit 1 either way, with a message. */
 	struct run_signals caught;
 	run_signals_catch(&caught, 1);
-	for (int k = 0; k < a.nval && !rc; k++) {
-		struct wall *w = NULL;
-		memset(&pt[k], 0, sizeof pt[k]);
-		pt[k].value = a.val[k];
-		if (a.at) {
-			pt[k].at[0] = a.at[k][0];
-			pt[k].at[1] = a.at[k][1];
-		}
-		if ((rc = wall_for(&a, k, &w)))
-			break;
-		struct mc_config cfg;
-		mc_config_default(&cfg, w);
-		cfg.n = n;
-		cfg.seed = seed;
-		cfg.threads = a.threads ? a.threads : mc_ncpu();
-		cfg.depth = a.param == SW_DEPTH ? a.val[k] : -1;
-		char err[SW_ERRLEN];
-		enum sw_status vs = run_value(&cfg, &pt[k], k, a.nval, err);
-		wall_free(w);
-		if (vs == SW_EINTR)
-			break;
-		if (vs != SW_OK) {
-			fprintf(stderr, "slipwall sweep: %s\n", err);
-			rc = 1;
-		}
-		failed += pt[k].accepted == 0;
-		done++;
+	rc = sample_values(&a, seed, n, pt, &done, &failed);
+	int intr = run_signal();
+	a.nval = done;	/* the values done, each whole */
+	if (a.out && done < 2 && done < nval) {
+		fprintf(stderr, "slipwall sweep: no figure: fewer than two "
+			"values were done\n");
+		a.out = NULL;
 	}
+	/* nothing to write when the first value failed; an interrupted
+	 * sweep says what it did, even nothing */
+	int wrc = done > 0 || intr ? write_outputs(&a, base, pt, seed, n,
+						   !intr) : 0;
+	int late = intr ? 0 : run_signal();
 	run_signals_restore(&caught);
-	if (isatty(STDERR_FILENO))
-		fprintf(stderr, "\r\033[K");
-	int intr = run_signal() != 0;
-	if (intr) {
-		a.nval = done;	/* the values done, each whole */
-		if (a.out && done < 2) {
-			fprintf(stderr, "slipwall sweep: no figure: fewer than "
-				"two values were done\n");
-			a.out = NULL;
-		}
-	}
-	if (!rc) {
-		if (a.json)
-			print_json(&a, pt, seed, n);
-		else
-			print_table(&a, base, pt, seed, n);
-		fflush(stdout);
-		if (a.csv)
-			rc = write_csv(&a, pt);
-		if (!rc && a.out)
-			rc = write_figure(&a, base, pt, seed, n);
-		if (!rc && failed) {
-			fprintf(stderr, "slipwall sweep: %d value%s gave no "
-				"accepted sample\n", failed, failed > 1 ? "s" : "");
-			rc = 1;
-		}
+	if (rc && done > 0 && !wrc)
+		fprintf(stderr, "slipwall sweep: the %d value%s before it %s "
+			"written\n", done, done == 1 ? "" : "s",
+			done == 1 ? "is" : "are");
+	if (!rc)
+		rc = wrc;
+	if (!rc && failed) {
+		fprintf(stderr, "slipwall sweep: %d value%s gave no accepted "
+			"sample\n", failed, failed > 1 ? "s" : "");
+		rc = 1;
 	}
 	if (intr) {
 		fprintf(stderr, "slipwall sweep: interrupted (%s): the %d "
-			"value%s done %s written\n", strsignal(run_signal()),
-			done, done == 1 ? "" : "s", done == 1 ? "is" : "are");
+			"value%s done %s written\n", strsignal(intr), done,
+			done == 1 ? "" : "s", done == 1 ? "is" : "are");
+		rc = sw_status_exit(SW_EINTR);
+	} else if (late) {
+		fprintf(stderr, "slipwall sweep: interrupted (%s) while "
+			"writing: every file written holds the %d values, "
+			"whole\n", strsignal(late), done);
 		rc = sw_status_exit(SW_EINTR);
 	}
 	free(pt);

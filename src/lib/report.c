@@ -1213,6 +1213,29 @@ const struct figdef report_figures[] = {
 };
 const int report_nfigures = sizeof report_figures / sizeof report_figures[0];
 
+const char *const *report_files(int sweep)
+{
+	static const char *const sweep_files[] = {"sweep.svg", "sweep.pdf",
+						  "sweep.png", NULL};
+	static char names[sizeof report_figures / sizeof report_figures[0]]
+			 [3][64];
+	static const char *files[sizeof names / sizeof names[0] * 3 + 2];
+	static const char *const ext[] = {"svg", "pdf", "png"};
+	if (sweep)
+		return sweep_files;
+	if (!files[0]) {
+		int n = 0;
+		for (int i = 0; i < report_nfigures; i++)
+			for (int k = 0; k < 3; k++) {
+				snprintf(names[i][k], sizeof names[i][k], "%s.%s",
+					 report_figures[i].name, ext[k]);
+				files[n++] = names[i][k];
+			}
+		files[n] = "report.md";
+	}
+	return files;
+}
+
 int report_figure_wanted(const struct rctx *c, int i)
 {
 	return strcmp(report_figures[i].name, "mechanisms") || c->ntop > 0;
@@ -1337,12 +1360,22 @@ static char *path_join(const char *dir, const char *name)
 static enum sw_status stage_open(struct stage *s, const char *dir, char *err)
 {
 	memset(s, 0, sizeof *s);
+	/* a symbolic link to a directory is that directory: the report is
+	 * staged beside the directory it names and renamed into it (the
+	 * link stays a link) */
+	struct stat ls, ds;
+	char *real = lstat(dir, &ls) == 0 && S_ISLNK(ls.st_mode) &&
+		     stat(dir, &ds) == 0 && S_ISDIR(ds.st_mode) ?
+		     realpath(dir, NULL) : NULL;
+	if (real)
+		dir = real;
 	size_t len = strlen(dir);
 	while (len > 1 && dir[len - 1] == '/')
 		len--;
 	char *d = sw_xmalloc(len + 1);
 	memcpy(d, dir, len);
 	d[len] = 0;
+	free(real);
 	char *slash = strrchr(d, '/');
 	const char *base = slash ? slash + 1 : d;
 	char *parent = slash ? (slash == d ? sw_xstrdup("/") :
@@ -1656,9 +1689,18 @@ enum sw_status report_write_sweep(const struct report_sweep *s,
 	c.w = s->w;
 	c.sweep = s;
 	report_load_unit(s->w, c.axis, sizeof c.axis, &c.unit);
-	for (int fmt = REPORT_SVG; fmt <= REPORT_PNG && st == SW_OK; fmt <<= 1)
-		if (o->formats & fmt)
+	/* a cancel stops between two formats: the figures drawn are whole,
+	 * the one being drawn is finished first */
+	for (int fmt = REPORT_SVG, k = 0; fmt <= REPORT_PNG && st == SW_OK;
+	     fmt <<= 1, k++) {
+		if (!(o->formats & fmt))
+			continue;
+		if (cancelled(o))
+			st = sw_fail(err, SW_EINTR, "%s/%s: interrupted: not "
+				     "written", dir, report_files(1)[k]);
+		else
 			st = render(&fig, &c, dir, dir, fmt, o, err);
+	}
 	return st;
 }
 

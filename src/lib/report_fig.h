@@ -63,7 +63,7 @@ extern const int report_nfigures;
 /* Is figure i drawn for c (the mechanisms need some)? */
 int report_figure_wanted(const struct rctx *c, int i);
 
-/* Write DIR/report.md for c, whole or not at all (sw_whole).  SW_OK or
+/* Write DIR/report.md for c, whole or not at all (outfile).  SW_OK or
  * SW_EIO with a message in err. */
 enum sw_status report_md_write(const struct rctx *c, const char *dir,
 			       const struct report_opts *o, char *err);

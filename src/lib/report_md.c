@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "report_fig.h"
+#include "slipwall/outfile.h"
 #include "slipwall/sample.h"
 #include "slipwall/text.h"
 
@@ -191,8 +192,9 @@ enum sw_status report_md_write(const struct rctx *c, const char *dir,
 	const struct report_run *r = &c->in->run;
 	char path[4096];
 	snprintf(path, sizeof path, "%s/report.md", dir);
-	struct sw_whole out;
-	enum sw_status st = sw_whole_open(&out, path, err);
+	struct outfile out;
+	enum sw_status st = outfile_open(&out, path, NULL, 0, "report.md",
+					 err);
 	if (st != SW_OK)
 		return st;
 	FILE *f = out.f;
@@ -221,5 +223,5 @@ enum sw_status report_md_write(const struct rctx *c, const char *dir,
 	free(t.samples_file);
 	free(t.tests_source);
 	free(t.note);
-	return sw_whole_close(&out, err);
+	return outfile_commit(&out, err);
 }

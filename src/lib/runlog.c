@@ -25,6 +25,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "slipwall/outfile.h"
 #include "slipwall/runlog.h"
 #include "slipwall/text.h"
 
@@ -94,15 +95,6 @@ static enum sw_status flush_row(struct runlog *l, char *err)
 	return SW_OK;
 }
 
-/* Is path the file f (the same device and inode, whatever the
- * spelling of either path)? */
-static int same_file(const struct stat *f, const char *path)
-{
-	struct stat p;
-	return stat(path, &p) == 0 && p.st_dev == f->st_dev &&
-	       p.st_ino == f->st_ino;
-}
-
 static void runlog_free(struct runlog *l)
 {
 	free(l->buf);
@@ -116,25 +108,14 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 {
 	*out = NULL;
 	/* not O_TRUNC: the file is only cut once it is known to be none
-	 * of the inputs and not another run's */
-	int fd = open(path, O_WRONLY | O_CREAT | O_CLOEXEC, 0666);
-	if (fd < 0)
-		return sw_fail(err, SW_EIO, "%s: cannot create: %s", path,
-			       strerror(errno));
+	 * of the inputs and not another run's; a FIFO that no process
+	 * reads is refused at once (outfile.h) */
 	struct stat st;
-	if (fstat(fd, &st) != 0) {
-		int e = errno;
-		close(fd);
-		return sw_fail(err, SW_EIO, "%s: %s", path, strerror(e));
-	}
-	for (int i = 0; keep && keep[i]; i++) {
-		if (same_file(&st, keep[i])) {
-			close(fd);
-			return sw_fail(err, SW_EINPUT, "%s: this is the input "
-				       "file %s: the samples would overwrite it",
-				       path, keep[i]);
-		}
-	}
+	enum sw_status ost;
+	int fd = outfile_open_fd(path, 0, keep, "the samples", &st, &ost,
+				 err);
+	if (fd < 0)
+		return ost;
 	if (S_ISREG(st.st_mode)) {
 		if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
 			int e = errno;

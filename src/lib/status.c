@@ -1,5 +1,5 @@
-/* status.c - the status table, error formatting, checked allocation,
- * files written whole or not at all. */
+/* status.c - the status table, error formatting, checked allocation.
+ * (Files written whole: outfile.c.) */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,48 +68,6 @@ char *sw_xstrdup(const char *s)
 	char *d = sw_xmalloc(n);
 	memcpy(d, s, n);
 	return d;
-}
-
-enum sw_status sw_whole_open(struct sw_whole *w, const char *path, char *err)
-{
-	size_t n = strlen(path) + 5;
-	w->tmp = sw_xmalloc(n);
-	snprintf(w->tmp, n, "%s.tmp", path);
-	w->f = fopen(w->tmp, "w");
-	if (!w->f) {
-		enum sw_status st = sw_fail(err, SW_EIO, "%s: cannot write: %s",
-					    w->tmp, strerror(errno));
-		free(w->tmp);
-		w->tmp = NULL;
-		return st;
-	}
-	w->path = sw_xstrdup(path);
-	errno = 0;	/* a failed write below leaves its reason here */
-	return SW_OK;
-}
-
-enum sw_status sw_whole_close(struct sw_whole *w, char *err)
-{
-	int e = 0;
-	if (ferror(w->f) || fflush(w->f) != 0)
-		e = errno ? errno : EIO;
-	if (!e && fsync(fileno(w->f)) != 0)
-		e = errno;
-	if (fclose(w->f) != 0 && !e)
-		e = errno ? errno : EIO;
-	if (!e && rename(w->tmp, w->path) != 0)
-		e = errno;
-	enum sw_status st = SW_OK;
-	if (e) {
-		unlink(w->tmp);
-		st = sw_fail(err, SW_EIO, "%s: cannot write: %s", w->path,
-			     strerror(e));
-	}
-	free(w->tmp);
-	free(w->path);
-	w->f = NULL;
-	w->tmp = w->path = NULL;
-	return st;
 }
 
 const char *sw_version(void)

@@ -65,6 +65,7 @@
 #include <yaml.h>
 
 #include "slipwall/layout.h"
+#include "slipwall/outfile.h"
 #include "slipwall/wallfile.h"
 #include "wallkeep.h"
 
@@ -1721,11 +1722,12 @@ enum sw_status wallfile_save(const struct wall *w, const char *path,
 	if (!text)
 		return sw_fail(err, SW_EIO, "%s: out of memory", path);
 	text = save_keeping(w, text, &len);
-	struct sw_whole out;
-	enum sw_status st = sw_whole_open(&out, path, err);
+	struct outfile out;
+	enum sw_status st = outfile_open(&out, path, NULL, 0, "the wall",
+					 err);
 	if (st == SW_OK) {
 		fwrite(text, 1, len, out.f);
-		st = sw_whole_close(&out, err);
+		st = outfile_commit(&out, err);
 	}
 	free(text);
 	return st;

@@ -4,7 +4,9 @@
  *
  * Save asks for the wall's path (default: the samples file's with
  * .yaml) and writes the wall with wallfile_save (PATH.tmp then rename)
- * and a JSON summary of the run beside it (.json, same way).  Open asks
+ * and a JSON summary of the run beside it (.json, same way), after
+ * checking both against the output policy (outfile.h: not the samples
+ * file being streamed, not a FIFO, a device or a directory).  Open asks
  * for a path; a file that does not load leaves the current wall and
  * shows the reader's FILE:LINE:COLUMN message.  Report writes what
  * `slipwall report` writes, for the current run.
@@ -17,6 +19,7 @@
 #include <sys/stat.h>
 
 #include "slipwall/json.h"
+#include "slipwall/outfile.h"
 #include "slipwall/stats.h"
 #include "slipwall/report.h"
 #include "slipwall/wallfile.h"
@@ -89,15 +92,33 @@ static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
 	json_end(&j);
 }
 
-/* Write the summary whole or not at all (PATH.tmp, then renamed). */
+/* Write the summary whole or not at all (outfile: PATH.tmp, then
+ * renamed), never over an input. */
 static int tui_io_summary(struct tui *t, const char *path,
-			    const char *wallpath, char *err)
+			  const char *wallpath, const char *const *inputs,
+			  char *err)
 {
-	struct sw_whole out;
-	if (sw_whole_open(&out, path, err) != SW_OK)
+	struct outfile out;
+	if (outfile_open(&out, path, inputs, 0, "the summary", err) != SW_OK)
 		return -1;
 	tui_io_json(t, out.f, wallpath);
-	return sw_whole_close(&out, err) == SW_OK ? 0 : -1;
+	return outfile_commit(&out, err) == SW_OK ? 0 : -1;
+}
+
+/* The summary's path beside the wall's: PATH without .yaml, plus
+ * .json.  0, or -1 when it is too long. */
+static int tui_io_json_path(const char *path, char *json, size_t len)
+{
+	snprintf(json, len, "%s", path);
+	char *dot = strrchr(json, '.');
+	char *slash = strrchr(json, '/');
+	if (dot && (!slash || dot > slash) &&
+	    (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
+		*dot = 0;
+	if (strlen(json) + 6 > len)
+		return -1;
+	strcat(json, ".json");
+	return 0;
 }
 
 static void tui_io_save_to(struct tui *t, const char *path)
@@ -105,6 +126,19 @@ static void tui_io_save_to(struct tui *t, const char *path)
 	char err[SW_ERRLEN], json[PATH_MAX];
 	if (!path[0]) {
 		tui_message(t, 1, "save: no path given");
+		return;
+	}
+	if (tui_io_json_path(path, json, sizeof json)) {
+		tui_message(t, 1, "save: path too long");
+		return;
+	}
+	/* the output policy (outfile.h): neither file may be the samples
+	 * file being streamed, nor a FIFO, a device or a directory; both
+	 * are checked before either is written */
+	const char *inputs[] = {t->run.csv[0] ? t->run.csv : NULL, NULL};
+	if (outfile_check(path, inputs, 0, "the wall", err) != SW_OK ||
+	    outfile_check(json, inputs, 0, "the summary", err) != SW_OK) {
+		tui_message(t, 1, "save: %s: nothing saved", err);
 		return;
 	}
 	/* analysis.samples follows the target the user set */
@@ -116,18 +150,7 @@ static void tui_io_save_to(struct tui *t, const char *path)
 		tui_message(t, 1, "save: %s", err);
 		return;
 	}
-	snprintf(json, sizeof json, "%s", path);
-	char *dot = strrchr(json, '.');
-	char *slash = strrchr(json, '/');
-	if (dot && (!slash || dot > slash) &&
-	    (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
-		*dot = 0;
-	if (strlen(json) + 6 > sizeof json) {
-		tui_message(t, 1, "save: path too long");
-		return;
-	}
-	strcat(json, ".json");
-	if (tui_io_summary(t, json, path, err)) {
+	if (tui_io_summary(t, json, path, inputs, err)) {
 		tui_message(t, 1, "saved %s; summary: %s", path, err);
 		return;
 	}
@@ -203,6 +226,17 @@ static void tui_io_report_to(struct tui *t, const char *dir)
 	long n = 0;
 	if (!dir[0]) {
 		tui_message(t, 1, "report: no directory given");
+		return;
+	}
+	/* the output policy (outfile.h): a directory or one that can be
+	 * made, none of its files the samples file or the wall */
+	const char *inputs[] = {t->run.csv[0] ? t->run.csv : NULL, t->w->path,
+				NULL};
+	if (!inputs[0])
+		inputs[0] = t->w->path, inputs[1] = NULL;
+	if (outfile_check_dir(dir, report_files(0), inputs, "the report",
+			      err) != SW_OK) {
+		tui_message(t, 1, "report: %s", err);
 		return;
 	}
 	if (!t->run.csv[0] ||
