@@ -296,13 +296,11 @@ static void print_text(const struct run_info *r, const struct tally *t)
 			printf("  %-40s %ld\n", sample_status_text(k),
 			       t->rejected[k]);
 	if (s.n > 0) {
-		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
-		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
+		printf("%-12s min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
+		       "max %.6g\n", *t->q.unit ? "load" : "factor", s.min,
+		       s.p05, s.p50, s.p95, s.max);
 		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
-		printf("             in %s\n", w->nloads &&
-		       w->loads[0].kind == LOAD_BODY
-			       ? "load factor (a body load: lambda times each block's weight)"
-			       : "N (lambda times the point load's reference magnitude)");
+		printf("             in %s\n", t->q.what);
 		if (s.has_ci)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
 			       "(characteristic value)\n", s.p05, s.p05_lo,
@@ -337,9 +335,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 			const struct tally_mech *m = &t->mech[idx[i]];
 			char j[72];
 			fmt_joints(j, sizeof j, m->joint);
-			printf("  %7ld %5.1f %%  lambda %.4g..%.4g  joints %s\n",
+			printf("  %7ld %5.1f %%  %s %.4g..%.4g  joints %s\n",
 			       m->count, 100.0 * (double)m->count /
-			       (double)t->accepted, m->lam_lo, m->lam_hi, j);
+			       (double)t->accepted, *t->q.unit ? "load" :
+			       "factor", m->lam_lo, m->lam_hi, j);
 		}
 		printf("             (joint k as in the samples file's xa_k: "
 		       "s slides, h hinges,\n"

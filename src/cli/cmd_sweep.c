@@ -331,6 +331,9 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 	printf("sweep of %s %s: %d values, %ld samples each, seed %lu (the "
 	       "same contact draws at every value)\n\n", param_name(a->param),
 	       a->range, a->nval, n, seed);
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	printf("loads: %s\n\n", q.what);
 	if (a->param == SW_LOAD_AT)
 		printf("%-10s %-10s %-10s", "distance", "x", "y");
 	else
@@ -355,9 +358,11 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 	}
 }
 
-static void print_json(const struct sweep_args *a, const struct point *pt,
-		       unsigned long seed, long n)
+static void print_json(const struct sweep_args *a, const struct wall *w,
+		       const struct point *pt, unsigned long seed, long n)
 {
+	struct wall_quantity q;
+	wall_quantity(w, &q);
 	struct json j;
 	json_init(&j, stdout, 1);
 	json_object_begin(&j);
@@ -367,6 +372,7 @@ static void print_json(const struct sweep_args *a, const struct point *pt,
 	json_string(&j, param_name(a->param));
 	json_key(&j, "range");
 	json_string(&j, a->range);
+	tally_quantity_json(&j, &q);
 	override_json(&a->ov, &j);
 	json_key(&j, "seed");
 	json_int(&j, (long long)seed);
@@ -552,7 +558,7 @@ int cmd_sweep(int argc, char **argv)
 	}
 	if (!rc) {
 		if (a.json)
-			print_json(&a, pt, seed, n);
+			print_json(&a, base, pt, seed, n);
 		else
 			print_table(&a, base, pt, seed, n);
 		fflush(stdout);

@@ -104,7 +104,7 @@ static void md_single(FILE *f, const struct rctx *c)
 	else
 		fprintf(f, "| method | load | note |\n|---|---:|---|\n");
 	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
+		const struct report_solution *s = &c->sol[i];
 		fprintf(f, "| %s | ", s->method);
 		if (s->found)
 			md_num(f, s->lambda, c->unit);

@@ -98,6 +98,42 @@ void wall_where(const struct wall *w, struct wall_mark m, char *buf,
 
 #define WHERE(m) (wall_where(w, (m), where, sizeof where), where)
 
+void wall_quantity(const struct wall *w, struct wall_quantity *q)
+{
+	int point = 0, body = 0, same = 1;
+	double m = 1;
+	for (int i = 0; i < w->nloads; i++) {
+		const struct wall_load *ld = &w->loads[i];
+		if (point + body == 0)
+			m = ld->magnitude;
+		else if (ld->magnitude != m)
+			same = 0;
+		if (ld->kind == LOAD_POINT)
+			point++;
+		else
+			body++;
+	}
+	if (point && !body && same) {
+		*q = (struct wall_quantity){m, "collapse load", "N",
+			"collapse load (N)", point > 1 ?
+			"N, the force of each point load (its magnitude "
+			"times the load factor lambda)" :
+			"N, the force of the point load (its magnitude "
+			"times the load factor lambda)"};
+	} else if (body && !point && same) {
+		*q = (struct wall_quantity){m, "seismic coefficient", "",
+			"seismic coefficient (horizontal force / weight)",
+			"seismic coefficient, no unit (the body load's force "
+			"on each block over its weight: magnitude times "
+			"lambda)"};
+	} else {
+		*q = (struct wall_quantity){1, "load factor", "",
+			"load factor λ (× the reference loads)",
+			"load factor lambda, no unit (it multiplies every "
+			"load's magnitude)"};
+	}
+}
+
 int wall_id_reserved(const char *id)
 {
 	return !strcmp(id, "ground");
