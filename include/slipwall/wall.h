@@ -150,6 +150,10 @@ enum sw_status wall_finish(struct wall *w, char *err);
 /* A deep copy of a finished or unfinished wall (for editing). */
 struct wall *wall_copy(const struct wall *w);
 
+/* The end of the message of a vertex too far from the origin for its
+ * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
+extern const char wall_far_text[];
+
 /* What a collapse load factor is for people (docs/run.md, "Loads and
  * units").  The LPs' lambda multiplies the reference load: each load's
  * magnitude m times its direction (a point load: m N at its point; a

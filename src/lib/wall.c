@@ -134,6 +134,11 @@ void wall_quantity(const struct wall *w, struct wall_quantity *q)
 	}
 }
 
+const char wall_far_text[] = "is too far from the origin for the size of "
+	"its polygon: doubles there are more than 1e-8 of the polygon's "
+	"thickness apart (docs/wall-format.md, \"Coordinates far from the "
+	"origin\"): move the wall nearer the origin";
+
 int wall_id_reserved(const char *id)
 {
 	return !strcmp(id, "ground");
@@ -338,6 +343,14 @@ static enum sw_status finish_polygons(struct wall *w, const struct extent *e,
 				       "%s%s '%s' is too large: its area "
 				       "overflows a double", WHERE(b->mark),
 				       b->fixed ? "support" : "block", b->id);
+		}
+		int far = geom_far_vertex(b->xy, b->nv);
+		if (far >= 0) {
+			free(corners);
+			return sw_fail(err, SW_EINPUT, "%s%s '%s': vertex %d "
+				       "%s", WHERE(b->mark), b->fixed ?
+				       "support" : "block", b->id, far + 1,
+				       wall_far_text);
 		}
 		enum geom_shape s = geom_check_polygon(b->xy, b->nv, tol);
 		if (s != GEOM_OK) {
