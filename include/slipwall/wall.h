@@ -150,6 +150,18 @@ enum sw_status wall_finish(struct wall *w, char *err);
 /* A deep copy of a finished or unfinished wall (for editing). */
 struct wall *wall_copy(const struct wall *w);
 
+/* A digest of the mechanical model of a finished wall: every block's
+ * vertices, weight and whether it is a support, every interface's
+ * bodies, segment and friction, every load's kind, point, direction
+ * and magnitude - all that a solution on the classical contact (solve,
+ * report's single solutions) depends on; not the contact depth, seed or
+ * sample count.  FNV-1a 64 over the doubles' bytes, written as
+ * "fnv1a64:" and 16 hex digits into out (WALL_DIGEST_LEN bytes).  Two
+ * walls with the same digest are the same model (up to a collision);
+ * an edit that moves a load or changes a friction changes it. */
+#define WALL_DIGEST_LEN 32
+void wall_digest(const struct wall *w, char *out);
+
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
 extern const char wall_far_text[];

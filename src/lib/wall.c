@@ -12,6 +12,7 @@
  * not a NaN in the results.
  */
 #include <float.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -132,6 +133,46 @@ void wall_quantity(const struct wall *w, struct wall_quantity *q)
 			"load factor lambda, no unit (it multiplies every "
 			"load's magnitude)"};
 	}
+}
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+	const unsigned char *b = p;
+	for (size_t k = 0; k < n; k++)
+		h = (h ^ b[k]) * 1099511628211ULL;
+	return h;
+}
+
+void wall_digest(const struct wall *w, char *out)
+{
+	uint64_t h = 14695981039346656037ULL;
+	h = fnv(h, &w->nblocks, sizeof w->nblocks);
+	for (int b = 0; b < w->nblocks; b++) {
+		const struct wall_block *bl = &w->blocks[b];
+		h = fnv(h, &bl->nv, sizeof bl->nv);
+		h = fnv(h, bl->xy, sizeof(double) * 2 * (size_t)bl->nv);
+		h = fnv(h, &bl->weight, sizeof bl->weight);
+		h = fnv(h, &bl->fixed, sizeof bl->fixed);
+	}
+	h = fnv(h, &w->nifaces, sizeof w->nifaces);
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		int ab[2] = {f->a, f->b};
+		h = fnv(h, ab, sizeof ab);
+		h = fnv(h, f->p1, sizeof f->p1);
+		h = fnv(h, f->p2, sizeof f->p2);
+		h = fnv(h, &f->mu, sizeof f->mu);
+	}
+	h = fnv(h, &w->nloads, sizeof w->nloads);
+	for (int l = 0; l < w->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		int kind = ld->kind;
+		h = fnv(h, &kind, sizeof kind);
+		h = fnv(h, ld->at, sizeof ld->at);
+		h = fnv(h, ld->dir, sizeof ld->dir);
+		h = fnv(h, &ld->magnitude, sizeof ld->magnitude);
+	}
+	snprintf(out, WALL_DIGEST_LEN, "fnv1a64:%016llx", (unsigned long long)h);
 }
 
 const char wall_far_text[] = "is too far from the origin for the size of "

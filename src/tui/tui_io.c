@@ -39,6 +39,9 @@ static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
 		json_string(&j, w->path);
 	else
 		json_null(&j);
+	char digest[WALL_DIGEST_LEN];
+	wall_digest(w, digest);
+	json_key_string(&j, "wall_digest", digest);
 	json_key(&j, "samples_file");
 	if (t->run.csv[0])
 		json_string(&j, t->run.csv);
