@@ -63,8 +63,10 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
  * 2 after printing the file's error. */
 int cli_tests(const char *file, const struct wall *w, double **tests,
 	      long *ntests);
-/* Does a loads file call its loads synthetic (the word in a '#'
- * comment, any case)?  Then compare and report say so. */
+/* Does a loads file call its loads synthetic: has it the marker line
+ * "# slipwall: synthetic" (docs/run.md)?  Then compare and report say
+ * so.  Words in other comments ("not synthetic", "the synthetic tests
+ * are elsewhere") do not count. */
 int cli_tests_synthetic(const char *path);
 /* Write " s" to f, single-
  * quoted for a POSIX shell when a shell would change it. */

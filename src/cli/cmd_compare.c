@@ -525,7 +525,7 @@ static void print_text(const struct compare_args *a, const struct wall *w,
 	printf("tests: %ld loads from %s%s\nloads: %s\n\n", d->ntests,
 	       a->tests ? cli_text(a->tests) : "the wall's tests: key",
 	       a->tests && cli_tests_synthetic(a->tests) ?
-	       " (SYNTHETIC: not measurements, the file says so)" : "",
+	       " (SYNTHETIC: not measurements, the file's \"# slipwall: synthetic\" line says so)" : "",
 	       q.what);
 	if (a->fit_depth)
 		print_profile(d);

@@ -369,7 +369,7 @@ static char *tests_source(const struct report_args *a)
 	if (!a->tests)
 		return sw_xstrdup("the wall's tests: key");
 	const char *syn = cli_tests_synthetic(a->tests) ?
-		" (**synthetic**: not measurements, the file says so)" : "";
+		" (**synthetic**: not measurements, the file's `# slipwall: synthetic` line says so)" : "";
 	size_t len = strlen(a->tests) + strlen(syn) + 3;
 	char *tsrc = sw_xmalloc(len);
 	snprintf(tsrc, len, "`%s`%s", a->tests, syn);
@@ -463,7 +463,7 @@ static int write_report(const struct report_args *a, const struct wall *w,
 			       "model alone\n");
 		else if (a->tests && cli_tests_synthetic(a->tests))
 			printf("the experimental loads of %s are synthetic (not "
-			       "measurements, the file says so)\n", a->tests);
+			       "measurements: the file's \"# slipwall: synthetic\" line says so)\n", a->tests);
 	}
 	free(cmdline);
 	free(tsrc);
