@@ -368,11 +368,25 @@ void cli_shell_arg(FILE *f, const char *s)
 		return;
 	}
 	fputs(" '", f);
-	for (const char *p = s; *p; p++) {
-		if (*p == '\'')
+	int used;
+	for (const char *p = s; *p; p += used) {
+		int n = text_utf8_len((const unsigned char *)p);
+		used = n ? n : 1;
+		char one[8] = {0};
+		memcpy(one, p, (size_t)used);
+		if (*p == '\'') {
 			fputs("'\\''", f);
-		else
-			fputc(*p, f);
+		} else if (*p == '\n' || text_is_clean(one)) {
+			fwrite(p, 1, (size_t)used, f);
+		} else {
+			/* a control character or an invalid byte: made by
+			 * printf, outside the quotes ($(...) drops trailing
+			 * newlines only, and this is none) */
+			fputs("'\"$(printf '", f);
+			for (int k = 0; k < used; k++)
+				fprintf(f, "\\%03o", (unsigned char)p[k]);
+			fputs("')\"'", f);
+		}
 	}
 	fputc('\'', f);
 }
