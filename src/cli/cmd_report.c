@@ -168,13 +168,18 @@ static void single_solutions(const struct wall *w, double tlim,
 		int has = !sf ? 0 : ms[i] == SOLVE_STANDARD ? sf->has_standard :
 			  ms[i] == SOLVE_GILBERT ? sf->has_gilbert : 0;
 		if (has) {
+			/* X.json holds the loads as printed (the tally's
+			 * quantity: wall_quantity), report_solution lambda */
+			struct wall_quantity q;
+			wall_quantity(w, &q);
 			s->ran = s->found = 1;
-			s->lambda = ms[i] == SOLVE_STANDARD ? sf->standard :
-				    sf->gilbert;
+			s->lambda = (ms[i] == SOLVE_STANDARD ? sf->standard :
+				     sf->gilbert) / q.scale;
 			snprintf(s->note, sizeof s->note, "from %.120s",
 				 sf->path);
 			fprintf(stderr, "report: %s: %.6g, from %s (not "
-				"recomputed)\n", s->method, s->lambda, sf->path);
+				"recomputed)\n", s->method, q.scale * s->lambda,
+				sf->path);
 			continue;
 		}
 		struct solve_opts o;

@@ -60,12 +60,12 @@ static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
 	json_int(&j, ta->nmech);
 	json_key(&j, "standard");
 	if (t->solve_done && t->has_std)
-		json_double(&j, t->lam_std);
+		json_double(&j, tui_load(t, t->lam_std));
 	else
 		json_null(&j);
 	json_key(&j, "gilbert");
 	if (t->solve_done && t->has_gil)
-		json_double(&j, t->lam_gil);
+		json_double(&j, tui_load(t, t->lam_gil));
 	else
 		json_null(&j);
 	if (w->ntests > 0) {

@@ -2,9 +2,10 @@
 # tui/tui_reuse.sh - `report --samples X.csv` reuses the workbench's
 # single solutions from X.json only for the model they were computed on
 # (docs/report.md), in tmux: the workbench on walls/single-block.yaml
-# (depth 0) saves X.yaml and X.json beside its samples X.csv; X.json's
-# wall_digest is check --json's of X.yaml, and report takes standard
-# from it; then X.yaml is edited in place (the same device and inode:
+# (depth 0, its load's magnitude 2) saves X.yaml and X.json beside its
+# samples X.csv; X.json's wall_digest is check --json's of X.yaml, its
+# standard is the force, 209.28 N, and report takes it from there into
+# report.md as 209.28 N; then X.yaml is edited in place (the same device and inode:
 # its load moved from 0.6 m to 0.3 m up, where the block slides first,
 # at mu W = 376.704 N) and report recomputes: report.md's standard is
 # 376.7 N (%.5g), not the saved 209.28 N.
@@ -21,7 +22,7 @@ cd "$(dirname "$0")/../.." || exit 1
 tui_setup "slipwall-reuse-$$" 140 40
 
 sed -e 's/depth: 0.25/depth: 0/' -e 's/^  samples: .*/  samples: 30/' \
-	walls/single-block.yaml >"$tmp/block.yaml"
+	-e 's/magnitude: 1}/magnitude: 2}/' walls/single-block.yaml >"$tmp/block.yaml"
 start w LANG=C LC_ALL=C -- "$tmp/block.yaml"
 if wait_run w 1 done 60 && wait_for w 'standard 209' 30; then
 	ok "run 1 and the single solutions done"
@@ -47,8 +48,10 @@ else
 	not_ok "X.json's wall_digest is the saved wall's ($digest)" "$(cat "$x.json")"
 fi
 "$bin" report "$x.yaml" --samples "$csv" --out "$tmp/r1" >/dev/null 2>"$tmp/r1.err"
-check "report --samples: standard taken from X.json" \
-	grep -q "^report: standard: 209.28, from .*json (not recomputed)" "$tmp/r1.err"
+check "report --samples: standard taken from X.json, 209.28 N" \
+	eval 'grep -q "^  \"standard\": 209.28" "$x.json" &&
+	      grep -q "^report: standard: 209.28, from .*json (not recomputed)" "$tmp/r1.err" &&
+	      grep -q "^| standard | 209.28 N | from " "$tmp/r1/report.md"'
 
 # edit in place: the same inode, the load lower
 python3 - "$x.yaml" <<'PY'
