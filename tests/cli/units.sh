@@ -11,7 +11,8 @@
 # (lambda_min times the magnitude), --at (in N), compare (against tests in N),
 # report.md, sweep and solve; the same block under a body load of
 # magnitude 1 or 2 tips at the seismic coefficient b / (2 h) = 0.5,
-# printed without "N".  TAP output.
+# printed without "N"; two point loads of magnitudes 1 and 2 print the
+# load factor, no unit.  TAP output.
 
 bin=${1:?usage: cli/units.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -77,4 +78,12 @@ for m in 1 2; do
 		eval "grep -q '^Loads: seismic coefficient' '$tmp/brep$m/report.md' && ! grep -q '0.5 N' '$tmp/brep$m/report.md'"
 done
 
+# two point loads of magnitudes 1 and 2: no one force, lambda is a factor
+sed -e 's/depth: 0.25/depth: 0/' \
+	-e 's/^  - point: {at: \[0, 0.6\], direction: \[1, 0\], magnitude: 1}/&\n  - point: {at: [0, 0.3], direction: [1, 0], magnitude: 2}/' \
+	walls/single-block.yaml >"$tmp/two.yaml"
+"$bin" run "$tmp/two.yaml" -n 5 --json >"$tmp/two.json" 2>/dev/null
+"$bin" run "$tmp/two.yaml" -n 5 >"$tmp/two.txt" 2>&1
+check "point loads of magnitudes 1 and 2: a load factor, no unit, scale 1" \
+	eval "[ \"\$(jget '$tmp/two.json' '(j[\"load\"][\"quantity\"], j[\"load\"][\"unit\"], j[\"load\"][\"scale\"])')\" = \"('load factor', '', 1)\" ] && grep -q '^  *in load factor lambda, no unit' '$tmp/two.txt'"
 tap_end
