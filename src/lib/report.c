@@ -384,8 +384,9 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
-	snprintf(yl, sizeof yl, "probability density (1/%s)",
-		 *c->unit ? "N" : "unit of λ");
+	/* per N, or of no unit like the coefficient it is of */
+	snprintf(yl, sizeof yl, "probability density%s",
+		 *c->unit ? " (1/N)" : "");
 	plot_axes(f, &a, c->axis, yl, tests ?
 		  "Model KDE and best-fit normal of the tests" :
 		  "Model KDE and its best-fit normal (no tests)", 0);
@@ -807,8 +808,9 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
-	snprintf(yl, sizeof yl, "probability density (1/%s)",
-		 *c->unit ? "N" : "unit of λ");
+	/* per N, or of no unit like the coefficient it is of */
+	snprintf(yl, sizeof yl, "probability density%s",
+		 *c->unit ? " (1/N)" : "");
 	plot_axes(f, &a, c->axis, yl, NULL, 0);
 	plot_text(f, a.x, 16, 12, 1, 0, 1, 0, "%s",
 		  "The model against the single-solution methods");

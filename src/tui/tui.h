@@ -158,7 +158,8 @@ void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
-/* The unit of λ: "N" (point loads) or "load factor" (a body load). */
+/* The unit of the loads shown (wall_quantity): "N" (point loads of one
+ * magnitude), else what they are ("seismic coefficient", "load factor"). */
 const char *tui_load_unit(const struct wall *w);
 /* A single solution's load factor as the run's loads are shown (the
  * tally's quantity: wall_quantity's scale times lambda). */
