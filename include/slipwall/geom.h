@@ -15,6 +15,19 @@ double geom_area(const double *xy, int nv);
 /* Centroid of a polygon of non-zero area. */
 void geom_centroid(const double *xy, int nv, double *cx, double *cy);
 
+/* The precision a polygon's coordinates must carry (docs/wall-format.md,
+ * "Coordinates far from the origin"): a double near x is exact to its
+ * spacing, at most |x| 2^-52, so a vertex at x holds the polygon's
+ * dimensions to |x| 2^-52 over its thickness (its area over its largest
+ * extent).  That must be at most GEOM_PRECISION_REL: 100 times below the
+ * tolerance of contacts and overlaps (1e-6 of a block's size), so every
+ * joint found is the one the coordinates mean, and the weights, lever
+ * arms and loads are exact to about 1e-8.  Returns the index of the
+ * first vertex farther from the origin than that allows, or -1 (also
+ * for a polygon of no area, which geom_check_polygon refuses). */
+#define GEOM_PRECISION_REL 1e-8
+int geom_far_vertex(const double *xy, int nv);
+
 enum geom_shape {
 	GEOM_OK,
 	GEOM_DEGENERATE,	/* zero area, repeated vertex */

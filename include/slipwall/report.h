@@ -50,7 +50,8 @@ struct report_solution {
 	const char *method;	/* "standard", "gilbert", "global" */
 	int ran;		/* 0: not run (note says why) */
 	int found;		/* 1: lambda is the method's load factor */
-	double lambda;		/* in the units of the loads */
+	double lambda;		/* the method's load factor lambda (report_write
+				 * prints wall_quantity's scale times it) */
 	char note[160];		/* for people: "not converged", "gap 3 %" */
 };
 
@@ -75,10 +76,13 @@ struct report_run {
 
 struct report_input {
 	const struct wall *w;	/* finished */
-	const double *lam;	/* accepted lambda_min, in sample order */
+	const double *lam;	/* accepted loads in sample order: lambda_min
+				 * times wall_quantity's scale, as a tally,
+				 * run_all and runlog_read_loads give them */
 	long nlam;		/* >= 1 */
 	const struct tally *mech;	/* mechanisms, or NULL */
-	const double *tests;	/* experimental collapse loads, or NULL */
+	const double *tests;	/* experimental collapse loads (in the same
+				 * quantity: N for a point load), or NULL */
 	long ntests;
 	const struct report_solution *sol;
 	int nsol;
@@ -153,10 +157,10 @@ const char *const *report_files(int sweep);
  * no thread is drawing; report_write() works again afterwards. */
 void report_cleanup(void);
 
-/* The axis label of the load factor for this wall into axis (len
- * bytes): "collapse load λ (N)" for point loads of 1 N, a dimensionless
- * load factor otherwise; *unit is what to print after a value (" N" or
- * ""). */
+/* The axis label of the loads of this wall into axis (len bytes):
+ * wall_quantity's ("collapse load (N)" for point loads of one
+ * magnitude, a seismic coefficient or a load factor, no unit,
+ * otherwise); *unit is what to print after a value (" N" or ""). */
 void report_load_unit(const struct wall *w, char *axis, size_t len,
 		      const char **unit);
 

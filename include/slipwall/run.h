@@ -122,7 +122,8 @@ int run_p05(struct run *r, double *p05, double *lo, double *hi);
 /* A whole run of a pool without a samples file (`report`, `compare`):
  * start the pool for cfg, take every sample into t and, when lam is not
  * NULL, the accepted loads in index order into *lam (malloc'd, *nlam of
- * them).  tick (or NULL) is called at least every 0.2 s while it runs
+ * them; in the tally's quantity: lambda_min times wall_quantity's
+ * scale).  tick (or NULL) is called at least every 0.2 s while it runs
  * (a progress line).  A signal caught by run_signals_catch stops it:
  * the samples done are in t and *lam, and it returns SW_EINTR with
  * "interrupted (SIGNAL)" in err.  SW_EANALYSIS when the pool cannot

@@ -58,8 +58,9 @@ const char *runlog_path(const struct runlog *l);
 enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 				     double **xi, long *rows, char *warn,
 				     char *err);
-/* Read the accepted lambda_min column of a samples file of wall w (for
- * report and compare); refused like runlog_read_positions when its
+/* Read the accepted loads of a samples file of wall w (for report and
+ * compare): its lambda_min column times wall_quantity's scale, the
+ * quantity people read (the force in N of a point load); refused like runlog_read_positions when its
  * header does not have w's interfaces; warn as above. */
 enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 				 double **lam, long *n, char *warn, char *err);

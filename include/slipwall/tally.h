@@ -9,6 +9,12 @@
  * its first sample (to draw it).  Used by `run` (summary), the workbench
  * (live statistics, the mechanism browser) and `report` (Fig. 6).  One
  * thread at a time.
+ *
+ * The loads it keeps are those people read (wall_quantity): a sample's
+ * lambda_min times the wall's scale, so the force in N of a point load
+ * of any magnitude, or a seismic coefficient; every summary, percentile
+ * and mechanism range taken from a tally is in that quantity.  The
+ * samples file keeps lambda itself (docs/run.md, "Loads and units").
  */
 #ifndef SLIPWALL_TALLY_H
 #define SLIPWALL_TALLY_H
@@ -29,7 +35,8 @@ struct tally {
 	long samples;		/* popped so far */
 	long accepted;
 	long rejected[SAMPLE_STATUS_COUNT];	/* by status (ACCEPTED unused) */
-	struct stats_sorted lam;		/* accepted lambda_min, sorted */
+	struct wall_quantity q;	/* what the loads are (wall_quantity) */
+	struct stats_sorted lam;	/* accepted q.scale * lambda_min, sorted */
 	double lam_sum;
 	long iterations, lps;	/* sums over all samples */
 	double compute_seconds;	/* sum of per-sample compute times */
@@ -48,13 +55,17 @@ int tally_top(const struct tally *t, int *idx, int max);
 /* Summary statistics of the accepted loads (stats_summarise). */
 void tally_summary(const struct tally *t, struct stats_summary *s);
 
-/* The keys every run summary shares (SPEC section 4), into an open JSON
+/* The keys every run summary shares (docs/run.md), into an open JSON
  * object: "samples", "accepted", "rejected" (an object by reason name),
- * "lambda" {min, p05, p50, p95, max, mean, std} and "p05_ci99" [lo, hi]
- * (null below 90 accepted samples). */
+ * "load" {quantity, unit, scale} (what the loads are: wall_quantity),
+ * "lambda" {min, p05, p50, p95, max, mean, std} (of the loads, in
+ * load.unit: scale times the LPs' lambda) and "p05_ci99" [lo, hi] (null
+ * below 90 accepted samples). */
 struct json;
 void tally_json(const struct tally *t, struct json *j);
 /* The last two of those, of any summary (compare's model and tests). */
 void tally_summary_json(struct json *j, const struct stats_summary *s);
+/* "load": {"quantity", "unit", "scale"} of q, into an open object. */
+void tally_quantity_json(struct json *j, const struct wall_quantity *q);
 
 #endif

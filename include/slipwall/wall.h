@@ -150,6 +150,48 @@ enum sw_status wall_finish(struct wall *w, char *err);
 /* A deep copy of a finished or unfinished wall (for editing). */
 struct wall *wall_copy(const struct wall *w);
 
+/* A digest of the mechanical model of a finished wall: every block's
+ * vertices, weight and whether it is a support, every interface's
+ * bodies, segment and friction, every load's kind, point, direction
+ * and magnitude - all that a solution on the classical contact (solve,
+ * report's single solutions) depends on; not the contact depth, seed or
+ * sample count.  FNV-1a 64 over the doubles' bytes, written as
+ * "fnv1a64:" and 16 hex digits into out (WALL_DIGEST_LEN bytes).  Two
+ * walls with the same digest are the same model (up to a collision);
+ * an edit that moves a load or changes a friction changes it. */
+#define WALL_DIGEST_LEN 32
+void wall_digest(const struct wall *w, char *out);
+
+/* The end of the message of a vertex too far from the origin for its
+ * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
+extern const char wall_far_text[];
+
+/* What a collapse load factor is for people (docs/run.md, "Loads and
+ * units").  The LPs' lambda multiplies the reference load: each load's
+ * magnitude m times its direction (a point load: m N at its point; a
+ * body load: m times each block's weight).  Every writer prints
+ * scale * lambda with the unit and name below, never lambda itself:
+ *   point loads, all of one magnitude m:  the force, m lambda, in N
+ *                                         ("collapse load");
+ *   body loads, all of one magnitude m:   m lambda, no unit ("seismic
+ *                                         coefficient": the horizontal
+ *                                         force over the weight);
+ *   anything else (magnitudes that differ, point and body loads
+ *   together, no load):                   lambda, no unit ("load
+ *                                         factor", times the reference
+ *                                         loads).
+ * Experimental loads (tests), --at and analysis.design_load are given
+ * in this quantity too. */
+struct wall_quantity {
+	double scale;		/* printed value = scale * lambda (> 0) */
+	const char *name;	/* "collapse load", "seismic coefficient",
+				 * "load factor" */
+	const char *unit;	/* "N", or "" for a coefficient */
+	const char *axis;	/* an axis label: name and unit */
+	const char *what;	/* one line: what the value is */
+};
+void wall_quantity(const struct wall *w, struct wall_quantity *q);
+
 /* "FILE:LINE:COLUMN: " prefix for mark m (or "FILE: " without mark). */
 void wall_where(const struct wall *w, struct wall_mark m, char *buf,
 		size_t len);

@@ -321,20 +321,37 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 	return SW_OK;
 }
 
+/* Is line (a whole line, its newline included or not) the marker of
+ * synthetic loads: "# slipwall: synthetic", blanks allowed around the
+ * words? */
+static int synthetic_marker(const char *line)
+{
+	static const char *const words[] = {"#", "slipwall:", "synthetic"};
+	const char *p = line;
+	for (int k = 0; k < 3; k++) {
+		while (*p == ' ' || *p == '\t')
+			p++;
+		size_t n = strlen(words[k]);
+		if (strncmp(p, words[k], n))
+			return 0;
+		p += n;
+	}
+	while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+		p++;
+	return *p == 0;
+}
+
 int cli_tests_synthetic(const char *path)
 {
 	FILE *f = fopen(path, "r");
 	if (!f)
 		return 0;
 	char line[512];
-	int yes = 0;
+	int yes = 0, whole = 1;
 	while (!yes && fgets(line, sizeof line, f)) {
-		char *hash = strchr(line, '#');
-		if (!hash)
-			continue;
-		for (char *p = hash; *p; p++)
-			*p = (char)tolower((unsigned char)*p);
-		yes = strstr(hash, "synthetic") != NULL;
+		/* only a line read whole from its start can be the marker */
+		yes = whole && synthetic_marker(line);
+		whole = strchr(line, '\n') != NULL;
 	}
 	fclose(f);
 	return yes;
@@ -351,11 +368,25 @@ void cli_shell_arg(FILE *f, const char *s)
 		return;
 	}
 	fputs(" '", f);
-	for (const char *p = s; *p; p++) {
-		if (*p == '\'')
+	int used;
+	for (const char *p = s; *p; p += used) {
+		int n = text_utf8_len((const unsigned char *)p);
+		used = n ? n : 1;
+		char one[8] = {0};
+		memcpy(one, p, (size_t)used);
+		if (*p == '\'') {
 			fputs("'\\''", f);
-		else
-			fputc(*p, f);
+		} else if (*p == '\n' || text_is_clean(one)) {
+			fwrite(p, 1, (size_t)used, f);
+		} else {
+			/* a control character or an invalid byte: made by
+			 * printf, outside the quotes ($(...) drops trailing
+			 * newlines only, and this is none) */
+			fputs("'\"$(printf '", f);
+			for (int k = 0; k < used; k++)
+				fprintf(f, "\\%03o", (unsigned char)p[k]);
+			fputs("')\"'", f);
+		}
 	}
 	fputc('\'', f);
 }

@@ -63,11 +63,16 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
  * 2 after printing the file's error. */
 int cli_tests(const char *file, const struct wall *w, double **tests,
 	      long *ntests);
-/* Does a loads file call its loads synthetic (the word in a '#'
- * comment, any case)?  Then compare and report say so. */
+/* Does a loads file call its loads synthetic: has it the marker line
+ * "# slipwall: synthetic" (docs/run.md)?  Then compare and report say
+ * so.  Words in other comments ("not synthetic", "the synthetic tests
+ * are elsewhere") do not count. */
 int cli_tests_synthetic(const char *path);
-/* Write " s" to f, single-
- * quoted for a POSIX shell when a shell would change it. */
+/* Write " s" to f, single-quoted for a POSIX shell when a shell would
+ * change it, so that sh reads back s byte for byte: a quote as '\'',
+ * a newline as it is (inside the quotes: the argument spans lines),
+ * every other control character and invalid UTF-8 byte as
+ * "$(printf '\ooo')" outside the quotes, so none is written raw. */
 void cli_shell_arg(FILE *f, const char *s);
 /* Estimated memory of one worker of a pool sampling w (its sampling
  * workspace: the GLPK problems and the operators grow with the

@@ -58,6 +58,9 @@ static void print_json(const struct wall *w)
 	json_object_end(&j);
 	json_key(&j, "total_weight");
 	json_double(&j, w->total_weight);
+	char digest[WALL_DIGEST_LEN];
+	wall_digest(w, digest);
+	json_key_string(&j, "wall_digest", digest);
 	json_key(&j, "blocks");
 	json_array_begin(&j);
 	for (int k = 0; k < w->nblocks; k++) {

@@ -59,7 +59,7 @@ struct compare_args {
 struct model {
 	double depth;
 	long samples, accepted;
-	double *lam;		/* accepted lambda_min, n = accepted */
+	double *lam;		/* accepted loads (wall_quantity), n = accepted */
 	struct stats_summary s;
 	struct stats_ks ks;
 	int ks_ok;
@@ -445,6 +445,9 @@ static void print_json(const struct compare_args *a, const struct wall *w,
 	json_key(&j, "wall");
 	json_string(&j, a->wall);
 	override_json(&a->ov, &j);
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	tally_quantity_json(&j, &q);
 	json_key(&j, "model");
 	json_object_begin(&j);
 	json_key(&j, "source");
@@ -503,6 +506,8 @@ static void print_text(const struct compare_args *a, const struct wall *w,
 		       const struct compare_data *d)
 {
 	const struct model *md = d->md;
+	struct wall_quantity q;
+	wall_quantity(w, &q);
 	printf("%s  [%s]\n", cli_text(w->name ? w->name : a->wall),
 	       cli_text(a->wall));
 	if (a->ov.n > 0) {
@@ -520,10 +525,8 @@ static void print_text(const struct compare_args *a, const struct wall *w,
 	printf("tests: %ld loads from %s%s\nloads: %s\n\n", d->ntests,
 	       a->tests ? cli_text(a->tests) : "the wall's tests: key",
 	       a->tests && cli_tests_synthetic(a->tests) ?
-	       " (SYNTHETIC: not measurements, the file says so)" : "",
-	       w->nloads && w->loads[0].kind == LOAD_BODY
-		       ? "load factor (a body load: lambda times each block's weight)"
-		       : "N (lambda times the point load's reference magnitude)");
+	       " (SYNTHETIC: not measurements, the file's \"# slipwall: synthetic\" line says so)" : "",
+	       q.what);
 	if (a->fit_depth)
 		print_profile(d);
 	print_table(md, &d->ts, d->ntests);

@@ -169,13 +169,18 @@ static void single_solutions(const struct wall *w, double tlim,
 		int has = !sf ? 0 : ms[i] == SOLVE_STANDARD ? sf->has_standard :
 			  ms[i] == SOLVE_GILBERT ? sf->has_gilbert : 0;
 		if (has) {
+			/* X.json holds the loads as printed (the tally's
+			 * quantity: wall_quantity), report_solution lambda */
+			struct wall_quantity q;
+			wall_quantity(w, &q);
 			s->ran = s->found = 1;
-			s->lambda = ms[i] == SOLVE_STANDARD ? sf->standard :
-				    sf->gilbert;
+			s->lambda = (ms[i] == SOLVE_STANDARD ? sf->standard :
+				     sf->gilbert) / q.scale;
 			snprintf(s->note, sizeof s->note, "from %.120s",
 				 sf->path);
 			fprintf(stderr, "report: %s: %.6g, from %s (not "
-				"recomputed)\n", s->method, s->lambda, sf->path);
+				"recomputed)\n", s->method, q.scale * s->lambda,
+				sf->path);
 			continue;
 		}
 		struct solve_opts o;
@@ -339,28 +344,28 @@ static int model_of_run(const struct report_args *a, const struct wall *w,
 }
 
 /* With a samples file, what its JSON summary holds (the workbench
- * saves X.json beside X.csv): standard and gilbert of the same wall
- * file, unless the wall is changed here.  NULL: nothing to reuse. */
+ * saves X.json beside X.csv): standard and gilbert, when they provably
+ * belong to the wall reported on - the summary's wall_digest is the
+ * digest of this wall as loaded and changed here (wall_digest: the
+ * model the solutions depend on).  The same file is not enough: a wall
+ * edited in place keeps its device and inode.  NULL: nothing to
+ * reuse. */
 static const struct summary_file *reusable(const struct report_args *a,
+					   const struct wall *w,
 					   struct summary_file *sfile)
 {
 	if (!a->samples || summary_beside(a->samples, sfile) != 0)
 		return NULL;
-	struct stat s1, s2;
-	int same = sfile->wall[0] && stat(sfile->wall, &s1) == 0 &&
-		   stat(a->wall, &s2) == 0 && s1.st_dev == s2.st_dev &&
-		   s1.st_ino == s2.st_ino;
-	if (!same)
-		fprintf(stderr, "report: %s is the summary of %s, not of "
-			"%s: its single solutions are not reused\n",
-			sfile->path, sfile->wall[0] ? sfile->wall : "?",
-			a->wall);
-	else if (a->ov.n > 0)
-		fprintf(stderr, "report: the wall is changed here "
-			"(--friction, --set, ...): %s's single solutions "
-			"are not reused\n", sfile->path);
-	else
+	char digest[WALL_DIGEST_LEN];
+	wall_digest(w, digest);
+	if (!strcmp(sfile->wall_digest, digest))
 		return sfile;
+	fprintf(stderr, "report: %s was written for %s, a model this wall "
+		"%s: its single solutions are recomputed\n", sfile->path,
+		sfile->wall[0] ? sfile->wall : "another wall",
+		sfile->wall_digest[0] ? "is not (the file or --friction, "
+		"--set, ... changed it)" : "cannot be matched to (it has no "
+		"wall_digest)");
 	return NULL;
 }
 
@@ -370,7 +375,7 @@ static char *tests_source(const struct report_args *a)
 	if (!a->tests)
 		return sw_xstrdup("the wall's tests: key");
 	const char *syn = cli_tests_synthetic(a->tests) ?
-		" (**synthetic**: not measurements, the file says so)" : "";
+		" (**synthetic**: not measurements, the file's `# slipwall: synthetic` line says so)" : "";
 	size_t len = strlen(a->tests) + strlen(syn) + 3;
 	char *tsrc = sw_xmalloc(len);
 	snprintf(tsrc, len, "`%s`%s", a->tests, syn);
@@ -415,7 +420,7 @@ static int write_report(const struct report_args *a, const struct wall *w,
 	struct report_solution sol[3];
 	int nsol;
 	char err[SW_ERRLEN];
-	single_solutions(w, a->time_limit, reusable(a, &sfile), sol, &nsol);
+	single_solutions(w, a->time_limit, reusable(a, w, &sfile), sol, &nsol);
 	char *cmdline = command_line(a, &d->cfg), *tsrc = tests_source(a);
 	add_notes(a, w, d);
 	const struct tally *t = &d->t;
@@ -464,7 +469,7 @@ static int write_report(const struct report_args *a, const struct wall *w,
 			       "model alone\n");
 		else if (a->tests && cli_tests_synthetic(a->tests))
 			printf("the experimental loads of %s are synthetic (not "
-			       "measurements, the file says so)\n", a->tests);
+			       "measurements: the file's \"# slipwall: synthetic\" line says so)\n", a->tests);
 	}
 	free(cmdline);
 	free(tsrc);

@@ -87,7 +87,8 @@ static void usage(FILE *f)
 		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
 		"                       each override changes the wall as editing its\n"
 		"                       file would, and the summary lists them\n"
-		"  --at LOAD            the probability of collapse at LOAD,\n"
+		"  --at LOAD            the probability of collapse at LOAD (in N for\n"
+		"                       point loads, whatever their magnitude),\n"
 		"                       P(lambda_min <= LOAD) among the accepted samples,\n"
 		"                       with its exact 99 %% interval (a wall's\n"
 		"                       analysis.design_load is always reported)\n"
@@ -296,13 +297,11 @@ static void print_text(const struct run_info *r, const struct tally *t)
 			printf("  %-40s %ld\n", sample_status_text(k),
 			       t->rejected[k]);
 	if (s.n > 0) {
-		printf("lambda_min   min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
-		       "max %.6g\n", s.min, s.p05, s.p50, s.p95, s.max);
+		printf("%-12s min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
+		       "max %.6g\n", *t->q.unit ? "load" : "factor", s.min,
+		       s.p05, s.p50, s.p95, s.max);
 		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
-		printf("             in %s\n", w->nloads &&
-		       w->loads[0].kind == LOAD_BODY
-			       ? "load factor (a body load: lambda times each block's weight)"
-			       : "N (lambda times the point load's reference magnitude)");
+		printf("             in %s\n", t->q.what);
 		if (s.has_ci)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
 			       "(characteristic value)\n", s.p05, s.p05_lo,
@@ -337,9 +336,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 			const struct tally_mech *m = &t->mech[idx[i]];
 			char j[72];
 			fmt_joints(j, sizeof j, m->joint);
-			printf("  %7ld %5.1f %%  lambda %.4g..%.4g  joints %s\n",
+			printf("  %7ld %5.1f %%  %s %.4g..%.4g  joints %s\n",
 			       m->count, 100.0 * (double)m->count /
-			       (double)t->accepted, m->lam_lo, m->lam_hi, j);
+			       (double)t->accepted, *t->q.unit ? "load" :
+			       "factor", m->lam_lo, m->lam_hi, j);
 		}
 		printf("             (joint k as in the samples file's xa_k: "
 		       "s slides, h hinges,\n"

@@ -29,14 +29,13 @@ static const char *joint_text(char c)
 	}
 }
 
-/* Sum of the point-load reference forces (0 when only body loads). */
-static double point_reference(const struct wall *w)
+/* The load people read for a load factor (wall_quantity): the force
+ * in N, or NaN when the wall's loads give no force. */
+static double newtons(const struct wall *w, double lambda)
 {
-	double s = 0;
-	for (int l = 0; l < w->nloads; l++)
-		if (w->loads[l].kind == LOAD_POINT)
-			s += w->loads[l].magnitude;
-	return s;
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	return *q.unit ? q.scale * lambda : NAN;
 }
 
 static int moving(const struct sample_result *m, int b)
@@ -56,12 +55,8 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 	json_string(&j, sample_status_name(r->status));
 	json_key(&j, "load_factor");
 	json_double(&j, r->lambda);
-	double pref = point_reference(w);
 	json_key(&j, "load_newtons");
-	if (pref > 0)
-		json_double(&j, r->lambda * pref);
-	else
-		json_null(&j);
+	json_double(&j, newtons(w, r->lambda));
 	if (r->method == SOLVE_GILBERT) {
 		/* which of the two loads is the method's answer */
 		json_key(&j, "result");
@@ -119,11 +114,14 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 
 static void print_text(const struct wall *w, const struct solve_result *r)
 {
-	double pref = point_reference(w);
+	struct wall_quantity q;
+	wall_quantity(w, &q);
 	printf("method:      %s\n", method_text[r->method]);
 	printf("load factor: %.6g", r->lambda);
-	if (pref > 0)
-		printf("  (live load %.6g N)", r->lambda * pref);
+	if (*q.unit)
+		printf("  (%s %.6g N)", q.name, q.scale * r->lambda);
+	else if (q.scale != 1)
+		printf("  (%s %.6g)", q.name, q.scale * r->lambda);
 	printf("\n");
 	if (r->method == SOLVE_GILBERT) {
 		printf("             the result: the load of the converged "

@@ -348,6 +348,9 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 	printf("sweep of %s %s: %s values, %ld samples each, seed %lu (the "
 	       "same contact draws at every value)\n\n", param_name(a->param),
 	       cli_text(a->range), count, n, seed);
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	printf("loads: %s\n\n", q.what);
 	if (a->param == SW_LOAD_AT)
 		printf("%-10s %-10s %-10s", "distance", "x", "y");
 	else
@@ -372,9 +375,11 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 	}
 }
 
-static void print_json(const struct sweep_args *a, const struct point *pt,
-		       unsigned long seed, long n)
+static void print_json(const struct sweep_args *a, const struct wall *w,
+		       const struct point *pt, unsigned long seed, long n)
 {
+	struct wall_quantity q;
+	wall_quantity(w, &q);
 	struct json j;
 	json_init(&j, stdout, 1);
 	json_object_begin(&j);
@@ -384,6 +389,7 @@ static void print_json(const struct sweep_args *a, const struct point *pt,
 	json_string(&j, param_name(a->param));
 	json_key(&j, "range");
 	json_string(&j, a->range);
+	tally_quantity_json(&j, &q);
 	override_json(&a->ov, &j);
 	json_key(&j, "seed");
 	json_uint(&j, seed);
@@ -601,7 +607,7 @@ static int write_outputs(const struct sweep_args *a, const struct wall *base,
 			 int cancel)
 {
 	if (a->json)
-		print_json(a, pt, seed, n);
+		print_json(a, base, pt, seed, n);
 	else
 		print_table(a, base, pt, seed, n);
 	fflush(stdout);

@@ -72,6 +72,9 @@ int summary_beside(const char *csv, struct summary_file *s)
 	if (ok) {
 		if (top_value(text, "wall", s->wall, sizeof s->wall, &v) != 1)
 			s->wall[0] = 0;
+		if (top_value(text, "wall_digest", s->wall_digest,
+			      sizeof s->wall_digest, &v) != 1)
+			s->wall_digest[0] = 0;
 		s->has_standard = top_value(text, "standard", dummy,
 					    sizeof dummy, &s->standard) == 2;
 		s->has_gilbert = top_value(text, "gilbert", dummy,

@@ -5,7 +5,7 @@
  *
  * Only the top-level keys this needs are read, from the pretty-printed
  * JSON that json.c writes (one key per line, two spaces in): "wall",
- * "samples_file", "standard", "gilbert".  Anything else in the file is
+ * "wall_digest", "samples_file", "standard", "gilbert".  Anything else in the file is
  * ignored; a file that is not there or not of that shape gives nothing.
  */
 #ifndef SLIPWALL_SUMMARY_H
@@ -17,6 +17,8 @@ struct summary_file {
 	char path[4096];	/* the JSON read */
 	char wall[4096];	/* its "wall" ("" if none) */
 	char samples_file[4096];	/* its "samples_file" ("" if none) */
+	char wall_digest[64];	/* its "wall_digest" (wall_digest; "" if
+				 * none) */
 	int has_standard, has_gilbert;
 	double standard, gilbert;
 };

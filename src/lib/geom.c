@@ -41,13 +41,37 @@ static double pow2_scale(const double *v, int n, double sub0, double sub1)
 
 double geom_area(const double *xy, int nv)
 {
-	double s = pow2_scale(xy, 2 * nv, 0, 0), a = 0;
+	/* relative to the first vertex: the shoelace of absolute
+	 * coordinates sums products of the size of |x|^2 that cancel to
+	 * the size of the area, and loses all of it far from the origin (a
+	 * 0.4 x 0.8 m block at (-1e9, -1e9) came out 400 times too large) */
+	double x0 = xy[0], y0 = xy[1], a = 0;
+	double s = pow2_scale(xy, 2 * nv, x0, y0);
 	for (int i = 0; i < nv; i++) {
 		int j = (i + 1) % nv;
-		a += (xy[2 * i] / s) * (xy[2 * j + 1] / s) -
-		     (xy[2 * j] / s) * (xy[2 * i + 1] / s);
+		a += ((xy[2 * i] - x0) / s) * ((xy[2 * j + 1] - y0) / s) -
+		     ((xy[2 * j] - x0) / s) * ((xy[2 * i + 1] - y0) / s);
 	}
 	return a / 2 * s * s;
+}
+
+int geom_far_vertex(const double *xy, int nv)
+{
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	for (int i = 0; i < nv; i++) {
+		x0 = fmin(x0, xy[2 * i]);
+		x1 = fmax(x1, xy[2 * i]);
+		y0 = fmin(y0, xy[2 * i + 1]);
+		y1 = fmax(y1, xy[2 * i + 1]);
+	}
+	double extent = fmax(x1 - x0, y1 - y0);
+	double thick = fabs(geom_area(xy, nv)) / extent;
+	if (!(thick > 0) || !isfinite(thick))
+		return -1;	/* degenerate: geom_check_polygon says so */
+	for (int i = 0; i < 2 * nv; i++)
+		if (ldexp(fabs(xy[i]), -52) > GEOM_PRECISION_REL * thick)
+			return i / 2;
+	return -1;
 }
 
 void geom_centroid(const double *xy, int nv, double *cx, double *cy)

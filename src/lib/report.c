@@ -50,32 +50,10 @@
 void report_load_unit(const struct wall *w, char *axis, size_t len,
 		      const char **unit)
 {
-	int point = 0, body = 0, one = 1;
-	double mag = NAN;
-	for (int i = 0; i < w->nloads; i++) {
-		if (w->loads[i].kind == LOAD_POINT) {
-			point++;
-			if (w->loads[i].magnitude != 1)
-				one = 0;
-			if (point == 1)
-				mag = w->loads[i].magnitude;
-			else if (mag != w->loads[i].magnitude)
-				mag = NAN;
-		} else {
-			body++;
-		}
-	}
-	*unit = "";
-	if (point && !body && one) {
-		snprintf(axis, len, "collapse load λ (N)");
-		*unit = " N";
-	} else if (point && !body && isfinite(mag)) {
-		snprintf(axis, len, "load factor λ (× %g N)", mag);
-	} else if (body && !point) {
-		snprintf(axis, len, "load factor λ (horizontal force / weight)");
-	} else {
-		snprintf(axis, len, "load factor λ (× reference live load)");
-	}
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	snprintf(axis, len, "%s", q.axis);
+	*unit = *q.unit ? " N" : "";
 }
 
 /* Relative frequencies of sorted x in nb classes [lo + k w, lo + (k+1) w),
@@ -173,6 +151,7 @@ static void wall_extent(struct rctx *c)
 
 static void rctx_free(struct rctx *c)
 {
+	free(c->sol);
 	free(c->lam);
 	free(c->tst);
 	free(c->fm);
@@ -215,6 +194,13 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 			return sw_fail(err, SW_EINPUT, "report: test load %ld is "
 				       "not a number", i + 1);
 	report_load_unit(in->w, c->axis, sizeof c->axis, &c->unit);
+	struct wall_quantity q;
+	wall_quantity(in->w, &q);
+	c->sol = sw_xcalloc((size_t)in->nsol + 1, sizeof *c->sol);
+	for (int i = 0; i < in->nsol; i++) {
+		c->sol[i] = in->sol[i];
+		c->sol[i].lambda *= q.scale;
+	}
 	c->n = (size_t)in->nlam;
 	c->lam = stats_sorted_copy(in->lam, c->n);
 	stats_summarise(c->lam, c->n, &c->ms);
@@ -398,8 +384,9 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
-	snprintf(yl, sizeof yl, "probability density (1/%s)",
-		 *c->unit ? "N" : "unit of λ");
+	/* per N, or of no unit like the coefficient it is of */
+	snprintf(yl, sizeof yl, "probability density%s",
+		 *c->unit ? " (1/N)" : "");
 	plot_axes(f, &a, c->axis, yl, tests ?
 		  "Model KDE and best-fit normal of the tests" :
 		  "Model KDE and its best-fit normal (no tests)", 0);
@@ -672,7 +659,7 @@ static void single_labels(struct fig *f, const struct rctx *c,
 	double lastx = -1e9;
 	int row = 0;
 	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
+		const struct report_solution *s = &c->sol[i];
 		if (!s->found || !isfinite(s->lambda))
 			continue;
 		double x = fmin(fmax(plot_x(&a, s->lambda), a.x + 1), a.x + a.w - 1);
@@ -738,7 +725,7 @@ static void single_captions(struct fig *f, const struct rctx *c)
 	plot_caption(f, y + 13, s);
 	s[0] = 0;
 	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *so = &in->sol[i];
+		const struct report_solution *so = &c->sol[i];
 		if (so->found && isfinite(so->lambda))
 			continue;
 		snprintf(s + strlen(s), sizeof s - strlen(s), "%s%s: %s",
@@ -760,9 +747,9 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	a.h -= 14;
 	double lo = c->x0, hi = c->x1;
 	for (int i = 0; i < in->nsol; i++)
-		if (in->sol[i].found && isfinite(in->sol[i].lambda)) {
-			lo = fmin(lo, in->sol[i].lambda);
-			hi = fmax(hi, in->sol[i].lambda);
+		if (c->sol[i].found && isfinite(c->sol[i].lambda)) {
+			lo = fmin(lo, c->sol[i].lambda);
+			hi = fmax(hi, c->sol[i].lambda);
 		}
 	double span = hi - lo;
 	a.x0 = fmax(0, lo - (lo < c->x0 ? 0.05 * span : 0));
@@ -806,7 +793,7 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	cairo_stroke(cr);
 	/* the single solutions */
 	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
+		const struct report_solution *s = &c->sol[i];
 		if (!s->found || !isfinite(s->lambda))
 			continue;
 		plot_style(cr, LG_LINE, *method_colour(s->method));
@@ -821,8 +808,9 @@ static void draw_single(struct fig *f, const struct rctx *c)
 	cairo_set_dash(cr, NULL, 0, 0);
 	cairo_restore(cr);
 	char yl[64];
-	snprintf(yl, sizeof yl, "probability density (1/%s)",
-		 *c->unit ? "N" : "unit of λ");
+	/* per N, or of no unit like the coefficient it is of */
+	snprintf(yl, sizeof yl, "probability density%s",
+		 *c->unit ? " (1/N)" : "");
 	plot_axes(f, &a, c->axis, yl, NULL, 0);
 	plot_text(f, a.x, 16, 12, 1, 0, 1, 0, "%s",
 		  "The model against the single-solution methods");

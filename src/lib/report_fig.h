@@ -23,6 +23,9 @@ struct rctx {
 	const struct wall *w;
 	char axis[96];		/* the load axis label */
 	const char *unit;	/* " N" or "" */
+	/* in->sol with each lambda times wall_quantity's scale: the
+	 * loads printed and drawn */
+	struct report_solution *sol;
 	double *lam;		/* model loads, sorted */
 	size_t n;
 	double *tst;		/* tests, sorted, or NULL */

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "report_fig.h"
 #include "slipwall/outfile.h"
@@ -58,6 +59,48 @@ struct md_text {
 	char *name, *wall_path, *command, *samples_file, *tests_source, *note;
 };
 
+/* Is every line of s clean (text_is_clean), newlines apart? */
+static int clean_lines(const char *s)
+{
+	char *copy = sw_xstrdup(s), *save = NULL;
+	int ok = 1;
+	for (char *l = strtok_r(copy, "\n", &save); l && ok;
+	     l = strtok_r(NULL, "\n", &save))
+		ok = text_is_clean(l);
+	free(copy);
+	return ok;
+}
+
+/* The command to reproduce the report, as a code block that a POSIX
+ * shell runs as it is: indented when it is one line; fenced when an
+ * argument spans lines (a --set value with a newline, quoted by the
+ * caller: cli_shell_arg), the fence longer than any run of backticks in
+ * it.  A command with other control characters (the caller did not
+ * quote them) is written escaped, one line, for people only. */
+static void md_command(FILE *f, const char *cmd)
+{
+	if (!strchr(cmd, '\n') || !clean_lines(cmd)) {
+		char *clean = text_clean(cmd);
+		fprintf(f, " To reproduce it:\n\n    %s\n\n", clean);
+		free(clean);
+		return;
+	}
+	int run = 0, longest = 0;
+	for (const char *p = cmd; *p; p++) {
+		run = *p == '`' ? run + 1 : 0;
+		if (run > longest)
+			longest = run;
+	}
+	int fence = longest < 3 ? 3 : longest + 1;
+	fputs(" To reproduce it:\n\n", f);
+	for (int k = 0; k < fence; k++)
+		fputc('`', f);
+	fprintf(f, "sh\n%s\n", cmd);
+	for (int k = 0; k < fence; k++)
+		fputc('`', f);
+	fputs("\n\n", f);
+}
+
 static void md_values(FILE *f, const struct rctx *c)
 {
 	fprintf(f, "## Characteristic values (the paper's Table 1)\n\n");
@@ -105,7 +148,7 @@ static void md_single(FILE *f, const struct rctx *c)
 	else
 		fprintf(f, "| method | load | note |\n|---|---:|---|\n");
 	for (int i = 0; i < in->nsol; i++) {
-		const struct report_solution *s = &in->sol[i];
+		const struct report_solution *s = &c->sol[i];
 		fprintf(f, "| %s | ", s->method);
 		if (s->found)
 			md_num(f, s->lambda, c->unit);
@@ -200,15 +243,15 @@ enum sw_status report_md_write(const struct rctx *c, const char *dir,
 	FILE *f = out.f;
 	struct md_text t = {
 		md_clean(c->w->name), md_clean(r->wall_path),
-		md_clean(r->command), md_clean(r->samples_file),
+		NULL, md_clean(r->samples_file),
 		md_clean(r->tests_source), md_clean(r->note),
 	};
 	fprintf(f, "# slipwall report: %s\n\n", t.name ? t.name :
 		(t.wall_path ? t.wall_path : "wall"));
 	fprintf(f, "Written by slipwall %s from `%s`.", r->version ? r->version :
 		"(unknown version)", t.wall_path ? t.wall_path : "?");
-	if (t.command)
-		fprintf(f, " To reproduce it:\n\n    %s\n\n", t.command);
+	if (r->command)
+		md_command(f, r->command);
 	else
 		fprintf(f, "\n\n");
 	fprintf(f, "Loads: %s.\n\n", c->axis);

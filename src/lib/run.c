@@ -230,13 +230,14 @@ void run_signals_restore(struct run_signals *c)
 struct loads {
 	double *x;
 	long n;
+	double scale;	/* wall_quantity's */
 };
 
 static void keep_load(void *ctx, const struct record *r)
 {
 	struct loads *l = ctx;
 	if (r->status == SAMPLE_ACCEPTED)
-		l->x[l->n++] = r->lambda_min;
+		l->x[l->n++] = l->scale * r->lambda_min;
 }
 
 enum sw_status run_all(const struct mc_config *cfg, struct tally *t,
@@ -249,7 +250,9 @@ enum sw_status run_all(const struct mc_config *cfg, struct tally *t,
 		return SW_EANALYSIS;
 	struct run_source src;
 	struct run run;
-	struct loads l = {NULL, 0};
+	struct wall_quantity q;
+	wall_quantity(cfg->w, &q);
+	struct loads l = {NULL, 0, q.scale};
 	run_source_pool(&src, m);
 	run_init(&run, cfg->w, &src, t, NULL);
 	if (lam) {

@@ -508,6 +508,8 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 	enum sw_status st = reader_start(&r, path, w, &m, err);
 	double *x = NULL;
 	long k = 0, cap = 0;
+	struct wall_quantity q;
+	wall_quantity(w, &q);
 	while (st == SW_OK) {
 		int got = reader_next(&r, err);
 		if (got <= 0) {
@@ -531,7 +533,7 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 			cap = cap ? 2 * cap : 256;
 			x = sw_xrealloc(x, sizeof(double) * (size_t)cap);
 		}
-		x[k++] = v;
+		x[k++] = q.scale * v;
 	}
 	reader_warning(&r, warn);
 	reader_close(&r);

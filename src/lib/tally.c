@@ -23,6 +23,7 @@ void tally_init(struct tally *t, const struct wall *w)
 	memset(t, 0, sizeof *t);
 	t->nifaces = w->nifaces;
 	t->nblocks = w->nblocks;
+	wall_quantity(w, &t->q);
 }
 
 void tally_free(struct tally *t)
@@ -110,7 +111,7 @@ void tally_add(struct tally *t, const struct record *it)
 			t->rejected[SAMPLE_NUMERICAL]++;
 		return;
 	}
-	double lam = it->lambda_min;
+	double lam = t->q.scale * it->lambda_min;
 	t->accepted++;
 	stats_sorted_insert(&t->lam, lam);
 	t->lam_sum += lam;
@@ -180,7 +181,18 @@ void tally_json(const struct tally *t, struct json *j)
 		json_int(j, t->rejected[k]);
 	}
 	json_object_end(j);
+	tally_quantity_json(j, &t->q);
 	tally_summary_json(j, &s);
+}
+
+void tally_quantity_json(struct json *j, const struct wall_quantity *q)
+{
+	json_key(j, "load");
+	json_object_begin(j);
+	json_key_string(j, "quantity", q->name);
+	json_key_string(j, "unit", q->unit);
+	json_key_double(j, "scale", q->scale);
+	json_object_end(j);
 }
 
 void tally_summary_json(struct json *j, const struct stats_summary *s)

@@ -12,6 +12,7 @@
  * not a NaN in the results.
  */
 #include <float.h>
+#include <stdint.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -97,6 +98,87 @@ void wall_where(const struct wall *w, struct wall_mark m, char *buf,
 }
 
 #define WHERE(m) (wall_where(w, (m), where, sizeof where), where)
+
+void wall_quantity(const struct wall *w, struct wall_quantity *q)
+{
+	int point = 0, body = 0, same = 1;
+	double m = 1;
+	for (int i = 0; i < w->nloads; i++) {
+		const struct wall_load *ld = &w->loads[i];
+		if (point + body == 0)
+			m = ld->magnitude;
+		else if (ld->magnitude != m)
+			same = 0;
+		if (ld->kind == LOAD_POINT)
+			point++;
+		else
+			body++;
+	}
+	if (point && !body && same) {
+		*q = (struct wall_quantity){m, "collapse load", "N",
+			"collapse load (N)", point > 1 ?
+			"N, the force of each point load (its magnitude "
+			"times the load factor lambda)" :
+			"N, the force of the point load (its magnitude "
+			"times the load factor lambda)"};
+	} else if (body && !point && same) {
+		*q = (struct wall_quantity){m, "seismic coefficient", "",
+			"seismic coefficient (horizontal force / weight)",
+			"seismic coefficient, no unit (the body load's force "
+			"on each block over its weight: magnitude times "
+			"lambda)"};
+	} else {
+		*q = (struct wall_quantity){1, "load factor", "",
+			"load factor λ (× the reference loads)",
+			"load factor lambda, no unit (it multiplies every "
+			"load's magnitude)"};
+	}
+}
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+	const unsigned char *b = p;
+	for (size_t k = 0; k < n; k++)
+		h = (h ^ b[k]) * 1099511628211ULL;
+	return h;
+}
+
+void wall_digest(const struct wall *w, char *out)
+{
+	uint64_t h = 14695981039346656037ULL;
+	h = fnv(h, &w->nblocks, sizeof w->nblocks);
+	for (int b = 0; b < w->nblocks; b++) {
+		const struct wall_block *bl = &w->blocks[b];
+		h = fnv(h, &bl->nv, sizeof bl->nv);
+		h = fnv(h, bl->xy, sizeof(double) * 2 * (size_t)bl->nv);
+		h = fnv(h, &bl->weight, sizeof bl->weight);
+		h = fnv(h, &bl->fixed, sizeof bl->fixed);
+	}
+	h = fnv(h, &w->nifaces, sizeof w->nifaces);
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		int ab[2] = {f->a, f->b};
+		h = fnv(h, ab, sizeof ab);
+		h = fnv(h, f->p1, sizeof f->p1);
+		h = fnv(h, f->p2, sizeof f->p2);
+		h = fnv(h, &f->mu, sizeof f->mu);
+	}
+	h = fnv(h, &w->nloads, sizeof w->nloads);
+	for (int l = 0; l < w->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		int kind = ld->kind;
+		h = fnv(h, &kind, sizeof kind);
+		h = fnv(h, ld->at, sizeof ld->at);
+		h = fnv(h, ld->dir, sizeof ld->dir);
+		h = fnv(h, &ld->magnitude, sizeof ld->magnitude);
+	}
+	snprintf(out, WALL_DIGEST_LEN, "fnv1a64:%016llx", (unsigned long long)h);
+}
+
+const char wall_far_text[] = "is too far from the origin for the size of "
+	"its polygon: doubles there are more than 1e-8 of the polygon's "
+	"thickness apart (docs/wall-format.md, \"Coordinates far from the "
+	"origin\"): move the wall nearer the origin";
 
 int wall_id_reserved(const char *id)
 {
@@ -302,6 +384,14 @@ static enum sw_status finish_polygons(struct wall *w, const struct extent *e,
 				       "%s%s '%s' is too large: its area "
 				       "overflows a double", WHERE(b->mark),
 				       b->fixed ? "support" : "block", b->id);
+		}
+		int far = geom_far_vertex(b->xy, b->nv);
+		if (far >= 0) {
+			free(corners);
+			return sw_fail(err, SW_EINPUT, "%s%s '%s': vertex %d "
+				       "%s", WHERE(b->mark), b->fixed ?
+				       "support" : "block", b->id, far + 1,
+				       wall_far_text);
 		}
 		enum geom_shape s = geom_check_polygon(b->xy, b->nv, tol);
 		if (s != GEOM_OK) {

@@ -64,6 +64,7 @@
 
 #include <yaml.h>
 
+#include "slipwall/geom.h"
 #include "slipwall/layout.h"
 #include "slipwall/outfile.h"
 #include "slipwall/wallfile.h"
@@ -467,6 +468,13 @@ static int reader_polygon(struct reader *r, yaml_node_t *n, const char *what,
 			free(p);
 			return -1;
 		}
+	}
+	int far = geom_far_vertex(p, m);
+	if (far >= 0) {
+		free(p);
+		return FAIL(r, reader_node(r, n->data.sequence.items.start[far]),
+			    "vertex %d %s", far + 1,
+			    wall_far_text);
 	}
 	*xy = p;
 	*nv = m;

@@ -166,8 +166,12 @@ void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
-/* The unit of λ: "N" (point loads) or "load factor" (a body load). */
+/* The unit of the loads shown (wall_quantity): "N" (point loads of one
+ * magnitude), else what they are ("seismic coefficient", "load factor"). */
 const char *tui_load_unit(const struct wall *w);
+/* A single solution's load factor as the run's loads are shown (the
+ * tally's quantity: wall_quantity's scale times lambda). */
+double tui_load(const struct tui *t, double lambda);
 
 /* tui_signal.c */
 int tui_signal_install(void);	/* before curses starts; -1 on failure */

@@ -144,8 +144,14 @@ const char *tui_mu(const struct tui *t)
 
 const char *tui_load_unit(const struct wall *w)
 {
-	for (int l = 0; l < w->nloads; l++)
-		if (w->loads[l].kind == LOAD_BODY)
-			return "load factor";
-	return "N";
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	return *q.unit ? q.unit : q.name;
+}
+
+double tui_load(const struct tui *t, double lambda)
+{
+	struct wall_quantity q;
+	wall_quantity(t->w, &q);
+	return q.scale * lambda;
 }

@@ -98,9 +98,9 @@ static int tui_hist_range(const struct tui *t, struct tui_hist_axis *a)
 	struct tui_mark one[2];
 	int none = 0;
 	if (t->has_gil)
-		one[none++] = (struct tui_mark){t->lam_gil, "G"};
+		one[none++] = (struct tui_mark){tui_load(t, t->lam_gil), "G"};
 	if (t->has_std)
-		one[none++] = (struct tui_mark){t->lam_std, "S"};
+		one[none++] = (struct tui_mark){tui_load(t, t->lam_std), "S"};
 	double span = isfinite(hi - lo) ? hi - lo : 0;
 	for (int i = 0; i < none; i++) {
 		if (n && span > 0 && one[i].v > hi + 0.5 * span) {

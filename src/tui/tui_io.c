@@ -42,6 +42,9 @@ static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
 		json_string(&j, w->path);
 	else
 		json_null(&j);
+	char digest[WALL_DIGEST_LEN];
+	wall_digest(w, digest);
+	json_key_string(&j, "wall_digest", digest);
 	json_key(&j, "samples_file");
 	if (t->run.csv[0])
 		json_string(&j, t->run.csv);
@@ -60,12 +63,12 @@ static void tui_io_json(struct tui *t, FILE *f, const char *wallpath)
 	json_int(&j, ta->nmech);
 	json_key(&j, "standard");
 	if (t->solve_done && t->has_std)
-		json_double(&j, t->lam_std);
+		json_double(&j, tui_load(t, t->lam_std));
 	else
 		json_null(&j);
 	json_key(&j, "gilbert");
 	if (t->solve_done && t->has_gil)
-		json_double(&j, t->lam_gil);
+		json_double(&j, tui_load(t, t->lam_gil));
 	else
 		json_null(&j);
 	if (w->ntests > 0) {

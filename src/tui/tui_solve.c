@@ -186,7 +186,7 @@ int tui_solve_text(const struct tui *t, char *sv, char *gv, size_t len)
 		gv[0] = 0;
 		return 0;
 	}
-	snprintf(sv, len, t->has_std ? "%.4g" : "n/a", t->lam_std);
-	snprintf(gv, len, t->has_gil ? "%.4g" : "n/a", t->lam_gil);
+	snprintf(sv, len, t->has_std ? "%.4g" : "n/a", tui_load(t, t->lam_std));
+	snprintf(gv, len, t->has_gil ? "%.4g" : "n/a", tui_load(t, t->lam_gil));
 	return 1;
 }

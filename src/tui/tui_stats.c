@@ -226,8 +226,8 @@ static void tui_stats_tail(struct tui *t, struct tui_lines *p)
 	double v[4];
 	char sv[32], gv[32];
 	if (tui_solve_text(t, sv, gv, sizeof sv)) {
-		v[0] = t->has_std ? t->lam_std : NAN;
-		v[1] = t->has_gil ? t->lam_gil : NAN;
+		v[0] = t->has_std ? tui_load(t, t->lam_std) : NAN;
+		v[1] = t->has_gil ? tui_load(t, t->lam_gil) : NAN;
 		snprintf(line, sizeof line, "standard %s  gilbert %s",
 			 t->has_std ? "%s" : "n/a%.0s", t->has_gil ? "%s" : "n/a%.0s");
 		tui_stats_nums(p, line, 0, 2, v);

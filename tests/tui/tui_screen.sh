@@ -83,10 +83,10 @@ else
 fi
 start ft LANG=C LC_ALL=C -- walls/ferris-tinloi-1.yaml
 wait_samples ft 1 20
-if screen_has ft 'sd  [0-9.e+-]+ +\(load factor\)'; then
-	ok "a body load: lambda is a load factor"
+if screen_has ft 'sd  [0-9.e+-]+ +\(seismic coefficient\)'; then
+	ok "a body load: the loads are a seismic coefficient"
 else
-	not_ok "a body load: lambda is a load factor" "$(screen ft)"
+	not_ok "a body load: the loads are a seismic coefficient" "$(screen ft)"
 fi
 T send-keys -t t:ft q
 mkdir -p "$tmp/a/long/directory/name/to/see/the/path/is/not/cut"

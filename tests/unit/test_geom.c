@@ -144,8 +144,36 @@ static void large(void)
 	wall_free(w);
 }
 
+/* Far from the origin: the area is taken relative to the polygon (the
+ * shoelace of absolute coordinates gave a 0.4 x 0.8 m block at
+ * (-1e9, -1e9) an area 400 times too large), and geom_far_vertex says
+ * where the coordinates cannot hold the polygon to GEOM_PRECISION_REL. */
+static void far_from_origin(void)
+{
+	static const double at[][2] = {{1e7, 1e7}, {5e5, 4.4e6}, {-1e9, -1e9}};
+	for (int k = 0; k < 3; k++) {
+		double x = at[k][0], y = at[k][1];
+		double r[8] = {x, y, x + 0.5, y, x + 0.5, y + 0.25, x, y + 0.25};
+		/* the edges as the doubles hold them: 0.5 and 0.25 are
+		 * exact sums, so the area is exactly 0.125 */
+		tap_ok(fabs(geom_area(r, 4) - 0.125) < 1e-15, "a 0.5 x 0.25 "
+		       "rectangle at (%g, %g): area 0.125", x, y);
+		tap_ok(geom_far_vertex(r, 4) == (k == 2 ? 0 : -1),
+		       "at (%g, %g): %s", x, y, k == 2 ? "its first vertex is "
+		       "too far for 1e-8 of 0.25 m" : "precise enough");
+	}
+	/* the bound: |x| 2^-52 against 1e-8 of the thickness (0.25 m) */
+	double edge = ldexp(GEOM_PRECISION_REL * 0.25, 52);
+	double in = ldexp(1, (int)floor(log2(edge))), out = 2 * in;
+	double a[8] = {in, 0, in + 0.5, 0, in + 0.5, 0.25, in, 0.25};
+	double b[8] = {0, out, 0.5, out, 0.5, out + 0.25, 0, out + 0.25};
+	tap_ok(geom_far_vertex(a, 4) == -1 && geom_far_vertex(b, 4) == 0,
+	       "x = %g passes, y = %g does not (edge %g)", in, out, edge);
+}
+
 int main(void)
 {
+	far_from_origin();
 	polygons();
 	corners();
 	ferris_tinloi_contacts();

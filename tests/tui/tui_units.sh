@@ -1,0 +1,34 @@
+#!/bin/bash
+# tui/tui_units.sh - the workbench prints the load people read (docs/
+# run.md, "Loads and units"), in tmux: walls/single-block.yaml with its
+# point load's magnitude 0.5 at depth 0 tips at P = W b / (2 a) =
+# 209.28 N, and the statistics pane shows 209.3 (N) for the run's
+# median and for the standard solution, never lambda = 418.56.
+#
+# Usage (from the source root): bash tests/tui/tui_units.sh SLIPWALL
+# TAP output; skips when tmux is missing.
+
+bin=${1:?usage: tui/tui_units.sh SLIPWALL}
+bin=$(realpath "$bin")
+cd "$(dirname "$0")/../.." || exit 1
+
+. tests/tap.sh
+. tests/tui/tui_lib.sh
+tui_setup "slipwall-units-$$" 140 40
+
+sed -e 's/magnitude: 1}/magnitude: 0.5}/' -e 's/depth: 0.25/depth: 0/' \
+	-e 's/^  samples: .*/  samples: 30/' walls/single-block.yaml >"$tmp/half.yaml"
+start h LANG=C LC_ALL=C -- "$tmp/half.yaml"
+if wait_run h 1 done 60; then
+	ok "magnitude 0.5: run 1 done"
+else
+	not_ok "magnitude 0.5: run 1 done" "$(screen h)"
+fi
+wait_for h 'standard [0-9]' 30
+if screen_has h 'p05 +209\.3 +p50 +209\.3' && screen_has h 'sd +[0-9.e+-]+ +\(N\)' &&
+   screen_has h 'standard 209\.3' && ! screen_has h '418\.6'; then
+	ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda"
+else
+	not_ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda" "$(screen h)"
+fi
+tap_end
