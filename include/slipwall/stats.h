@@ -34,13 +34,25 @@ int stats_quantile_ci_ranks(size_t n, double p, double conf, size_t *lo,
  * and 0 < p < 1. */
 double stats_quantile_ci_coverage(size_t n, double p, size_t lo, size_t hi);
 
+/* Binomial tails of B ~ Bin(n, p), n <= STATS_BINOM_MAX_N (2^53, where
+ * counts stop being exact doubles), p in [0, 1]: P(B >= k) and
+ * P(B <= k), the small one of the two to a relative accuracy near
+ * 1e-13 (written here: Loader's binomial term times the continued
+ * fraction of the incomplete beta; docs/statistics.md).  NaN for bad
+ * arguments, or if the fraction does not converge (never seen). */
+#define STATS_BINOM_MAX_N 9007199254740992.0
+double stats_binom_ge(size_t k, size_t n, double p);
+double stats_binom_le(size_t k, size_t n, double p);
+
 /* The probability of collapse at a load (`run --at`, fragility):
  * stats_count_le is the number of sorted x[0..n-1] that are <= v;
  * stats_binomial_ci the exact (Clopper-Pearson) interval of a binomial
- * proportion, k of n (1 <= n, k <= n), at confidence conf in (0,1):
- * lo = Beta^-1((1-conf)/2; k, n-k+1) (0 when k = 0), hi = Beta^-1((1+conf)/2;
- * k+1, n-k) (1 when k = n), so P(B >= k | lo) = P(B <= k | hi) = (1-conf)/2;
- * NaNs for bad arguments.  stats_dkw_eps: the half-width of the
+ * proportion, k of n (1 <= n <= 2^53, k <= n), at confidence conf in
+ * (0,1): lo = Beta^-1((1-conf)/2; k, n-k+1) (0 when k = 0), hi =
+ * Beta^-1((1+conf)/2; k+1, n-k) (1 when k = n), so P(B >= k | lo) =
+ * P(B <= k | hi) = (1-conf)/2; found by bisection on the tails above to
+ * the nearest double (the ends of {p : tail >= (1-conf)/2}); NaNs for
+ * bad arguments.  stats_dkw_eps: the half-width of the
  * Dvoretzky-Kiefer-Wolfowitz band, sqrt(ln(2/(1-conf)) / (2n)) (Massart's
  * constant): the true CDF lies within the empirical CDF +- eps at every
  * load at once with probability >= conf. */

@@ -62,6 +62,14 @@ struct sw_whole {
 enum sw_status sw_whole_open(struct sw_whole *w, const char *path, char *err);
 enum sw_status sw_whole_close(struct sw_whole *w, char *err);
 
+/* The library's set-up for the whole process: GSL's error handler off
+ * (GSL functions return their errors; the library checks each one).
+ * Idempotent and thread-safe.  Each front end calls it first (main); the
+ * entry points that reach GSL code that can fail (mc_start,
+ * sample_ws_new) call it too, so a library user or a unit test that
+ * forgets it is safe. */
+void sw_init(void);
+
 /* The program's version ("0.1.0"), from meson.build. */
 const char *sw_version(void);
 
