@@ -65,13 +65,18 @@ struct stats_summary {
 	size_t n;
 	double min, p05, p50, p95, max;
 	double mean, std;	/* std: sample standard deviation (n - 1) */
-	int has_ci;		/* the 99 % interval of p05 exists */
+	int has_ci;		/* the interval of p05 exists */
 	double p05_lo, p05_hi;	/* its ends (order statistics) */
+	double ci_conf;		/* its level: 0.99 but under --until-ci */
 };
 /* Summary of x[0..n-1] (any order; not modified).  n == 0 gives n = 0 and
- * NaN everywhere; n == 1 gives std = NaN.  has_ci needs n >= 90; without
- * it p05_lo and p05_hi are NaN. */
+ * NaN everywhere; n == 1 gives std = NaN.  The interval of p05 is at
+ * 99 %; has_ci needs n >= 90; without it p05_lo and p05_hi are NaN.
+ * stats_summarise_conf: the interval at level conf instead (--until-ci's
+ * split level, run.h; has_ci needs more samples the higher it is). */
 void stats_summarise(const double *x, size_t n, struct stats_summary *s);
+void stats_summarise_conf(const double *x, size_t n, double conf,
+			  struct stats_summary *s);
 
 /* Sort x[0..n-1] in place, ascending (gsl_sort). */
 void stats_sort(double *x, size_t n);

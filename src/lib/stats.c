@@ -185,7 +185,14 @@ static double sd_m(const double *x, size_t n, double mean)
 
 void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 {
+	stats_summarise_conf(x, n, STATS_P05_CONF, s);
+}
+
+void stats_summarise_conf(const double *x, size_t n, double conf,
+			  struct stats_summary *s)
+{
 	s->n = n;
+	s->ci_conf = conf;
 	s->min = s->p05 = s->p50 = s->p95 = s->max = NAN;
 	s->mean = s->std = NAN;
 	s->has_ci = 0;
@@ -203,7 +210,7 @@ void stats_summarise(const double *x, size_t n, struct stats_summary *s)
 	if (n >= 2)
 		s->std = sd_m(v, n, s->mean);
 	size_t lo, hi;
-	if (stats_quantile_ci_ranks(n, 0.05, STATS_P05_CONF, &lo, &hi) == 0) {
+	if (stats_quantile_ci_ranks(n, 0.05, conf, &lo, &hi) == 0) {
 		s->has_ci = 1;
 		s->p05_lo = v[lo - 1];
 		s->p05_hi = v[hi - 1];
