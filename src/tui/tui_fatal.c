@@ -9,7 +9,11 @@
  * An end that does not come back - abort() (sw_xmalloc out of memory, a
  * GLPK error outside a solve, a failed assertion), SIGSEGV, SIGBUS,
  * SIGFPE, SIGILL on any thread (the workers leave these unblocked,
- * sys_block_signals), or exit() from anywhere - used to leave the
+ * sys_block_signals), every other signal whose default is to end the
+ * process (SIGQUIT from Ctrl-\, SIGXFSZ past `ulimit -f`, SIGXCPU,
+ * SIGUSR1, ...; not one that was ignored when the program started, and
+ * not SIGKILL, which cannot be caught), or exit() from anywhere - used
+ * to leave the
  * terminal raw, on the alternate screen, and the message in $TMPDIR.
  * Now a handler for those signals, and an atexit hook, do what endwin
  * would, with async-signal-safe calls only:
@@ -39,6 +43,30 @@
 
 #include "tui.h"
 
+/* The signals that would end the workbench without its own handler
+ * (SIGINT, SIGTERM, SIGHUP are tui_signal.c's), with their names. */
+#define TF_NSIGS 15
+static const struct {
+	int sig;
+	const char *name;
+} tf_sigs[TF_NSIGS] = {
+	{SIGABRT, "SIGABRT (aborted)"},
+	{SIGSEGV, "SIGSEGV (segmentation fault)"},
+	{SIGBUS, "SIGBUS (bus error)"},
+	{SIGFPE, "SIGFPE (arithmetic exception)"},
+	{SIGILL, "SIGILL (illegal instruction)"},
+	{SIGQUIT, "SIGQUIT (quit)"},
+	{SIGTRAP, "SIGTRAP (trap)"},
+	{SIGSYS, "SIGSYS (bad system call)"},
+	{SIGXCPU, "SIGXCPU (CPU time limit exceeded)"},
+	{SIGXFSZ, "SIGXFSZ (file size limit exceeded)"},
+	{SIGUSR1, "SIGUSR1"},
+	{SIGUSR2, "SIGUSR2"},
+	{SIGALRM, "SIGALRM (alarm clock)"},
+	{SIGVTALRM, "SIGVTALRM (virtual alarm clock)"},
+	{SIGPROF, "SIGPROF (profiling timer expired)"},
+};
+
 /* Everything the handler reads, set before it is installed. */
 static struct {
 	int armed;		/* curses owns the terminal */
@@ -48,14 +76,9 @@ static struct {
 	char path[PATH_MAX];	/* the temporary stderr */
 	char leave[256];	/* the strings that leave curses */
 	size_t nleave;
-	struct sigaction old[5];
+	struct sigaction old[TF_NSIGS];
+	int caught[TF_NSIGS];
 } tf = {.saved_err = -1};
-
-static const int tf_sigs[5] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL};
-static const char *const tf_names[5] = {
-	"SIGABRT (aborted)", "SIGSEGV (segmentation fault)",
-	"SIGBUS (bus error)", "SIGFPE (arithmetic exception)",
-	"SIGILL (illegal instruction)"};
 
 static void tf_write(int fd, const char *s, size_t n)
 {
@@ -106,9 +129,9 @@ static void tf_terminal_back(void)
 static void tf_on_fatal(int sig)
 {
 	const char *name = "a fatal signal";
-	for (int k = 0; k < 5; k++)
-		if (tf_sigs[k] == sig)
-			name = tf_names[k];
+	for (int k = 0; k < TF_NSIGS; k++)
+		if (tf_sigs[k].sig == sig)
+			name = tf_sigs[k].name;
 	if (tf.armed) {
 		tf.armed = 0;
 		tf_terminal_back();
@@ -190,8 +213,12 @@ void tui_fatal_arm(int mouse)
 	sa.sa_handler = tf_on_fatal;
 	sigemptyset(&sa.sa_mask);
 	sa.sa_flags = SA_RESETHAND | SA_NODEFER;
-	for (int k = 0; k < 5; k++)
-		sigaction(tf_sigs[k], &sa, &tf.old[k]);
+	for (int k = 0; k < TF_NSIGS; k++) {
+		/* a signal ignored at start stays ignored (nohup) */
+		tf.caught[k] = sigaction(tf_sigs[k].sig, NULL, &tf.old[k]) == 0 &&
+			       tf.old[k].sa_handler != SIG_IGN &&
+			       sigaction(tf_sigs[k].sig, &sa, NULL) == 0;
+	}
 	if (!hooked)
 		hooked = atexit(tf_at_exit) == 0;
 	tf.armed = 1;
@@ -201,8 +228,9 @@ void tui_fatal_end(void)
 {
 	if (tf.armed) {
 		tf.armed = 0;
-		for (int k = 0; k < 5; k++)
-			sigaction(tf_sigs[k], &tf.old[k], NULL);
+		for (int k = 0; k < TF_NSIGS; k++)
+			if (tf.caught[k])
+				sigaction(tf_sigs[k].sig, &tf.old[k], NULL);
 	}
 	fflush(stderr);
 	tf_stderr_back();

@@ -8,8 +8,8 @@
 #
 # In a private tmux server the workbench runs from a shell that, once it
 # has ended, records the terminal's modes (stty -a).  The workbench is
-# sent SIGABRT (what abort() raises) and then, in a second window,
-# SIGSEGV: each time its stderr says "the workbench ended: SIGNAL (the
+# sent SIGABRT (what abort() raises), then in other windows SIGSEGV and
+# Ctrl-\ (SIGQUIT, typed): each time its stderr says "the workbench ended: SIGNAL (the
 # terminal was restored)", the shell after it finds echo and canonical
 # input back on, the pane is off the alternate screen, and no temporary
 # stderr file is left.  A wall whose design load is the least of 240
@@ -36,7 +36,11 @@ fatal() {
 		not_ok "$sig: the workbench started" "$(screen "$w")"
 		return
 	fi
-	kill -"$sig" "$(cat "$tmp/$w.pid")"
+	if [ "$sig" = SIGQUIT ]; then
+		T send-keys -t "t:$w" 'C-\'	# what a person types
+	else
+		kill -"$sig" "$(cat "$tmp/$w.pid")"
+	fi
 	if ! within 20 test -s "$tmp/$w.done"; then
 		not_ok "$sig: the workbench ended" "$(screen "$w")"
 		return
@@ -52,6 +56,7 @@ fatal() {
 }
 fatal a SIGABRT
 fatal s SIGSEGV
+fatal q SIGQUIT
 
 # ---- the design load at k = 1 of 240 ----------------------------------------
 min=$("$bin" run walls/demo.yaml -n 240 --json 2>/dev/null |
