@@ -4,8 +4,10 @@
  * Knows nothing of walls or solvers: arrays of doubles in, numbers out.
  * GSL provides sorting, moments and quantiles; what no well-kept library
  * provides (the exact two-sample Kolmogorov-Smirnov p-value with ties,
- * the reflected Gaussian KDE, the order-statistic interval) is written here
- * by hand, each with a comment that says so and cites the method.
+ * the reflected Gaussian KDE, the order-statistic interval, binomial
+ * tails and the Clopper-Pearson interval that converge for every n) is
+ * written here by hand, each with a comment that says so and cites the
+ * method.  Nothing here calls a GSL function that can fail.
  *
  * Percentile definition everywhere: Hyndman & Fan type 7 (linear
  * interpolation between order statistics, R's default and
