@@ -15,10 +15,16 @@
  *   run_pump ...      until it returns -1 (the source has ended)
  *   run_finish        why the run ended (struct run.stop)
  *
- * Stops.  --until-ci (until_ci > 0): the run stops after the first
- * sample at which the 99 % interval of p05 is narrower than until_ci
- * times p05; samples the source still hands out are dropped, so the
- * result does not depend on the thread count or the timing.
+ * Stops.  --until-ci (until_ci > 0): the run looks at its accepted loads
+ * at RUN_LOOK0 * 2^j of them (128, 256, 512, ...), look j with p05's
+ * interval at the level 1 - 0.01 / 2^(j+1) (run_look_conf), and stops
+ * at the first look whose interval is narrower than until_ci times p05;
+ * samples the source still hands out are dropped, so the result does not
+ * depend on the thread count or the timing.  Each look sets the tally's
+ * ci_conf, so the summary's interval, at the stop or at any other end,
+ * is at the level of the last look made: the shares 0.01 / 2^(j+1) sum
+ * to at most 0.01, and the interval reported covers p05 with probability
+ * at least 99 % (Bonferroni; docs/statistics.md).
  *
  * Write errors (one policy): a row that cannot be written stops the
  * run (RUN_WRITE, the message in .werr): that sample and every later
@@ -70,8 +76,17 @@ enum run_stop {
 };
 const char *run_stop_name(enum run_stop s);
 
-/* The 99 % interval of p05 kept from sample to sample: its ranks depend
- * on the number of accepted samples only. */
+/* --until-ci's looks: the first at RUN_LOOK0 accepted samples, then at
+ * every doubling (at most RUN_LOOKS_MAX of them: 128 * 2^40), look j at
+ * the level 1 - RUN_CI_ALPHA / 2^(j+1). */
+#define RUN_LOOK0 128
+#define RUN_LOOKS_MAX 40
+#define RUN_CI_ALPHA 0.01
+size_t run_look_n(int j);
+double run_look_conf(int j);
+
+/* The 99 % interval of p05 kept from sample to sample (the progress
+ * line): its ranks depend on the number of accepted samples only. */
 struct run_ci {
 	size_t n;
 	int ok;
@@ -95,6 +110,7 @@ struct run {
 	char source_err[SW_ERRLEN];
 	char why[SW_ERRLEN];
 	struct run_ci ci;
+	int looks;		/* --until-ci: the looks made */
 	struct record rec;	/* the pop buffer */
 };
 
@@ -114,6 +130,12 @@ int run_take(struct run *r, const struct record *rec);
 /* After run_pump returned -1: settle .stop (a signal caught, the
  * source's status), .source_status and .why. */
 void run_finish(struct run *r);
+
+/* --until-ci's rule, after an accepted sample is counted: if the count
+ * is the next look's, make it (the tally's ci_conf becomes its level)
+ * and return whether p05's interval at that level is narrower than w
+ * times p05 (then the run must stop); 0 when no look is due. */
+int run_until_ci_look(struct run *r, double w);
 
 /* p05 of the accepted samples so far and its 99 % interval; returns 0
  * (lo and hi NaN) when there are too few samples for an interval. */

@@ -4,8 +4,10 @@
  * Knows nothing of walls or solvers: arrays of doubles in, numbers out.
  * GSL provides sorting, moments and quantiles; what no well-kept library
  * provides (the exact two-sample Kolmogorov-Smirnov p-value with ties,
- * the reflected Gaussian KDE, the order-statistic interval) is written here
- * by hand, each with a comment that says so and cites the method.
+ * the reflected Gaussian KDE, the order-statistic interval, binomial
+ * tails and the Clopper-Pearson interval that converge for every n) is
+ * written here by hand, each with a comment that says so and cites the
+ * method.  Nothing here calls a GSL function that can fail.
  *
  * Percentile definition everywhere: Hyndman & Fan type 7 (linear
  * interpolation between order statistics, R's default and
@@ -34,13 +36,25 @@ int stats_quantile_ci_ranks(size_t n, double p, double conf, size_t *lo,
  * and 0 < p < 1. */
 double stats_quantile_ci_coverage(size_t n, double p, size_t lo, size_t hi);
 
+/* Binomial tails of B ~ Bin(n, p), n <= STATS_BINOM_MAX_N (2^53, where
+ * counts stop being exact doubles), p in [0, 1]: P(B >= k) and
+ * P(B <= k), the small one of the two to a relative accuracy near
+ * 1e-13 (written here: Loader's binomial term times the continued
+ * fraction of the incomplete beta; docs/statistics.md).  NaN for bad
+ * arguments, or if the fraction does not converge (never seen). */
+#define STATS_BINOM_MAX_N 9007199254740992.0
+double stats_binom_ge(size_t k, size_t n, double p);
+double stats_binom_le(size_t k, size_t n, double p);
+
 /* The probability of collapse at a load (`run --at`, fragility):
  * stats_count_le is the number of sorted x[0..n-1] that are <= v;
  * stats_binomial_ci the exact (Clopper-Pearson) interval of a binomial
- * proportion, k of n (1 <= n, k <= n), at confidence conf in (0,1):
- * lo = Beta^-1((1-conf)/2; k, n-k+1) (0 when k = 0), hi = Beta^-1((1+conf)/2;
- * k+1, n-k) (1 when k = n), so P(B >= k | lo) = P(B <= k | hi) = (1-conf)/2;
- * NaNs for bad arguments.  stats_dkw_eps: the half-width of the
+ * proportion, k of n (1 <= n <= 2^53, k <= n), at confidence conf in
+ * (0,1): lo = Beta^-1((1-conf)/2; k, n-k+1) (0 when k = 0), hi =
+ * Beta^-1((1+conf)/2; k+1, n-k) (1 when k = n), so P(B >= k | lo) =
+ * P(B <= k | hi) = (1-conf)/2; found by bisection on the tails above to
+ * the nearest double (the ends of {p : tail >= (1-conf)/2}); NaNs for
+ * bad arguments.  stats_dkw_eps: the half-width of the
  * Dvoretzky-Kiefer-Wolfowitz band, sqrt(ln(2/(1-conf)) / (2n)) (Massart's
  * constant): the true CDF lies within the empirical CDF +- eps at every
  * load at once with probability >= conf. */
@@ -53,13 +67,18 @@ struct stats_summary {
 	size_t n;
 	double min, p05, p50, p95, max;
 	double mean, std;	/* std: sample standard deviation (n - 1) */
-	int has_ci;		/* the 99 % interval of p05 exists */
+	int has_ci;		/* the interval of p05 exists */
 	double p05_lo, p05_hi;	/* its ends (order statistics) */
+	double ci_conf;		/* its level: 0.99 but under --until-ci */
 };
 /* Summary of x[0..n-1] (any order; not modified).  n == 0 gives n = 0 and
- * NaN everywhere; n == 1 gives std = NaN.  has_ci needs n >= 90; without
- * it p05_lo and p05_hi are NaN. */
+ * NaN everywhere; n == 1 gives std = NaN.  The interval of p05 is at
+ * 99 %; has_ci needs n >= 90; without it p05_lo and p05_hi are NaN.
+ * stats_summarise_conf: the interval at level conf instead (--until-ci's
+ * split level, run.h; has_ci needs more samples the higher it is). */
 void stats_summarise(const double *x, size_t n, struct stats_summary *s);
+void stats_summarise_conf(const double *x, size_t n, double conf,
+			  struct stats_summary *s);
 
 /* Sort x[0..n-1] in place, ascending (gsl_sort). */
 void stats_sort(double *x, size_t n);

@@ -47,6 +47,14 @@ void *sw_xcalloc(size_t n, size_t size);
 void *sw_xrealloc(void *p, size_t n);
 char *sw_xstrdup(const char *s);
 
+/* The library's set-up for the whole process: GSL's error handler off
+ * (GSL functions return their errors; the library checks each one).
+ * Idempotent and thread-safe.  Each front end calls it first (main); the
+ * entry points that reach GSL code that can fail (mc_start,
+ * sample_ws_new) call it too, so a library user or a unit test that
+ * forgets it is safe. */
+void sw_init(void);
+
 /* The program's version ("0.1.0"), from meson.build. */
 const char *sw_version(void);
 

@@ -37,6 +37,9 @@ struct tally {
 	long rejected[SAMPLE_STATUS_COUNT];	/* by status (ACCEPTED unused) */
 	struct wall_quantity q;	/* what the loads are (wall_quantity) */
 	struct stats_sorted lam;	/* accepted q.scale * lambda_min, sorted */
+	/* the level of p05's interval in the summaries: 0.99, or under
+	 * --until-ci the share of 1 - 0.99 its looks have left (run.c) */
+	double ci_conf;
 	double lam_sum;
 	long iterations, lps;	/* sums over all samples */
 	double compute_seconds;	/* sum of per-sample compute times */
@@ -52,7 +55,8 @@ void tally_add(struct tally *t, const struct record *it);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */
 int tally_top(const struct tally *t, int *idx, int max);
-/* Summary statistics of the accepted loads (stats_summarise). */
+/* Summary statistics of the accepted loads (stats_summarise_conf at
+ * ci_conf). */
 void tally_summary(const struct tally *t, struct stats_summary *s);
 
 /* The keys every run summary shares (docs/run.md), into an open JSON

@@ -93,7 +93,9 @@ static void usage(FILE *f)
 		"                       with its exact 99 %% interval (a wall's\n"
 		"                       analysis.design_load is always reported)\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"
-		"                       than W times p05 (at most N samples)\n"
+		"                       than W times p05 (at most N samples; looked at\n"
+		"                       128, 256, 512, ... accepted samples, each look\n"
+		"                       at a higher level so that the rule keeps 99 %%)\n"
 		"  --slp plain          the SLP's plain iteration, without the\n"
 		"                       acceleration that is the default (the same\n"
 		"                       fixed point, for comparison)\n"
@@ -302,7 +304,13 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		       s.p05, s.p50, s.p95, s.max);
 		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
 		printf("             in %s\n", t->q.what);
-		if (s.has_ci)
+		if (s.has_ci && s.ci_conf != 0.99)
+			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
+			       "(characteristic value; --until-ci: the %.6g %% "
+			       "interval of its last look, the looks' levels "
+			       "add up to 99 %%)\n", s.p05, s.p05_lo, s.p05_hi,
+			       100 * s.ci_conf);
+		else if (s.has_ci)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "
 			       "(characteristic value)\n", s.p05, s.p05_lo,
 			       s.p05_hi);
@@ -385,6 +393,8 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
+	json_key(&j, "p05_ci_level");	/* the level of p05_ci99's ends */
+	json_double(&j, t->ci_conf);
 	json_key(&j, "design_load");
 	if (r->w->design_load > 0)
 		json_double(&j, r->w->design_load);

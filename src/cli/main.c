@@ -72,6 +72,7 @@ static int check_environment(void)
 
 int main(int argc, char **argv)
 {
+	sw_init();	/* the library's process set-up: GSL's handler off */
 	if (!check_environment())
 		return 2;
 	if (argc >= 2) {

@@ -271,6 +271,7 @@ static void *worker(void *arg)
 
 struct mc *mc_start(const struct mc_config *c, char *err)
 {
+	sw_init();	/* before any worker can reach GSL */
 	if (c->threads < 1 || c->threads > 1024) {
 		sw_fail(err, SW_EUSAGE, "threads must be between 1 and 1024");
 		return NULL;
@@ -310,10 +311,10 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 	m->th = sw_xcalloc((size_t)m->nth, sizeof *m->th);
 	m->since = sw_xcalloc((size_t)m->nth, sizeof *m->since);
 
-	/* workers inherit a full signal mask: signals go to the caller */
-	sigset_t all, old;
-	sigfillset(&all);
-	pthread_sigmask(SIG_SETMASK, &all, &old);
+	/* workers inherit a full signal mask but for the faults: signals
+	 * go to the caller */
+	sigset_t old;
+	sys_block_signals(&old);
 	m->running = 0;
 	for (int k = 0; k < m->nth; k++) {
 		pthread_mutex_lock(&m->mu);

@@ -441,6 +441,7 @@ struct sample_ws *sample_ws_new(const struct wall *w)
 static struct sample_ws *ws_new(const struct wall *w,
 				enum sample_start start, int large)
 {
+	sw_init();	/* GSL's handler off before anderson_step can run */
 	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
 	ws->w = w;
 	ws->large = large;
@@ -1008,7 +1009,9 @@ static unsigned long slp_piece(const struct sample_ws *ws)
  * least squares), and c <- c_t + omega f_t - (dC + omega dF) gamma.  On
  * an affine piece N(c) = P c + q this is GMRES on (I - P) c = q: exact
  * once the memory spans the residuals' Krylov space.  Returns 0 (and
- * leaves c alone) if the least-squares problem is degenerate. */
+ * leaves c alone) if the least-squares problem is degenerate or GSL
+ * fails (an allocation: GSL's handler is off, sw_init, so it returns
+ * NULL; a bad size: an error status). */
 static int anderson_step(struct sample_ws *ws, const struct slp_history *h,
 			 double omega, double *c)
 {
@@ -1016,12 +1019,13 @@ static int anderson_step(struct sample_ws *ws, const struct slp_history *h,
 	gsl_matrix *A = gsl_matrix_alloc((size_t)m, (size_t)k);
 	gsl_vector *b = gsl_vector_alloc((size_t)m), *tau = gsl_vector_alloc((size_t)k);
 	gsl_vector *g = gsl_vector_alloc((size_t)k), *res = gsl_vector_alloc((size_t)m);
-	for (int i = 0; i < m; i++) {
+	int ok = m > 0 && k > 0 && A && b && tau && g && res;
+	for (int i = 0; ok && i < m; i++) {
 		gsl_vector_set(b, (size_t)i, h->f[t][i]);
 		for (int j = 0; j < k; j++)
 			gsl_matrix_set(A, (size_t)i, (size_t)j, h->f[j + 1][i] - h->f[j][i]);
 	}
-	int ok = gsl_linalg_QR_decomp(A, tau) == 0;
+	ok = ok && gsl_linalg_QR_decomp(A, tau) == 0;
 	for (int j = 0; ok && j < k; j++)	/* a rank-deficient memory */
 		ok = fabs(gsl_matrix_get(A, (size_t)j, (size_t)j)) > 1e-12;
 	ok = ok && gsl_linalg_QR_lssolve(A, tau, b, g, res) == 0;
@@ -1034,11 +1038,12 @@ static int anderson_step(struct sample_ws *ws, const struct slp_history *h,
 		}
 		c[i] = v;
 	}
-	gsl_matrix_free(A);
-	gsl_vector_free(b);
-	gsl_vector_free(tau);
-	gsl_vector_free(g);
-	gsl_vector_free(res);
+	if (A)
+		gsl_matrix_free(A);
+	gsl_vector *vs[4] = {b, tau, g, res};
+	for (int j = 0; j < 4; j++)
+		if (vs[j])
+			gsl_vector_free(vs[j]);
 	return ok;
 }
 

@@ -1,12 +1,32 @@
-/* status.c - the status table, error formatting, checked allocation.
- * (Files written whole: outfile.c.) */
+/* status.c - the status table, error formatting, checked allocation,
+ * the library's process set-up (sw_init).  (Files written whole:
+ * outfile.c.) */
 #include <errno.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "slipwall/status.h"
+
+/* GSL's default error handler prints and aborts: inside a run that is a
+ * crash for a bad number (issue 23).  It is process-global, so it is
+ * turned off once, before any thread can call GSL, and every GSL call
+ * of the library checks its own result (docs/reliability.md, "GSL"). */
+static pthread_once_t sw_init_once = PTHREAD_ONCE_INIT;
+
+static void sw_init_process(void)
+{
+	gsl_set_error_handler_off();
+}
+
+void sw_init(void)
+{
+	pthread_once(&sw_init_once, sw_init_process);
+}
 
 /* The exit status of each code (the table's text names the code for a
  * reader of status.h). */

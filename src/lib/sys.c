@@ -5,6 +5,7 @@
  * front ends.
  */
 #include <errno.h>
+#include <pthread.h>
 #include <limits.h>
 #include <stdio.h>
 #include <string.h>
@@ -47,4 +48,14 @@ int sys_mkdir_p(const char *dir, char *failed, size_t failed_len)
 			break;
 	}
 	return 0;
+}
+
+void sys_block_signals(sigset_t *old)
+{
+	static const int faults[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+	sigset_t all;
+	sigfillset(&all);
+	for (size_t k = 0; k < sizeof faults / sizeof *faults; k++)
+		sigdelset(&all, faults[k]);
+	pthread_sigmask(SIG_SETMASK, &all, old);
 }

@@ -24,6 +24,7 @@ void tally_init(struct tally *t, const struct wall *w)
 	t->nifaces = w->nifaces;
 	t->nblocks = w->nblocks;
 	wall_quantity(w, &t->q);
+	t->ci_conf = 0.99;
 }
 
 void tally_free(struct tally *t)
@@ -161,7 +162,8 @@ int tally_top(const struct tally *t, int *idx, int max)
 
 void tally_summary(const struct tally *t, struct stats_summary *s)
 {
-	stats_summarise(t->lam.x, t->lam.n, s);
+	stats_summarise_conf(t->lam.x, t->lam.n,
+			     t->ci_conf > 0 ? t->ci_conf : 0.99, s);
 }
 
 void tally_json(const struct tally *t, struct json *j)

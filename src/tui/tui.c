@@ -90,50 +90,6 @@ static void tui_colors(struct tui *t)
 	init_pair(6, COLOR_BLACK, COLOR_CYAN);		/* title, status */
 }
 
-/* While curses owns the terminal, stderr goes to a file: nothing that a
- * library prints (GSL's default error handler, an allocation failure)
- * may write over the screen.  After endwin() the file is copied to the
- * real stderr and removed; if the program dies instead, it stays in
- * $TMPDIR.  Returns the saved descriptor, or -1 (stderr unchanged). */
-static int tui_stderr_begin(char *path, size_t len)
-{
-	const char *dir = getenv("TMPDIR");
-	snprintf(path, len, "%s/slipwall-stderr-XXXXXX",
-		 dir && dir[0] ? dir : "/tmp");
-	int fd = mkstemp(path);
-	if (fd < 0)
-		return -1;
-	fflush(stderr);
-	int saved = dup(STDERR_FILENO);
-	if (saved < 0 || dup2(fd, STDERR_FILENO) < 0) {
-		if (saved >= 0)
-			close(saved);
-		close(fd);
-		unlink(path);
-		return -1;
-	}
-	close(fd);
-	return saved;
-}
-
-static void tui_stderr_end(int saved, const char *path)
-{
-	char buf[4096];
-	size_t n;
-	if (saved < 0)
-		return;
-	fflush(stderr);
-	dup2(saved, STDERR_FILENO);
-	close(saved);
-	FILE *f = fopen(path, "r");
-	if (f) {
-		while ((n = fread(buf, 1, sizeof buf, f)) > 0)
-			fwrite(buf, 1, n, stderr);
-		fclose(f);
-	}
-	unlink(path);
-}
-
 /* curses on the terminal, set up; NULL if it cannot start. */
 static SCREEN *tui_terminal(struct tui *t)
 {
@@ -291,7 +247,7 @@ static void tui_finish(struct tui *t)
 int tui_main(const char *path)
 {
 	struct tui tt, *t = &tt;
-	char err[SW_ERRLEN], errpath[PATH_MAX];
+	char err[SW_ERRLEN];
 	struct wall *w;
 
 	memset(t, 0, sizeof *t);
@@ -313,22 +269,23 @@ int tui_main(const char *path)
 		wall_free(w);
 		return 1;
 	}
-	int saved_err = tui_stderr_begin(errpath, sizeof errpath);
+	tui_fatal_begin();	/* stderr to a file; the terminal's modes */
 	SCREEN *scr = tui_terminal(t);
 	if (!scr) {
-		tui_stderr_end(saved_err, errpath);
+		tui_fatal_end();
 		fprintf(stderr, "slipwall: cannot start the terminal (TERM=%s)\n",
 			getenv("TERM") ? getenv("TERM") : "");
 		wall_free(w);
 		return 2;
 	}
+	tui_fatal_arm(1);	/* from here any end restores the terminal */
 	tui_session(t, w, path);
 	tui_loop(t);
 	tui_run_end(t);
 	tui_solve_free(t->solve);
 	endwin();
 	delscreen(scr);
-	tui_stderr_end(saved_err, errpath);
+	tui_fatal_end();	/* what was written to stderr, to stderr */
 	tui_finish(t);
 	return 0;
 }

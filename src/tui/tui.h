@@ -3,7 +3,7 @@
  * screen or pane, one UI thread.
  *
  * Who does what, from the top of the calls down (a file calls only
- * files below it; tui_draw.c and tui_signal.c call none):
+ * files below it; tui_draw.c, tui_signal.c and tui_fatal.c call none):
  *   tui.c        tui_main: the terminal, the poll() loop, the screens
  *   tui_home.c   the main screen: its key table, its layout
  *   tui_help.c   the help screen
@@ -18,6 +18,8 @@
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
  *   tui_signal.c SIGINT, SIGTERM, SIGHUP
+ *   tui_fatal.c  any other end (abort, a fault, exit): the terminal back,
+ *                the reason on stderr
  *   tui_draw.c   text helpers, the message line, the clock
  *
  * Threads: only the UI thread (the one in tui_main) calls curses, reads
@@ -172,6 +174,16 @@ const char *tui_load_unit(const struct wall *w);
 /* A single solution's load factor as the run's loads are shown (the
  * tally's quantity: wall_quantity's scale times lambda). */
 double tui_load(const struct tui *t, double lambda);
+
+/* tui_fatal.c: tui_fatal_begin before curses starts (stderr to a
+ * temporary file, the terminal's modes saved; -1: stderr unchanged),
+ * tui_fatal_arm once it has (mouse: the mouse is on): from then on an
+ * abort, a fault or exit() restores the terminal, prints the temporary
+ * file and the reason on the real stderr, and dies as it would have;
+ * tui_fatal_end after endwin: the handlers off, the file printed. */
+int tui_fatal_begin(void);
+void tui_fatal_arm(int mouse);
+void tui_fatal_end(void);
 
 /* tui_signal.c */
 int tui_signal_install(void);	/* before curses starts; -1 on failure */

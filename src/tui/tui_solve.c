@@ -87,14 +87,13 @@ static void *tui_solve_thread(void *arg)
  * failure the values are "n/a" at once. */
 static int tui_solve_begin(struct tui_solve *s, struct wall *w)
 {
-	sigset_t all, old;
+	sigset_t old;
 
 	s->w = w;
 	s->finished = 0;
 	s->has_std = s->has_gil = 0;
 	atomic_store(&s->stop, 0);
-	sigfillset(&all);
-	pthread_sigmask(SIG_SETMASK, &all, &old);
+	sys_block_signals(&old);
 	int rc = pthread_create(&s->th, NULL, tui_solve_thread, s);
 	pthread_sigmask(SIG_SETMASK, &old, NULL);
 	if (rc != 0) {

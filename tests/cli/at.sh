@@ -83,6 +83,44 @@ ok = ("Band: +-" + eps) in svg and want in svg
 if not ok: print("#", eps, want)
 sys.exit(not ok)' "$tmp/rep/fragility.svg" "$tmp/dl.json"
 
+# ---- one collapsed of 240 (issue 23) -------------------------------------------
+# The interval came from gsl_cdf_beta_Pinv, which fails to converge for
+# k = 1 at n = 231..258 (and k = 2 at 2,556 n up to 5,000), and GSL's
+# default handler then aborted the program (exit 134): run --at, and
+# compare and report on a wall with that design load.
+"$bin" run $demo -n 240 --at 100 >"$tmp/k0.txt" 2>"$tmp/k0.err"
+rc=$?
+check "the issue's command (run demo -n 240 --at 100): exit 0, no GSL message" \
+	eval '[ $rc = 0 ] && ! grep -q gsl "$tmp/k0.err" && grep -q "^collapse .*99 % interval" "$tmp/k0.txt"'
+"$bin" run $demo -n 240 --samples "$tmp/k.csv" >/dev/null 2>&1
+min=$(python3 -c '
+import csv, sys
+print(min(float(r["lambda_min"]) for r in csv.DictReader(open(sys.argv[1])) if r["status"] == "accepted"))' "$tmp/k.csv")
+"$bin" run $demo -n 240 --at "$min" --json >"$tmp/k1.json" 2>"$tmp/k1.err"
+rc=$?
+check "run -n 240 --at (the least load): exit $rc, 1 of 240, tails of 0.5 % (summed pmf)" python3 -c '
+import json, math, sys
+from fractions import Fraction as F
+c = json.load(open(sys.argv[1]))["collapse_probability"][0]
+k, n = c["collapsed"], c["accepted"]
+def upper(k, n, p):    # P(B >= k), exactly
+    p = F(p)
+    return float(sum(math.comb(n, j) * p**j * (1 - p)**(n - j) for j in range(k, n + 1)))
+lo, hi = c["ci99"]
+ok = sys.argv[2] == "0" and k == 1 and n >= 231 and lo < k / n < hi
+ok = ok and abs(upper(k, n, lo) / 0.005 - 1) < 1e-9 and abs((1 - upper(k + 1, n, hi)) / 0.005 - 1) < 1e-9
+if not ok: print("#", c)
+sys.exit(not ok)' "$tmp/k1.json" "$rc"
+sed "s/^analysis:/analysis:\n  design_load: $min/" $demo >"$tmp/k1.yaml"
+"$bin" compare "$tmp/k1.yaml" -n 240 --tests walls/demo-loads.txt >"$tmp/k1c.txt" 2>"$tmp/k1c.err"
+rc=$?
+check "compare on a wall whose design load is the least of 240 loads: exit 0, 1 of 240" \
+	eval '[ $rc = 0 ] && grep -q "^model: P(lambda_min <= .*(1 of 240 accepted)" "$tmp/k1c.txt"'
+"$bin" report "$tmp/k1.yaml" -n 240 --out "$tmp/k1r" >/dev/null 2>"$tmp/k1r.err"
+rc=$?
+check "... and report: exit 0, the design load's line" \
+	eval '[ $rc = 0 ] && grep -q "^Design load .*(analysis.design_load): P(λ_min ≤" "$tmp/k1r/report.md"'
+
 # ---- bad values ------------------------------------------------------------------------
 "$bin" run $demo --at -1 >/dev/null 2>"$tmp/e1"
 rc=$?

@@ -188,6 +188,27 @@ check "--until-ci: the same stop and file with 1 and 2 threads" \
 check "--until-ci: the file holds exactly the samples counted" \
 	python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
 sys.exit(sum(1 for _ in open(sys.argv[2])) - 1 != d["samples"])' "$tmp/u1.json" "$tmp/u1.csv"
+# The rule keeps its 99 % (issue 23): it stops only at 128 * 2^j accepted
+# samples, and the interval it reports is at that look's level
+# 1 - 0.01 / 2^(j+1) (p05_ci_level): two order statistics of the file's
+# loads whose exact coverage (integers: P(B = k) 20^n = C(n,k) 19^(n-k))
+# reaches that level.
+check "--until-ci: a stop at 128 * 2^j accepted, the interval at 1 - 0.01 / 2^(j+1)" \
+	python3 -c '
+import csv, json, math, sys
+d = json.load(open(sys.argv[1]))
+x = sorted(float(r["lambda_min"]) for r in csv.DictReader(open(sys.argv[2])) if r["status"] == "accepted")
+n = len(x)
+j = n.bit_length() - 8
+lo, hi = d["p05_ci99"]
+level = d.get("p05_ci_level")
+ok = n == d["accepted"] and j >= 0 and n == 128 << j and level == 1 - 0.01 / 2 ** (j + 1)
+if ok:
+    rl, rh = x.index(lo) + 1, len(x) - x[::-1].index(hi)
+    cov = sum(math.comb(n, k) * 19 ** (n - k) for k in range(rl, rh))
+    ok = cov * 2 ** (j + 1) * 100 >= (2 ** (j + 1) * 100 - 1) * 20 ** n
+if not ok: print("# n", n, "level", level, "interval", lo, hi)
+sys.exit(not ok)' "$tmp/u1.json" "$tmp/u1.csv"
 
 # ---- SIGKILL: every line complete -------------------------------------------
 "$bin" run $ft -n 100000 --threads 2 --samples "$tmp/k.csv" >/dev/null 2>&1 &
