@@ -5,6 +5,9 @@
 set -e
 cd "$(dirname "$0")/.."
 sh scripts/setup.sh --tests
+# the tools are installed now: a test that skips for want of one (tmux,
+# mpirun) fails (tests/tap.sh's skip_all and skip_one)
+export SLIPWALL_TEST_TOOLS=required
 set +e
 meson test -C build --print-errorlogs --num-processes 2 > build/test-output.txt 2>&1
 rc=$?

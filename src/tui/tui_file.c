@@ -9,7 +9,17 @@
  * without .yaml, <run> counts the runs of the session (each edit, reset
  * or open starts one).  The file streams from the first sample, so
  * saving never copies it.
+ *
+ * Two sessions started in the same second ask for the same name.  The
+ * name is taken by creating the file (O_CREAT | O_EXCL), which only one
+ * of them can do; the other goes on to <...>-<run>.1.csv, .2.csv ...
+ * (a check with access() before runlog_create opened the file left
+ * both free to pick it, and a name taken by a dangling symbolic link
+ * was written through it).  runlog_create then opens the empty file the
+ * session made.
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
@@ -43,7 +53,7 @@ int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
 	localtime_r(&now, &tm);
 	strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &tm);
 	tui_file_stem(t->w, stem, sizeof stem);
-	for (int k = 0;; k++) {
+	for (int k = 0; k < 1000; k++) {
 		int n;
 		if (k == 0)
 			n = snprintf(out, len, "%s/%s-%s-%d.csv", dir, stem, stamp,
@@ -55,7 +65,18 @@ int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
 			sw_fail(err, SW_EIO, "%s: path too long", dir);
 			return -1;
 		}
-		if (access(out, F_OK) != 0)
+		int fd = open(out, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+		if (fd >= 0) {
+			close(fd);
 			return 0;
+		}
+		if (errno != EEXIST) {
+			sw_fail(err, SW_EIO, "%s: cannot create: %s", out,
+				strerror(errno));
+			return -1;
+		}
 	}
+	sw_fail(err, SW_EIO, "%s: 1000 samples files of run %d this second",
+		dir, t->runno);
+	return -1;
 }

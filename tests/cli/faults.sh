@@ -337,7 +337,7 @@ wb_wait_exit() {	# PID SECONDS
 }
 if ! command -v tmux >/dev/null 2>&1 ||
    ! T -f /dev/null new-session -d -s t -n idle -x 200 -y 30 "sleep 600"; then
-	ok "the workbench # SKIP no tmux"
+	skip_one "the workbench" "no tmux, or no tmux server"
 else
 	T set-option -g remain-on-exit on >/dev/null
 	for sig in INT TERM KILL; do

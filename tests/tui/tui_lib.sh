@@ -1,7 +1,7 @@
 # tui_lib.sh - the helpers of the workbench tests (tests/tui/tui*.sh),
 # sourced after tests/tap.sh, with $bin set:
-#   tui_setup NAME COLS ROWS     skip without tmux; $tmp, $SLIPWALL_RUNS,
-#                                and the server (or skip)
+#   tui_setup NAME COLS ROWS     skip without tmux (skip_all: a failure
+#                                in CI); $tmp, $SLIPWALL_RUNS, the server
 #   tui_server NAME [COLS ROWS]  a private tmux server (tmux -L NAME -f
 #                                /dev/null), session t; 1 if it cannot start
 #   prompt WIN KEY LABEL TEXT    KEY opens the prompt LABEL: TEXT replaces
@@ -16,6 +16,9 @@
 #   wait_run WIN RUN STATE SECONDS  (the title says "run RUN STATE")
 #   csv_complete FILE            rows 0..n-1 with the header's columns
 #   run_csv RUN                  the samples file of run RUN
+#   frame_at WIN COLS ROWS       a whole frame drawn for COLS x ROWS
+#   printed_csv WIN              the samples file a workbench printed
+#                                on exit ("samples: PATH")
 tui_sock=
 T() {
 	tmux -L "$tui_sock" "$@"
@@ -28,16 +31,12 @@ tui_server() {
 	trap 'T kill-server >/dev/null 2>&1; rm -rf "$tmp"' EXIT
 }
 tui_setup() {
-	if ! command -v tmux >/dev/null 2>&1; then
-		echo "1..0 # SKIP tmux is not installed"
-		exit 0
-	fi
+	command -v tmux >/dev/null 2>&1 || skip_all "tmux is not installed"
 	tmp=$(mktemp -d)
 	export SLIPWALL_RUNS=$tmp/runs
 	tui_server "$1" "$2" "$3" || {
-		echo "1..0 # SKIP cannot start a tmux server"
 		rm -rf "$tmp"
-		exit 0
+		skip_all "cannot start a tmux server"
 	}
 }
 prompt() {
@@ -110,6 +109,25 @@ csv_complete() {	# every row has the header's column count; samples 0..n-1
 		 NF != n || $1 != NR - 2 { bad = 1 }
 		 END { exit bad || NR < 1 }' "$1"
 }
+# (a session that started in the same second as another one of the same
+# wall has <...>-RUN.1.csv: src/tui/tui_file.c)
 run_csv() {
-	ls "$SLIPWALL_RUNS"/*-"$1".csv 2>/dev/null | head -n 1
+	ls "$SLIPWALL_RUNS"/*-"$1".csv "$SLIPWALL_RUNS"/*-"$1".[0-9]*.csv \
+		2>/dev/null | head -n 1
+}
+# frame_at WIN COLS ROWS: one capture that is a frame the workbench drew
+# for COLS x ROWS: ROWS lines, the title whole up to the run's state (a
+# frame drawn for a wider terminal, which tmux cuts at the new width,
+# ends elsewhere) and the status line last.  Waiting for "q quit" on
+# the last line alone passed on the cut old frame before the redraw.
+frame_at() {
+	local s
+	s=$(screen "$1")
+	[ "$(printf '%s\n' "$s" | wc -l)" -eq "$3" ] &&
+		printf '%s\n' "$s" | head -n 1 |
+		grep -qE '^ slipwall \|.*\| run [0-9]+ [a-z]+( \| [^|]*)? *$' &&
+		printf '%s\n' "$s" | tail -n 1 | grep -q 'q quit'
+}
+printed_csv() {
+	screen "$1" | sed -n 's/^samples: \(.*\.csv\) *$/\1/p' | head -n 1
 }

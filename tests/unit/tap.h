@@ -28,12 +28,22 @@ static inline int tap_ok(int cond, const char *fmt, ...)
 	return cond;
 }
 
-/* |got - want| <= rel * max(1, |want|) */
+/* |got - want| <= rel * max(1, |want|); the name is a printf format
+ * with its arguments, like tap_ok's (it was printed as "%s" of the
+ * format before, so "block %gx%g" showed the % signs) */
 static inline int tap_near(double got, double want, double rel,
-			   const char *name)
+			   const char *fmt, ...)
+	__attribute__((format(printf, 4, 5)));
+static inline int tap_near(double got, double want, double rel,
+			   const char *fmt, ...)
 {
+	char name[512];
+	va_list ap;
 	double tol = rel * (fabs(want) > 1 ? fabs(want) : 1);
 	int c = fabs(got - want) <= tol;
+	va_start(ap, fmt);
+	vsnprintf(name, sizeof name, fmt, ap);
+	va_end(ap);
 	tap_ok(c, "%s", name);
 	if (!c)
 		printf("#   got %.17g, want %.17g (tol %.3g)\n", got, want, tol);

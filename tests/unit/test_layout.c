@@ -73,7 +73,7 @@ static void test_cut_course(void)
 		snprintf(id, sizeof id, "c1b%d", k + 1);
 		snprintf(name, sizeof name, "c1b%d is %.1f wide", k + 1, want[k]);
 		int i = find(w, id);
-		tap_near(i >= 0 ? width(&w->blocks[i]) : -1, want[k], 1e-12, name);
+		tap_near(i >= 0 ? width(&w->blocks[i]) : -1, want[k], 1e-12, "%s", name);
 	}
 	int i = find(w, "c1b1");
 	tap_ok(i == 0, "c1b1 is the first block");

@@ -57,7 +57,8 @@ static void closed_forms(void)
 		sample_result_init(&r, w);
 		double *xi = classical(w);
 		sample_standard(ws, xi, &r);
-		tap_near(r.lambda_max, want, 1e-9, "standard: block %gx%g mu %g a %g");
+		tap_near(r.lambda_max, want, 1e-9, "standard: block %gx%g mu %g a %g",
+			 b, h, mu, a);
 		sample_run(ws, xi, &o, &r);
 		tap_ok(r.status == SAMPLE_ACCEPTED, "sample accepted (%s)",
 		       sample_status_name(r.status));
@@ -122,7 +123,7 @@ static void patterns(void)
 		if (p[i].found) {
 			tap_ok(st == SAMPLE_ACCEPTED && r.vw_residual <= 1e-8,
 			       "pattern: %s (%s)", p[i].what, sample_status_name(st));
-			tap_near(r.lambda_min / W, p[i].load, 1e-9, p[i].what);
+			tap_near(r.lambda_min / W, p[i].load, 1e-9, "%s", p[i].what);
 		} else {
 			tap_ok(st != SAMPLE_ACCEPTED, "pattern: %s (%s)",
 			       p[i].what, sample_status_name(st));

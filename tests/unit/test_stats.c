@@ -352,9 +352,9 @@ static void ks_case(const char *name, const double *x, size_t n,
 	snprintf(t[0], sizeof t[0], "KS %s: two-sided p", name);
 	snprintf(t[1], sizeof t[1], "KS %s: p greater", name);
 	snprintf(t[2], sizeof t[2], "KS %s: p less", name);
-	tap_near(k.p_two_sided, p2, 1e-13, t[0]);
-	tap_near(k.p_greater, pg, 1e-13, t[1]);
-	tap_near(k.p_less, pl, 1e-13, t[2]);
+	tap_near(k.p_two_sided, p2, 1e-13, "%s", t[0]);
+	tap_near(k.p_greater, pg, 1e-13, "%s", t[1]);
+	tap_near(k.p_less, pl, 1e-13, "%s", t[2]);
 }
 
 static void test_ks_small(void)
