@@ -29,7 +29,7 @@ root=$PWD
 
 tmp=$(mktemp -d)
 sock=slipwall-readme-$$
-trap 'tmux -L "$sock" kill-server >/dev/null 2>&1; rm -rf "$tmp"' EXIT
+trap 'for s in $(seq 1 "$wb_n"); do tmux -L "$sock-$s" kill-server >/dev/null 2>&1; done; rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/bin" "$tmp/work"
 ln -s "$bin" "$tmp/bin/slipwall"
 ln -s "$root/walls" "$tmp/work/walls"
@@ -49,21 +49,27 @@ awk '/^## Use/ {use = 1} use && /^```sh/ {inb = 1; next} inb && /^```/ {exit} in
 count=$(grep -c . "$tmp/lines")
 check "README's Use block has example commands ($count)" [ "$count" -ge 10 ]
 
-# workbench LINE: run it in tmux; wait for the status line; q; status 0
+# workbench LINE: run it in tmux; wait for the status line; q; status 0.
+# Each line gets a server of its own: a new session on the socket of a
+# server that kill-server has just told to go can reach that server as
+# it exits ("server exited unexpectedly", seen once in CI).
+wb_n=0
 workbench() {
-	tmux -L "$sock" -f /dev/null new-session -d -s w -x 100 -y 30 \
+	wb_n=$((wb_n + 1))
+	local s="$sock-$wb_n"
+	tmux -L "$s" -f /dev/null new-session -d -s w -x 100 -y 30 \
 		"cd '$tmp/work' && { $1; } 2>'$tmp/wb.out'; echo \$? >'$tmp/wb.rc'; sleep 60" ||
 		return 1
-	within 30 eval "tmux -L '$sock' capture-pane -p -t w | grep -q 'q quit'" || {
-		tmux -L "$sock" capture-pane -p -t w
-		tmux -L "$sock" kill-server
+	within 30 eval "tmux -L '$s' capture-pane -p -t w | grep -q 'q quit'" || {
+		tmux -L "$s" capture-pane -p -t w
+		tmux -L "$s" kill-server
 		return 1
 	}
-	tmux -L "$sock" send-keys -t w q
+	tmux -L "$s" send-keys -t w q
 	within 30 test -s "$tmp/wb.rc"
 	local rc
 	rc=$(cat "$tmp/wb.rc" 2>/dev/null)
-	tmux -L "$sock" kill-server >/dev/null 2>&1
+	tmux -L "$s" kill-server >/dev/null 2>&1
 	rm -f "$tmp/wb.rc"
 	[ "$rc" = 0 ]
 }
