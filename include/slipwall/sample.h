@@ -41,11 +41,14 @@ const char *sample_status_text(enum sample_status s);	/* for people */
 /* The status of a name, or -1. */
 int sample_status_parse(const char *name);
 
-/* The SLP's iteration (docs/method.md): plain, c <- c + omega (N(c) - c)
- * until it converges; or, the default, accelerated by Anderson's steps
- * while the LP bases stay the same (the map is then affine), with a
- * safeguard that keeps the plain iteration's fixed point. */
-enum sample_slp { SAMPLE_SLP_PLAIN, SAMPLE_SLP_ANDERSON };
+/* The SLP's iteration (docs/method.md, "The SLP's answer"): PLAIN,
+ * c <- c + omega (N(c) - c) until it converges; ANDERSON, the last
+ * round's default, accelerated by Anderson's steps while the LP bases
+ * stay the same; PIECE, the default and the definition of a sample's
+ * answer: plain steps until the joints' classification has held for
+ * piece_settle iterations, then the exact fixed point of that affine
+ * piece, verified by one more evaluation of the map. */
+enum sample_slp { SAMPLE_SLP_PLAIN, SAMPLE_SLP_ANDERSON, SAMPLE_SLP_PIECE };
 
 struct sample_opts {
 	double omega;		/* SLP relaxation, default 0.5 */
@@ -53,7 +56,11 @@ struct sample_opts {
 	double tol;		/* convergence, relative to the mean block
 				 * weight, default 1e-7 */
 	int stabilise;		/* the L1-closest optimal stress field (1) */
-	enum sample_slp slp;	/* how the SLP iterates (default ANDERSON) */
+	enum sample_slp slp;	/* how the SLP iterates (default PIECE) */
+	int piece_settle;	/* PIECE: iterations the joints'
+				 * classification must hold before its
+				 * piece's fixed point is solved (default 2;
+				 * 0: a Newton step at every iteration) */
 	int forces;		/* fill sample_result.N and .T (default 0:
 				 * no front end reports them, and their
 				 * tie-break is a sample's costliest LP on

@@ -104,7 +104,7 @@ static void usage(FILE *f)
 		"Ctrl-C stops cleanly: the summary of the samples done, exit status 1.\n");
 }
 
-/* --slp plain|anderson into an int (enum sample_slp). */
+/* --slp plain|anderson|piece into an int (enum sample_slp). */
 static int parse_slp(const char *cmd, const char *name, const char *v,
 		     void *dst)
 {
@@ -112,8 +112,10 @@ static int parse_slp(const char *cmd, const char *name, const char *v,
 		*(int *)dst = SAMPLE_SLP_PLAIN;
 	else if (!strcmp(v, "anderson"))
 		*(int *)dst = SAMPLE_SLP_ANDERSON;
+	else if (!strcmp(v, "piece"))
+		*(int *)dst = SAMPLE_SLP_PIECE;
 	else
-		return cli_usage_error(cmd, "%s: '%s' is not plain or anderson",
+		return cli_usage_error(cmd, "%s: '%s' is not plain, anderson or piece",
 				       name, v);
 	return 0;
 }
@@ -122,7 +124,7 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 {
 	memset(a, 0, sizeof *a);
 	a->depth = -1;
-	a->slp = SAMPLE_SLP_ANDERSON;
+	a->slp = SAMPLE_SLP_PIECE;
 	a->at = -1;
 	const struct cli_opt opts[] = {
 		CLI_OPT_SWITCH("--json", a->json),

@@ -845,6 +845,104 @@ int lp_col_basic(const struct lp *p, int col)
 	return glp_get_col_stat(p->P, col + 1) == GLP_BS;
 }
 
+int lp_row_basic(const struct lp *p, int row)
+{
+	return glp_get_row_stat(p->P, row + 1) == GLP_BS;
+}
+
+int lp_get_col(const struct lp *p, int col, int *rows, double *vals)
+{
+	int n = glp_get_mat_col(p->P, col + 1, p->ind, p->val);
+	for (int t = 0; t < n; t++) {
+		rows[t] = p->ind[t + 1] - 1;
+		vals[t] = p->val[t + 1];
+	}
+	return n;
+}
+
+/* lp_solve_square's triplets, sorted by column then row (qsort) */
+struct triplet {
+	int i, j;
+	double v;
+};
+
+static int triplet_cmp(const void *a, const void *b)
+{
+	const struct triplet *x = a, *y = b;
+	if (x->j != y->j)
+		return x->j < y->j ? -1 : 1;
+	return x->i < y->i ? -1 : x->i > y->i;
+}
+
+/* The system as a problem whose basis is every column: GLPK's basis
+ * matrix is the columns of (I | -A) of the basic variables, here -M, in
+ * the order of the basis header, so y_j = -(B^-1 b) at the header's
+ * position of column j. */
+int lp_solve_square(int n, int nnz, const int *ri, const int *ci,
+		    const double *v, double *b)
+{
+	hook();
+	if (n <= 0)
+		return n == 0 ? 0 : -1;
+	struct triplet *t = sw_xmalloc(sizeof *t * (size_t)(nnz + 1));
+	int *ia = sw_xmalloc(sizeof(int) * (size_t)(nnz + 1));
+	int *ja = sw_xmalloc(sizeof(int) * (size_t)(nnz + 1));
+	double *ar = sw_xmalloc(sizeof(double) * (size_t)(nnz + 1));
+	double *x = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
+	for (int e = 0; e < nnz; e++)
+		t[e] = (struct triplet){ri[e], ci[e], v[e]};
+	qsort(t, (size_t)nnz, sizeof *t, triplet_cmp);
+	int ne = 0;
+	for (int e = 0; e < nnz; e++) {
+		if (ne > 0 && ia[ne] == t[e].i + 1 && ja[ne] == t[e].j + 1) {
+			ar[ne] += t[e].v;
+			continue;
+		}
+		ne++;
+		ia[ne] = t[e].i + 1;
+		ja[ne] = t[e].j + 1;
+		ar[ne] = t[e].v;
+	}
+	volatile int rc = -1;
+	glp_prob *P;
+	if (setjmp(tl_jump)) {	/* out of memory: the thread's problems die */
+		recover();
+		goto out;
+	}
+	tl_in_call = 1;
+	P = glp_create_prob();
+	glp_add_rows(P, n);
+	glp_add_cols(P, n);
+	glp_load_matrix(P, ne, ia, ja, ar);
+	for (int i = 1; i <= n; i++) {
+		glp_set_row_bnds(P, i, GLP_FX, 0, 0);
+		glp_set_row_stat(P, i, GLP_NS);
+		glp_set_col_stat(P, i, GLP_BS);
+	}
+	if (glp_factorize(P) == 0) {
+		for (int i = 0; i < n; i++)
+			x[i + 1] = b[i];
+		glp_ftran(P, x);
+		for (int i = 1; i <= n; i++) {
+			int h = glp_get_bhead(P, i);	/* n + j: column j */
+			b[h - n - 1] = -x[i];
+		}
+		rc = 0;
+		for (int i = 0; i < n; i++)
+			if (!isfinite(b[i]))
+				rc = -1;
+	}
+	glp_delete_prob(P);
+	tl_in_call = 0;
+out:
+	free(t);
+	free(ia);
+	free(ja);
+	free(ar);
+	free(x);
+	return rc;
+}
+
 int lp_unique(const struct lp *p, double tol)
 {
 	for (int j = 1; j <= p->ncols; j++) {

@@ -96,6 +96,20 @@ double lp_col_dual(const struct lp *p, int col);	/* reduced cost */
 double lp_row_dual(const struct lp *p, int row);
 /* 1 if the column is basic in the current solution. */
 int lp_col_basic(const struct lp *p, int col);
+/* 1 if the row's auxiliary variable is basic in the current solution. */
+int lp_row_basic(const struct lp *p, int row);
+/* Column col of the matrix: its non-zeros into rows[] and vals[] (room
+ * for every row), their number returned. */
+int lp_get_col(const struct lp *p, int col, int *rows, double *vals);
+/* Solve the square sparse system M y = b of order n, M given by nnz
+ * triplets (rows ri[], columns ci[], values v[]; 0-based, a repeated
+ * position adds up), by GLPK's sparse LU of the basis matrix of a
+ * throw-away problem (glp_factorize, glp_ftran).  b is replaced by y.
+ * Returns 0, or -1 if M is singular or too ill-conditioned for GLPK's
+ * LU (GLP_ESING, GLP_ECOND), or after a GLPK error (out of memory: the
+ * thread's problems are then dead, as after LP_ERROR). */
+int lp_solve_square(int n, int nnz, const int *ri, const int *ci,
+		    const double *v, double *b);
 /* 1 if the optimum is unique as far as the reduced costs tell: no
  * non-basic variable (except fixed ones) has a zero reduced cost. */
 int lp_unique(const struct lp *p, double tol);

@@ -53,7 +53,7 @@ bad "missing wall file" "nonexistent.yaml" "$tmp/nonexistent.yaml"
 bad "--seed=x" "--seed: 'x' is not a whole number" $demo --seed=x
 bad "--samples=" "--samples: empty file name" $demo --samples=
 bad "-n --json (the value is the next argument)" "-n: '--json'" $demo -n --json
-bad "--slp fancy" "--slp: 'fancy' is not plain or anderson" $demo --slp fancy
+bad "--slp fancy" "--slp: 'fancy' is not plain, anderson or piece" $demo --slp fancy
 bad "--at -1" "--at: '-1' is not a load >= 0" $demo --at -1
 bad "--json=1 (a flag takes no value)" "unknown option '--json=1'" $demo --json=1
 bad "the first bad option is the message" "--threads: '0'" $demo --threads 0 -n 0
