@@ -1,0 +1,58 @@
+#!/bin/bash
+# invariance.sh - path invariance at scale (docs/method.md, "The SLP's
+# answer"): for the default SLP and for --slp plain, every
+# SLIPWALL_LP_START and 1 against 2 threads give the same status and
+# lambda_min (to 1e-9 relative) on every sample of the demo and both
+# Ferris & Tin-Loi walls, at three seeds.  The suite runs its demo part
+# (tests/cli/invariance.sh); this is the long form, about an hour and a
+# half on 2 cores with the defaults.
+#
+# Usage: bash bench/invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]
+#   N samples (default 2000), SEEDS comma-separated (default 1,2,3),
+#   WALLS (default the demo and both Ferris & Tin-Loi walls).
+# Prints one line per comparison and every differing sample; exits 1 if
+# any differ.
+bin=${1:?usage: invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]}
+n=${2:-2000}
+seeds=${3:-1,2,3}
+shift 3 2>/dev/null
+cd "$(dirname "$0")/.." || exit 1
+walls=("$@")
+[ ${#walls[@]} -gt 0 ] || walls=(walls/demo.yaml walls/ferris-tinloi-1.yaml walls/ferris-tinloi-2.yaml)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+differ() {	# differ REF OTHER: prints the differing samples, then their count
+	awk -F, 'NR == FNR { if (FNR > 1) { st[$1] = $2; lm[$1] = $4 } next }
+		FNR > 1 {
+			if (st[$1] != $2) { bad++; print "    sample " $1 ": " st[$1] " " lm[$1] " vs " $2 " " $4; next }
+			if ($2 != "accepted") next
+			d = lm[$1] - $4; if (d < 0) d = -d
+			s = lm[$1] < 0 ? -lm[$1] : lm[$1]; if (s < 1) s = 1
+			if (d > 1e-9 * s) { bad++; print "    sample " $1 ": " lm[$1] " vs " $4 }
+		}
+		END { print bad + 0 }' "$1" "$2"
+}
+rc=0
+for w in "${walls[@]}"; do
+	for seed in ${seeds//,/ }; do
+		for slp in piece plain; do
+			SLIPWALL_LP_START=auto "$bin" run "$w" -n "$n" --seed "$seed" \
+				--threads 2 --slp $slp --samples "$tmp/ref.csv" >/dev/null 2>&1
+			for st in slack-primal slack-dual crash canonical previous support threads-1; do
+				if [ $st = threads-1 ]; then
+					"$bin" run "$w" -n "$n" --seed "$seed" --threads 1 \
+						--slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
+				else
+					SLIPWALL_LP_START=$st "$bin" run "$w" -n "$n" --seed "$seed" \
+						--threads 2 --slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
+				fi
+				differ "$tmp/ref.csv" "$tmp/o.csv" >"$tmp/d"
+				d=$(tail -n 1 "$tmp/d")
+				echo "$(basename "$w") seed $seed --slp $slp $st: $d of $n differ"
+				head -n -1 "$tmp/d"
+				[ "$d" = 0 ] || rc=1
+			done
+		done
+	done
+done
+exit $rc
