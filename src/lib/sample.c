@@ -1135,6 +1135,15 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 					const struct sample_opts *o,
 					struct sample_result *r);
 
+/* The SLP's plain step c <- c + omega (N(c) - c), N from the field ws->x. */
+static void plain_step(struct sample_ws *ws, double omega)
+{
+	for (int k = 0; k < ws->m; k++) {
+		double nk = ws->x[3 * k] + ws->x[3 * k + 1];
+		ws->c[k] += omega * (nk - ws->c[k]);
+	}
+}
+
 static enum sample_status slp(struct sample_ws *ws,
 			      const struct sample_opts *o,
 			      struct sample_result *r)
@@ -1195,10 +1204,7 @@ static enum sample_status slp(struct sample_ws *ws,
 			tries++;
 			continue;
 		}
-		for (int k = 0; k < m; k++) {
-			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
-			ws->c[k] += o->omega * (nk - ws->c[k]);
-		}
+		plain_step(ws, o->omega);
 	}
 	return SAMPLE_NOT_CONVERGED;
 }
@@ -1308,10 +1314,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			jumps++;
 			continue;
 		}
-		for (int k = 0; k < m; k++) {
-			double nk = ws->x[3 * k] + ws->x[3 * k + 1];
-			ws->c[k] += o->omega * (nk - ws->c[k]);
-		}
+		plain_step(ws, o->omega);
 	}
 	return SAMPLE_NOT_CONVERGED;
 }
