@@ -66,6 +66,22 @@ else
 	check "demo sample 714: not among $ns samples (the sanitizer job)" true
 fi
 
+# Ferris & Tin-Loi wall 2, seed 1: the samples whose mechanism or
+# `numerical` verdict moved with the start (263, 501, 701, 737, 991, 999;
+# their positions in tests/data/ftl2-seed1-traced.csv), replayed from
+# every start but `previous` (docs/method.md: the mechanism and LP-min
+# on one fixed path)
+ftl2=walls/ferris-tinloi-2.yaml
+traced=tests/data/ftl2-seed1-traced.csv
+"$bin" run $ftl2 --positions $traced --threads 1 --samples "$tmp/f2-auto.csv" >/dev/null 2>&1
+for st in slack-primal slack-dual crash canonical support; do
+	SLIPWALL_LP_START=$st "$bin" run $ftl2 --positions $traced --threads 1 \
+		--samples "$tmp/f2-$st.csv" >/dev/null 2>&1
+	d=$(same "$tmp/f2-auto.csv" "$tmp/f2-$st.csv" 2>"$tmp/why")
+	check "Ferris & Tin-Loi 2's traced samples, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
+	[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
+done
+
 # --slp plain: where it differs from the default, the default is lower
 "$bin" run $wall -n "$ns" --seed 1 --threads 2 --slp plain \
 	--samples "$tmp/plain.csv" >/dev/null 2>&1
