@@ -39,7 +39,9 @@ for w in "${walls[@]}"; do
 			SLIPWALL_LP_START=auto "$bin" run "$w" -n "$n" --seed "$seed" \
 				--threads 2 --slp $slp --samples "$tmp/ref.csv" >/dev/null 2>&1
 			for st in slack-primal slack-dual crash canonical previous support threads-1; do
-				if [ $st = threads-1 ]; then
+				# previous: on 1 thread, its history fixed
+				if [ $st = threads-1 ] || [ $st = previous ]; then
+					SLIPWALL_LP_START=${st/threads-1/auto} \
 					"$bin" run "$w" -n "$n" --seed "$seed" --threads 1 \
 						--slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
 				else
