@@ -57,9 +57,8 @@ int piece_fixed_point(const struct lp *X, const struct piece *pc,
 	int nbasic = 0;
 	for (int i = 0; i < nrows; i++)
 		nbasic += lp_row_basic(X, i);
-	for (int j = 0; j < ncols; j++) {
+	for (int j = 0; j < ncols; j++)
 		unk_col[j] = lp_col_basic(X, j) ? nbasic++ : -1;
-	}
 	if (nbasic != nrows)
 		goto out;
 	n = nrows;
@@ -87,10 +86,8 @@ int piece_fixed_point(const struct lp *X, const struct piece *pc,
 		if (unk_col[j] >= 0) {
 			for (int t = 0; t < nz; t++)
 				put(&s, rows[t], unk_col[j], vals[t]);
-			if (kind == 0 || kind == 1) {
-				if (unk_c[k] >= 0)
-					put(&s, unk_c[k], unk_col[j], -1);
-			}
+			if ((kind == 0 || kind == 1) && unk_c[k] >= 0)
+				put(&s, unk_c[k], unk_col[j], -1);
 			continue;
 		}
 		double x = lp_col(X, j);

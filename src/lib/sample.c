@@ -194,7 +194,7 @@ struct sample_ws {
 	double *c;		/* m: SLP capacities (sum of normal forces) */
 	double *mu;		/* m: the interfaces' friction */
 	double *cstar;		/* m: a piece's fixed point (slp) */
-	double *jump_c, *jump_f;	/* m: the iterate before a jump, N - c */
+	double *fallback;	/* m: where a failed jump goes on (slp) */
 	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
 	struct slp_history hist;	/* slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for slp()'s restart */
@@ -471,8 +471,7 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
 	ws->cstar = sw_xcalloc(m + 1, sizeof(double));
-	ws->jump_c = sw_xcalloc(m + 1, sizeof(double));
-	ws->jump_f = sw_xcalloc(m + 1, sizeof(double));
+	ws->fallback = sw_xcalloc(m + 1, sizeof(double));
 	ws->mu = sw_xcalloc(m + 1, sizeof(double));
 	for (int k = 0; k < ws->m; k++)
 		ws->mu[k] = w->ifaces[k].mu;
@@ -516,8 +515,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->c);
 	free(ws->c0);
 	free(ws->cstar);
-	free(ws->jump_c);
-	free(ws->jump_f);
+	free(ws->fallback);
 	free(ws->mu);
 	for (int i = 0; i <= SLP_MEMORY; i++) {
 		free(ws->hist.c[i]);
@@ -1109,6 +1107,19 @@ static void history_push(struct slp_history *h, const struct sample_ws *ws)
 	h->len++;
 }
 
+static enum sample_status slp_piece_path(struct sample_ws *ws,
+					const struct sample_opts *o,
+					struct sample_result *r);
+
+/* The SLP's plain step c <- c + omega (N(c) - c), N from the field ws->x. */
+static void plain_step(struct sample_ws *ws, double omega)
+{
+	for (int k = 0; k < ws->m; k++) {
+		double nk = ws->x[3 * k] + ws->x[3 * k + 1];
+		ws->c[k] += omega * (nk - ws->c[k]);
+	}
+}
+
 /* Step 2b: the stabilised SLP from the capacities in ws->c.  The plain
  * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN).
  * The default accelerates it.  While LP1 and LP2 end at the same bases,
@@ -1129,19 +1140,6 @@ static void history_push(struct slp_history *h, const struct sample_ws *ws)
  * docs/method.md has the measured agreement with the plain iteration.
  * Leaves the converged stress field in ws->x and the load factor in
  * r->lambda_max. */
-static enum sample_status slp_piece_path(struct sample_ws *ws,
-					const struct sample_opts *o,
-					struct sample_result *r);
-
-/* The SLP's plain step c <- c + omega (N(c) - c), N from the field ws->x. */
-static void plain_step(struct sample_ws *ws, double omega)
-{
-	for (int k = 0; k < ws->m; k++) {
-		double nk = ws->x[3 * k] + ws->x[3 * k + 1];
-		ws->c[k] += omega * (nk - ws->c[k]);
-	}
-}
-
 static enum sample_status slp(struct sample_ws *ws,
 			      const struct sample_opts *o,
 			      struct sample_result *r)
@@ -1292,8 +1290,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			 * the jump, and its plain step (so a failed jump
 			 * leaves the path as it was); no jump again while
 			 * the classification stays the one it failed on */
-			for (int k = 0; k < m; k++)
-				ws->c[k] = ws->jump_c[k] + o->omega * ws->jump_f[k];
+			memcpy(ws->c, ws->fallback, sizeof(double) * (size_t)m);
 			jumped = 0;
 			settled = 0;
 			failed = cls;
@@ -1309,11 +1306,11 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		cls = h;
 		if (settled >= o->piece_settle && h != failed &&
 		    piece_jump(ws) == 0) {
-			for (int k = 0; k < m; k++) {
-				ws->jump_c[k] = ws->c[k];
-				ws->jump_f[k] = ws->x[3 * k] + ws->x[3 * k + 1] - ws->c[k];
+			/* the plain step, kept for a failed jump */
+			plain_step(ws, o->omega);
+			memcpy(ws->fallback, ws->c, sizeof(double) * (size_t)m);
+			for (int k = 0; k < m; k++)
 				ws->c[k] = fmax(ws->cstar[k], 0);
-			}
 			jumped = 1;
 			continue;
 		}
