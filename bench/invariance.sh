@@ -21,17 +21,6 @@ walls=("$@")
 [ ${#walls[@]} -gt 0 ] || walls=(walls/demo.yaml walls/ferris-tinloi-1.yaml walls/ferris-tinloi-2.yaml)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-differ() {	# differ REF OTHER: prints the differing samples, then their count
-	awk -F, 'NR == FNR { if (FNR > 1) { st[$1] = $2; lm[$1] = $4 } next }
-		FNR > 1 {
-			if (st[$1] != $2) { bad++; print "    sample " $1 ": " st[$1] " " lm[$1] " vs " $2 " " $4; next }
-			if ($2 != "accepted") next
-			d = lm[$1] - $4; if (d < 0) d = -d
-			s = lm[$1] < 0 ? -lm[$1] : lm[$1]; if (s < 1) s = 1
-			if (d > 1e-9 * s) { bad++; print "    sample " $1 ": " lm[$1] " vs " $4 }
-		}
-		END { print bad + 0 }' "$1" "$2"
-}
 rc=0
 for w in "${walls[@]}"; do
 	for seed in ${seeds//,/ }; do
@@ -48,10 +37,9 @@ for w in "${walls[@]}"; do
 					SLIPWALL_LP_START=$st "$bin" run "$w" -n "$n" --seed "$seed" \
 						--threads 2 --slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
 				fi
-				differ "$tmp/ref.csv" "$tmp/o.csv" >"$tmp/d"
-				d=$(tail -n 1 "$tmp/d")
+				d=$(awk -F, -f tests/differ.awk "$tmp/ref.csv" "$tmp/o.csv" 2>"$tmp/d")
 				echo "$(basename "$w") seed $seed --slp $slp $st: $d of $n differ"
-				head -n -1 "$tmp/d"
+				cat "$tmp/d"
 				[ "$d" = 0 ] || rc=1
 			done
 		done

@@ -24,19 +24,9 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 wall=walls/demo.yaml
 
-# same A.csv B.csv: "differing rows" (status, or lambda_min beyond 1e-9)
+# same A.csv B.csv: how many samples differ (tests/differ.awk)
 same() {
-	awk -F, 'NR == FNR { if (FNR > 1) { st[$1] = $2; lm[$1] = $4 } next }
-		FNR > 1 {
-			rows++
-			if (!($1 in st)) { bad++; next }
-			if (st[$1] != $2) { bad++; print "  sample " $1 ": " st[$1] " vs " $2 > "/dev/stderr"; next }
-			if ($2 != "accepted") next
-			d = lm[$1] - $4; if (d < 0) d = -d
-			s = lm[$1] < 0 ? -lm[$1] : lm[$1]; if (s < 1) s = 1
-			if (d > 1e-9 * s) { bad++; print "  sample " $1 ": " lm[$1] " vs " $4 > "/dev/stderr" }
-		}
-		END { print (rows == length(st) ? bad + 0 : "rows " rows) }' "$1" "$2"
+	awk -F, -f tests/differ.awk "$1" "$2"
 }
 
 SLIPWALL_LP_START=auto "$bin" run $wall -n "$ns" --seed 1 --threads 2 \
