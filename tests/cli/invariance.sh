@@ -13,7 +13,8 @@
 # from the default start, 175.089 N from four others and from an
 # independent implementation), and where the default differs from --slp
 # plain it is lower (the plain iteration leaves the piece it settled on
-# for a higher onset state).  TAP output.
+# for a higher onset state); and the demo's wandering samples of seeds 1
+# and 2 (tests/data/demo-wandering.csv).  TAP output.
 
 bin=${1:?usage: cli/invariance.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -75,6 +76,37 @@ for st in slack-primal slack-dual crash canonical previous support; do
 	check "Ferris & Tin-Loi 2's traced samples, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
 	[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
 done
+
+# The demo's samples that wander (docs/method.md, "The SLP's answer":
+# no settled piece and a residual above 1e-3 after 100 iterations), in
+# tests/data/demo-wandering.csv: seed 1's 616 and 723, seed 2's 1470 and
+# 1478.  From every start: the same status and lambda_min; 1478 is
+# 389.114 N (before the restart rule, 385.433 N from five starts and
+# 387.914 N from support), 616 and 1470 are accepted (the plain
+# iteration does not converge on them in 1,000 iterations), and 723,
+# whose residual is 3.4e-7 at iteration 100, is not restarted: it keeps
+# the plain iteration's 352.128 N.
+wander=tests/data/demo-wandering.csv
+"$bin" run $wall --positions $wander --threads 1 --samples "$tmp/w-auto.csv" >/dev/null 2>&1
+for st in slack-primal slack-dual crash canonical previous support; do
+	SLIPWALL_LP_START=$st "$bin" run $wall --positions $wander --threads 1 \
+		--samples "$tmp/w-$st.csv" >/dev/null 2>&1
+	d=$(same "$tmp/w-auto.csv" "$tmp/w-$st.csv" 2>"$tmp/why")
+	check "the demo's wandering samples, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
+	[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
+done
+# row: sample status lambda_min of the replayed file's row N (0-based)
+row() { awk -F, -v n="$2" 'FNR == n + 2 { print $2, $4 }' "$1"; }
+read -r s616 l616 <<<"$(row "$tmp/w-auto.csv" 0)"
+read -r s723 l723 <<<"$(row "$tmp/w-auto.csv" 1)"
+read -r s1470 l1470 <<<"$(row "$tmp/w-auto.csv" 2)"
+read -r s1478 l1478 <<<"$(row "$tmp/w-auto.csv" 3)"
+check "demo seed 2 sample 1478: 389.114 N ($s1478 $l1478)" \
+	awk -v s="$s1478" -v l="$l1478" 'BEGIN { exit !(s == "accepted" && l > 389.1139 && l < 389.1149) }'
+check "demo seed 1 sample 616 and seed 2 sample 1470: accepted ($s616, $s1470)" \
+	eval '[ "$s616" = accepted ] && [ "$s1470" = accepted ]'
+check "demo seed 1 sample 723, converging at iteration 103: 352.128 N, not restarted ($s723 $l723)" \
+	awk -v s="$s723" -v l="$l723" 'BEGIN { exit !(s == "accepted" && l > 352.1275 && l < 352.1276) }'
 
 # --slp plain: where it differs from the default, the default is lower
 "$bin" run $wall -n "$ns" --seed 1 --threads 2 --slp plain \
