@@ -9,7 +9,8 @@
 #
 # Usage: bash bench/invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]
 #   N samples (default 2000), SEEDS comma-separated (default 1,2,3),
-#   WALLS (default the demo and both Ferris & Tin-Loi walls).
+#   WALLS (default the demo and both Ferris & Tin-Loi walls);
+#   INVARIANCE_SLPS (default "piece plain"): the SLPs, the outer loop.
 # Prints one line per comparison and every differing sample; exits 1 if
 # any differ.
 bin=${1:?usage: invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]}
@@ -22,9 +23,9 @@ walls=("$@")
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 rc=0
-for w in "${walls[@]}"; do
-	for seed in ${seeds//,/ }; do
-		for slp in piece plain; do
+for slp in ${INVARIANCE_SLPS:-piece plain}; do
+	for w in "${walls[@]}"; do
+		for seed in ${seeds//,/ }; do
 			SLIPWALL_LP_START=auto "$bin" run "$w" -n "$n" --seed "$seed" \
 				--threads 2 --slp $slp --samples "$tmp/ref.csv" >/dev/null 2>&1
 			for st in slack-primal slack-dual crash canonical previous support threads-1; do
