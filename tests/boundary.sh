@@ -26,7 +26,7 @@ rules=(
 	"MPI outside src/cli/|src/* include/*|^src/cli/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<mpi\.h>"
 	"GLPK outside the LP layer (src/lib/lp.c)|src/* include/*|^src/lib/lp\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
 	"the LP layer's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp\.h\""
-	"the operator's headers (statics.h, support.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support)\.h\""
+	"the library's private headers (statics.h, support.h, piece.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support|piece)\.h\""
 	"GSL, libyaml, cairo outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(gsl/|yaml\.h|cairo|fontconfig/)"
 	"src/tui/ including src/cli/|src/tui/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(cli/)?(cli|override|summary|cluster)\.h\""
 	"the library including a front end|src/lib/* include/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*((cli|tui)/)?(cli|override|summary|cluster|tui|workbench)\.h\""
@@ -91,7 +91,7 @@ plant() {	# RULE-INDEX: the file and line that cross rule i
 	1) echo "src/tui/planted.c|#include <mpi.h>" ;;
 	2) echo "src/lib/sample_planted.c|#include <glpk.h>" ;;
 	3) echo "src/cli/planted.c|#include \"lp.h\"" ;;
-	4) echo "src/tui/planted.c|# include \"statics.h\"" ;;
+	4) echo "src/tui/planted.c|# include \"piece.h\"" ;;
 	5) echo "src/cli/planted.c|#include <gsl/gsl_rng.h>" ;;
 	6) echo "src/tui/planted.c|#include \"cli.h\"" ;;
 	7) echo "include/slipwall/planted.h|#include \"tui.h\"" ;;
