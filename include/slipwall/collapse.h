@@ -3,8 +3,9 @@
  * commands' summaries (`run --at LOAD`, a wall's analysis.design_load;
  * docs/run.md, "The probability of collapse at a load").
  *
- * P(lambda_min <= LOAD) is estimated by the share of the accepted
- * samples whose lambda_min is at most LOAD (rejected samples have no
+ * P(collapse load <= LOAD) is estimated by the share of the accepted
+ * samples whose collapse load, m * lambda_min in the loads' own unit
+ * (docs/run.md, "Loads and units"), is at most LOAD (rejected samples have no
  * load: the probability is conditional on acceptance), with the exact
  * binomial (Clopper-Pearson) 99 % interval, stats_binomial_ci.
  */
@@ -25,7 +26,7 @@ struct collapse {
 /* From the accepted loads, sorted. */
 void collapse_at(const double *sorted, size_t n, double load,
 		 const char *source, struct collapse *c);
-/* "collapse     P(lambda_min <= L) = p (k of n accepted), 99 % interval
+/* "collapse     P(collapse load <= L) = p (k of n accepted), 99 % interval
  * [lo, hi] (exact binomial; --at)" with the given label width. */
 void collapse_print(FILE *f, const char *label, const struct collapse *c);
 /* {"load", "source", "collapsed", "accepted", "probability", "ci99"} */

@@ -89,7 +89,7 @@ static void usage(FILE *f)
 		"                       file would, and the summary lists them\n"
 		"  --at LOAD            the probability of collapse at LOAD (in N for\n"
 		"                       point loads, whatever their magnitude),\n"
-		"                       P(lambda_min <= LOAD) among the accepted samples,\n"
+		"                       P(collapse load <= LOAD) among the accepted samples,\n"
 		"                       with its exact 99 %% interval (a wall's\n"
 		"                       analysis.design_load is always reported)\n"
 		"  --until-ci W         stop when the 99 %% interval of p05 is narrower\n"

@@ -22,11 +22,11 @@ void collapse_print(FILE *f, const char *label, const struct collapse *c)
 {
 	const char *why = c->source[0] == 'a' ? "--at" : "the wall's design load";
 	if (c->n == 0) {
-		fprintf(f, "%sP(lambda_min <= %.6g): no accepted sample (%s)\n",
+		fprintf(f, "%sP(collapse load <= %.6g): no accepted sample (%s)\n",
 			label, c->load, why);
 		return;
 	}
-	fprintf(f, "%sP(lambda_min <= %.6g) = %.4g (%zu of %zu accepted), "
+	fprintf(f, "%sP(collapse load <= %.6g) = %.4g (%zu of %zu accepted), "
 		"99 %% interval [%.4g, %.4g] (exact binomial; %s)\n", label,
 		c->load, c->p, c->k, c->n, c->lo, c->hi, why);
 }

@@ -44,7 +44,7 @@ if not ok: print("# k", k, "n", n, c)
 sys.exit(not ok)' "$tmp/b.csv" "$tmp/b.json" "$load"
 "$bin" run $demo -n 150 --at "$load" >"$tmp/b.txt" 2>/dev/null
 check "run --at: the summary's line" \
-	grep -qE "^collapse +P\(lambda_min <= [0-9.e+-]+\) = [0-9.e-]+ \([0-9]+ of [0-9]+ accepted\), 99 % interval \[.*\] \(exact binomial; --at\)" "$tmp/b.txt"
+	grep -qE "^collapse +P\(collapse load <= [0-9.e+-]+\) = [0-9.e-]+ \([0-9]+ of [0-9]+ accepted\), 99 % interval \[.*\] \(exact binomial; --at\)" "$tmp/b.txt"
 "$bin" run $demo -n 150 --at 0 --json >"$tmp/z.json" 2>/dev/null
 check "run --at 0: none collapsed, the interval [0, 1 - 0.005^(1/n)]" python3 -c '
 import json, sys
@@ -68,7 +68,7 @@ sys.exit(not ok)' "$tmp/dl.json" "$tmp/b.json" "$load"
 "$bin" run "$tmp/dl.yaml" -n 50 >"$tmp/dl.txt" 2>&1
 check "... and run's summary prints it" grep -q "the wall's design load)" "$tmp/dl.txt"
 "$bin" compare "$tmp/dl.yaml" -n 50 --tests walls/demo-loads.txt >"$tmp/cmp.txt" 2>&1
-check "... and compare's" grep -q "^model: P(lambda_min <= .*the wall's design load)" "$tmp/cmp.txt"
+check "... and compare's" grep -q "^model: P(collapse load <= .*the wall's design load)" "$tmp/cmp.txt"
 "$bin" report "$tmp/dl.yaml" -n 150 --out "$tmp/rep" >/dev/null 2>&1
 check "... and the report's summary" grep -q "^Design load .*(analysis.design_load): P(λ_min ≤" "$tmp/rep/report.md"
 check "the fragility figure: SVG, PDF, PNG" \
@@ -115,7 +115,7 @@ sed "s/^analysis:/analysis:\n  design_load: $min/" $demo >"$tmp/k1.yaml"
 "$bin" compare "$tmp/k1.yaml" -n 240 --tests walls/demo-loads.txt >"$tmp/k1c.txt" 2>"$tmp/k1c.err"
 rc=$?
 check "compare on a wall whose design load is the least of 240 loads: exit 0, 1 of 240" \
-	eval '[ $rc = 0 ] && grep -q "^model: P(lambda_min <= .*(1 of 240 accepted)" "$tmp/k1c.txt"'
+	eval '[ $rc = 0 ] && grep -q "^model: P(collapse load <= .*(1 of 240 accepted)" "$tmp/k1c.txt"'
 "$bin" report "$tmp/k1.yaml" -n 240 --out "$tmp/k1r" >/dev/null 2>"$tmp/k1r.err"
 rc=$?
 check "... and report: exit 0, the design load's line" \
