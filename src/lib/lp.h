@@ -32,6 +32,12 @@ enum lp_status {
 
 enum lp_method { LP_PRIMAL, LP_DUAL };
 
+/* How far a basic variable of an optimal solution may lie outside its
+ * bounds (absolute at a bound of 0): the dual simplex's feasibility
+ * tolerance (lp.c, GLPK's tol_bnd).  A value this small is not
+ * distinguishable from 0. */
+double lp_feasibility_tol(enum lp_method m);
+
 struct lp;
 
 struct lp *lp_new(int nrows, int ncols);

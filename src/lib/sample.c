@@ -46,8 +46,8 @@
  *
  * Tolerances (scaled units, mean block weight = 1): a normal force counts
  * as positive above TOL_FORCE; a joint rate counts as motion above
- * TOL_MOTION times the largest rate of the mechanism.  docs/method.md
- * says why.
+ * TOL_MOTION times the largest rate of the mechanism, and above the
+ * kinematic LP's precision (motion_threshold).  docs/method.md says why.
  */
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -1441,13 +1441,23 @@ static enum sample_status onset(struct sample_ws *ws,
 	return mechanism(ws, r);
 }
 
-static double motion_scale(const struct sample_ws *ws)
+/* A joint rate of the mechanism counts as motion above this: TOL_MOTION
+ * times the largest rate, but never below the kinematic LP's precision
+ * (it is solved by the dual simplex: lp_feasibility_tol), for a rate
+ * the LP holds only to its feasibility tolerance is not told from 0.
+ * On a wall whose mechanism's rates are small (a body load over many
+ * blocks, normalised to f_L . v = 1: largest rate 0.02 on a 195-block
+ * wall) TOL_MOTION alone put the threshold at 2e-11, rates of 1e-10 at
+ * GLPK's precision counted as motion, and LP-min, holding N = 0 and
+ * T = -+mu N there, was infeasible (`numerical`; docs/method.md,
+ * "Tolerances"). */
+static double motion_threshold(const struct sample_ws *ws)
 {
 	double s = 0;
 	for (int k = 0; k < ws->m; k++)
 		s = fmax(s, fmax(fabs(ws->dt[k]),
 				 fmax(fabs(ws->dn[2 * k]), fabs(ws->dn[2 * k + 1]))));
-	return s;
+	return fmax(TOL_MOTION * s, lp_feasibility_tol(LP_DUAL));
 }
 
 /* Step 5: LP-min with the yield conditions that the mechanism uses held
@@ -1457,7 +1467,7 @@ static enum sample_status lp_min(struct sample_ws *ws, enum lp_method method,
 				 struct sample_result *r)
 {
 	int m = ws->m;
-	double thr = TOL_MOTION * motion_scale(ws);
+	double thr = motion_threshold(ws);
 	struct lp *P = ws->lp[AMIN];
 	amin_reset(ws);
 	for (int k = 0; k < m; k++) {
@@ -1522,7 +1532,7 @@ static void export(struct sample_ws *ws, struct sample_result *r)
 		vmax = fmax(vmax, hypot(ws->v[3 * e], ws->v[3 * e + 1]));
 		vmax = fmax(vmax, fabs(ws->v[3 * e + 2]));
 	}
-	double thr = TOL_MOTION * motion_scale(ws);
+	double thr = motion_threshold(ws);
 	for (int i = 0; i < 3 * w->nblocks && vmax > 0; i++)
 		r->vel[i] /= vmax;
 	for (int k = 0; k < ws->m; k++) {
