@@ -73,16 +73,23 @@ fi
 # their positions in tests/data/ftl2-seed1-traced.csv), replayed from
 # every start (docs/method.md: the mechanism and LP-min
 # on one fixed path, GLPK's tolerances at 1e-9)
-ftl2=walls/ferris-tinloi-2.yaml
-traced=tests/data/ftl2-seed1-traced.csv
-"$bin" run $ftl2 --positions $traced --threads 1 --samples "$tmp/f2-auto.csv" >/dev/null 2>&1
-for st in slack-primal slack-dual crash canonical previous support; do
-	SLIPWALL_LP_START=$st "$bin" run $ftl2 --positions $traced --threads 1 \
-		--samples "$tmp/f2-$st.csv" >/dev/null 2>&1
-	d=$(same "$tmp/f2-auto.csv" "$tmp/f2-$st.csv" 2>"$tmp/why")
-	check "Ferris & Tin-Loi 2's traced samples, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
-	[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
-done
+# replay WALL POSITIONS TAG TEXT: the positions replayed on 1 thread
+# from the default start (into $tmp/TAG-auto.csv) and from every other;
+# one check per start
+replay() {
+	local wall=$1 pos=$2 tag=$3 text=$4 st d
+	"$bin" run "$wall" --positions "$pos" --threads 1 \
+		--samples "$tmp/$tag-auto.csv" >/dev/null 2>&1
+	for st in slack-primal slack-dual crash canonical previous support; do
+		SLIPWALL_LP_START=$st "$bin" run "$wall" --positions "$pos" \
+			--threads 1 --samples "$tmp/$tag-$st.csv" >/dev/null 2>&1
+		d=$(same "$tmp/$tag-auto.csv" "$tmp/$tag-$st.csv" 2>"$tmp/why")
+		check "$text, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
+		[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
+	done
+}
+replay walls/ferris-tinloi-2.yaml tests/data/ftl2-seed1-traced.csv f2 \
+	"Ferris & Tin-Loi 2's traced samples"
 
 # The demo's samples that wander (docs/method.md, "The SLP's answer":
 # no settled piece and a residual above 1e-3 after 100 iterations), in
@@ -93,15 +100,7 @@ done
 # iteration does not converge on them in 1,000 iterations), and 723,
 # whose residual is 3.4e-7 at iteration 100, is not restarted: it keeps
 # the plain iteration's 352.128 N.
-wander=tests/data/demo-wandering.csv
-"$bin" run $wall --positions $wander --threads 1 --samples "$tmp/w-auto.csv" >/dev/null 2>&1
-for st in slack-primal slack-dual crash canonical previous support; do
-	SLIPWALL_LP_START=$st "$bin" run $wall --positions $wander --threads 1 \
-		--samples "$tmp/w-$st.csv" >/dev/null 2>&1
-	d=$(same "$tmp/w-auto.csv" "$tmp/w-$st.csv" 2>"$tmp/why")
-	check "the demo's wandering samples, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
-	[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
-done
+replay $wall tests/data/demo-wandering.csv w "the demo's wandering samples"
 # row: sample status lambda_min of the replayed file's row N (0-based)
 row() { awk -F, -v n="$2" 'FNR == n + 2 { print $2, $4 }' "$1"; }
 read -r s616 l616 <<<"$(row "$tmp/w-auto.csv" 0)"
