@@ -517,13 +517,13 @@ static enum lp_status map_status(glp_prob *P)
  * Ferris & Tin-Loi walls have the same status, loads and iterations as
  * at 1e-9 (docs/performance.md, "Fourth round") */
 #define GLPK_TOL_PRIMAL 1e-8
+#define HELD_TOL_PRIMAL (0.5 * GLPK_TOL_BND)
+#define HELD_TOL_DUAL (0.5 * 0.97 * GLPK_TOL_DJ)
 
 double lp_feasibility_tol(enum lp_method m)
 {
 	return m == LP_DUAL ? GLPK_TOL_BND : GLPK_TOL_PRIMAL;
 }
-#define HELD_TOL_PRIMAL (0.5 * GLPK_TOL_BND)
-#define HELD_TOL_DUAL (0.5 * 0.97 * GLPK_TOL_DJ)
 
 /* Is a basic value v inside the bounds of a variable of GLPK type t? */
 static int held_primal_ok(int t, double lb, double ub, double v)

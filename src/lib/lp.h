@@ -32,10 +32,10 @@ enum lp_status {
 
 enum lp_method { LP_PRIMAL, LP_DUAL };
 
-/* How far a basic variable of an optimal solution may lie outside its
- * bounds (absolute at a bound of 0): the dual simplex's feasibility
- * tolerance (lp.c, GLPK's tol_bnd).  A value this small is not
- * distinguishable from 0. */
+/* How far a basic variable of an optimal solution by the simplex method
+ * m may lie outside its bounds (absolute at a bound of 0): GLPK's tol_bnd
+ * as lp.c sets it, 1e-9 for the dual simplex and 1e-8 for the primal
+ * (the tie-breaks).  A value this small is not told from 0. */
 double lp_feasibility_tol(enum lp_method m);
 
 struct lp;

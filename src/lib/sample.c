@@ -104,11 +104,12 @@
  * omega / 2 (for twice as many), and so on.  Within one phase the
  * last-bit differences between two LP starts do not grow to a decision:
  * demo sample 1478 of seed 2 wandered for 300 iterations before they
- * did.  Measured (docs/method.md, "The SLP's answer"): every start
- * agrees on it and on the other samples of over 60 iterations of the
- * demo's seeds 1 and 2.  It changes 3 of 2,500 demo samples (seed 1's
- * 616 and seed 2's 1470, not converged before, and 1478) and none of
- * 1,000 of either Ferris & Tin-Loi wall */
+ * did.  Measured (docs/method.md, "The SLP's answer", rule 6): every
+ * start agrees on it and on every sample of the demo and both Ferris &
+ * Tin-Loi walls at 2,000 samples and three seeds.  Of the demo's 6,000
+ * samples (seeds 1-3) it changes 15: 9 not converged before are
+ * accepted, 1 accepted before is not converged, 5 loads move (3 lower,
+ * 2 higher); none of 2,000 of either Ferris & Tin-Loi wall (seed 1) */
 #define SLP_PHASE 100
 /* ... if its last residual max |N - c| is still above this, far from the
  * plain test's 1e-7: a slowly converging iteration goes on (demo sample
