@@ -638,7 +638,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 	parm.out_dly = 100;
 	parm.out_frq = 100;
 	parm.presolve = GLP_OFF;
-	parm.tol_bnd = m == LP_DUAL ? GLPK_TOL_BND : GLPK_TOL_PRIMAL;
+	parm.tol_bnd = lp_feasibility_tol(m);
 	parm.tol_dj = m == LP_DUAL ? GLPK_TOL_DJ : GLPK_TOL_PRIMAL;
 	parm.meth = m == LP_DUAL ? GLP_DUALP : GLP_PRIMAL;
 	parm.it_lim = tl_it_lim > 0 ? tl_it_lim :

@@ -1138,8 +1138,9 @@ static void plain_step(struct sample_ws *ws, double omega)
 }
 
 /* Step 2b: the stabilised SLP from the capacities in ws->c.  The plain
- * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN).
- * The default accelerates it.  While LP1 and LP2 end at the same bases,
+ * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN);
+ * SAMPLE_SLP_ANDERSON accelerates it, as below (the default,
+ * SAMPLE_SLP_PIECE, is slp_piece_path's).  While LP1 and LP2 end at the same bases,
  * the map is one affine piece N(c) = P c + q, and the plain iteration
  * converges on it linearly (rate 1 - omega (1 - rho(P)), about 0.75 on
  * Ferris & Tin-Loi wall 1: 20-30 iterations for the last digits).  After
