@@ -7,7 +7,8 @@
 # n counts the tests, failed the failures.  And helpers for tests that
 # wait: within SECONDS COMMAND... (the command, every 0.1 s, until it
 # succeeds or SECONDS have passed); alive PID and gone PID; has_rows
-# FILE K and wait_rows FILE K (a samples file's data rows).
+# FILE K and wait_rows FILE K (a samples file's data rows); json_field
+# FILE EXPR and near VALUE TARGET REL, for the JSON and numeric checks.
 # python3 is the system's; skip_all and skip_one (below).
 n=0
 failed=0
@@ -63,6 +64,16 @@ has_rows() {
 # wait_rows FILE K: until FILE has K data rows (at most 60 s)
 wait_rows() {
 	within 60 has_rows "$1" "$2"
+}
+# json_field FILE EXPR: the python expression EXPR on the JSON object d
+# read from FILE (nothing, and a failure, if FILE is not JSON)
+json_field() {
+	python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null
+}
+# near VALUE TARGET REL: |VALUE - TARGET| <= REL |TARGET| (false when
+# VALUE is not a number)
+near() {
+	python3 -c 'import sys; a, b, r = map(float, sys.argv[1:]); sys.exit(not abs(a - b) <= r * abs(b))' "$1" "$2" "$3" 2>/dev/null
 }
 # python3 (the JSON and arithmetic checks): the system's interpreter by
 # its absolute path, the one scripts/setup.sh installs, not the first

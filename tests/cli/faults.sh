@@ -33,10 +33,6 @@ complete() {
 	awk -F, 'NR == 1 { c = NF } NF != c { bad++ } END { exit bad > 0 }' "$1" &&
 		[ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
 }
-# json_field FILE EXPR: python expression on the JSON object d
-json_field() {
-	python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null
-}
 sanitizer_clean() {
 	! grep -qE 'Sanitizer|runtime error|core dumped' "$1"
 }

@@ -37,9 +37,6 @@ complete() {
 	awk -F, 'NR == 1 { c = NF } NF != c { bad++ } END { exit bad > 0 }' "$1" &&
 		[ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
 }
-json_field() {
-	python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null
-}
 
 # starved WALL MB N THREADS: a run of N samples with GLPK limited to MB
 starved() {

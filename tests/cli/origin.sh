@@ -36,9 +36,6 @@ PY
 p05() {	# p05 FILE.json
 	python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["lambda"]["p05"])' "$1"
 }
-near() {	# near VALUE TARGET REL
-	python3 -c 'import sys; a, b, r = map(float, sys.argv[1:]); sys.exit(not abs(a - b) <= r * abs(b))' "$1" "$2" "$3"
-}
 
 sed 's/depth: 0.25/depth: 0/' walls/single-block.yaml >"$tmp/block.yaml"
 

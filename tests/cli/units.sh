@@ -21,9 +21,6 @@ cd "$(dirname "$0")/../.." || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-near() {	# near VALUE TARGET: within 1e-9 relative
-	python3 -c 'import sys; a, b = map(float, sys.argv[1:]); sys.exit(not abs(a - b) <= 1e-9 * abs(b))' "$1" "$2"
-}
 jget() {	# jget FILE EXPR: a value of a JSON file (j is the document)
 	python3 -c 'import json, sys; j = json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2"
 }
@@ -37,7 +34,7 @@ for m in 0.5 2; do
 		eval "grep -q '^load  *min 209.28  p05 209.28' '$tmp/run.txt' && grep -q '^  *in N, the force' '$tmp/run.txt'"
 	"$bin" run "$w" -n 10 --json --at 209.29 >"$tmp/run.json" 2>/dev/null
 	check "magnitude $m: run --json: lambda.p05 = 209.28 in load.unit N" \
-		eval "near \$(jget '$tmp/run.json' 'j[\"lambda\"][\"p05\"]') 209.28 && [ \"\$(jget '$tmp/run.json' 'j[\"load\"][\"unit\"]')\" = N ]"
+		eval "near \$(jget '$tmp/run.json' 'j[\"lambda\"][\"p05\"]') 209.28 1e-9 && [ \"\$(jget '$tmp/run.json' 'j[\"load\"][\"unit\"]')\" = N ]"
 	check "magnitude $m: --at 209.29 N: every sample collapses" \
 		eval "[ \"\$(jget '$tmp/run.json' 'j[\"collapse_probability\"][0][\"probability\"] == 1')\" = True ]"
 	check "magnitude $m: the samples file keeps lambda: lambda_min x $m = 209.28" \
@@ -48,10 +45,10 @@ sys.exit(not (len(r) == 10 and all(abs(v * float(sys.argv[2]) - 209.28) < 1e-9 f
 	printf '# loads in N\n205\n209\n215\n' >"$tmp/t.txt"
 	"$bin" compare "$w" -n 10 --tests "$tmp/t.txt" --json >"$tmp/cmp.json" 2>/dev/null
 	check "magnitude $m: compare: the model's p50 is 209.28 N beside tests in N" \
-		eval "near \$(jget '$tmp/cmp.json' 'j[\"model\"][\"lambda\"][\"p50\"]') 209.28"
+		eval "near \$(jget '$tmp/cmp.json' 'j[\"model\"][\"lambda\"][\"p50\"]') 209.28 1e-9"
 	"$bin" compare "$w" --samples "$tmp/m$m.csv" --tests "$tmp/t.txt" --json >"$tmp/cmp2.json" 2>/dev/null
 	check "magnitude $m: compare --samples reads the force from the file's lambda" \
-		eval "near \$(jget '$tmp/cmp2.json' 'j[\"model\"][\"lambda\"][\"p50\"]') 209.28"
+		eval "near \$(jget '$tmp/cmp2.json' 'j[\"model\"][\"lambda\"][\"p50\"]') 209.28 1e-9"
 	"$bin" report "$w" -n 10 --tests "$tmp/t.txt" --out "$tmp/rep$m" >/dev/null 2>&1
 	check "magnitude $m: report.md: the model's p05 and standard are 209.28 N" \
 		eval "grep -q '^| Numerical model | 10 | 209.28 N' '$tmp/rep$m/report.md' && grep -q '^| standard | 209.28 N' '$tmp/rep$m/report.md'"
@@ -60,7 +57,7 @@ sys.exit(not (len(r) == 10 and all(abs(v * float(sys.argv[2]) - 209.28) < 1e-9 f
 		eval "[ \"\$(jget '$tmp/sw.json' 'all(abs(p[\"p05\"] - 209.28) < 1e-9 for p in j[\"points\"])')\" = True ]"
 	"$bin" solve "$w" --method standard --json >"$tmp/so.json" 2>/dev/null
 	check "magnitude $m: solve: load_newtons 209.28" \
-		eval "near \$(jget '$tmp/so.json' 'j[\"load_newtons\"]') 209.28"
+		eval "near \$(jget '$tmp/so.json' 'j[\"load_newtons\"]') 209.28 1e-9"
 done
 
 for m in 1 2; do
@@ -72,7 +69,7 @@ for m in 1 2; do
 		eval "grep -q '^factor  *min 0.5  p05 0.5 ' '$tmp/b.txt' && grep -q '^  *in seismic coefficient, no unit' '$tmp/b.txt' && ! grep -q ' N' '$tmp/b.txt'"
 	"$bin" run "$w" -n 10 --json >"$tmp/b.json" 2>/dev/null
 	check "body load of magnitude $m: --json: p05 0.5, unit \"\"" \
-		eval "near \$(jget '$tmp/b.json' 'j[\"lambda\"][\"p05\"]') 0.5 && [ \"\$(jget '$tmp/b.json' 'repr(j[\"load\"][\"unit\"])')\" = \"''\" ]"
+		eval "near \$(jget '$tmp/b.json' 'j[\"lambda\"][\"p05\"]') 0.5 1e-9 && [ \"\$(jget '$tmp/b.json' 'repr(j[\"load\"][\"unit\"])')\" = \"''\" ]"
 	"$bin" report "$w" -n 10 --out "$tmp/brep$m" >/dev/null 2>&1
 	check "body load of magnitude $m: report.md: seismic coefficient, no N" \
 		eval "grep -q '^Loads: seismic coefficient' '$tmp/brep$m/report.md' && ! grep -q '0.5 N' '$tmp/brep$m/report.md'"
