@@ -112,12 +112,13 @@ static int bench_roles(const struct wall *w, long n, unsigned long seed)
 	sample_opts_default(&o);
 	struct sample_result r;
 	sample_result_init(&r, w);
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_draw dr;
+	draw_init(&dr, w);
 	long accepted = 0, iters = 0;
 	double t0 = now();
 	for (long i = 0; i < n; i++) {
-		mc_positions(w, seed, (unsigned long)i, -1, xi);
-		sample_run(ws, xi, &o, &r);
+		draw_make(&dr, w, seed, (unsigned long)i, -1);
+		sample_run(ws, &dr, &o, &r);
 		accepted += r.status == SAMPLE_ACCEPTED;
 		iters += r.iterations;
 	}
@@ -143,7 +144,7 @@ static int bench_roles(const struct wall *w, long n, unsigned long seed)
 		       lps / (double)n, it / lps, 1e6 * sec / lps,
 		       lp_total > 0 ? 100 * sec / lp_total : 0.0);
 	}
-	free(xi);
+	draw_free(&dr);
 	sample_result_free(&r);
 	sample_ws_free(ws);
 	return 0;

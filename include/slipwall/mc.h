@@ -2,8 +2,8 @@
  * mc.h - the Monte Carlo sampler: a pool of worker threads, results in
  * sample order.
  *
- * Sample i's contact positions depend only on (seed, i) (mc_positions,
- * or a replay table), and each worker computes whole samples with its own
+ * Sample i's draw, its contact points and friction, depends only on
+ * (seed, i) (draw_make, draw.h; or a replayed table), and each worker computes whole samples with its own
  * GLPK workspace, so the results do not depend on the number of threads.
  * Workers take indices from a shared counter and put finished samples
  * into a reorder window; the consumer (one thread: the `run` command, or
@@ -24,30 +24,10 @@
 
 #include <stdint.h>
 
+#include "slipwall/draw.h"
 #include "slipwall/record.h"
 #include "slipwall/sample.h"
 #include "slipwall/wall.h"
-
-/* One sample's random stream: xoshiro256** (Blackman & Vigna), its state
- * expanded by splitmix64 from the sample's full 64-bit seed, itself a
- * bijective mix of (run seed, index).  Distinct indices of one run give
- * distinct streams (their first outputs already differ). */
-struct mc_rng {
-	uint64_t s[4];
-};
-void mc_rng_seed(struct mc_rng *r, unsigned long seed, unsigned long index);
-uint64_t mc_rng_next(struct mc_rng *r);
-/* A uniform double in [0, 1), 53 random bits. */
-double mc_rng_uniform(struct mc_rng *r);
-
-/* The contact positions of sample `index` of a run with `seed`: depend on
- * (seed, index) only, drawn from that sample's stream.  xi gets 2 *
- * nifaces numbers (xi_a, xi_b per interface, in interface order): with
- * depth d (< 0: the wall's), xi_a = d u1 and xi_b = 1 - d u2; with
- * contacts.positions: anywhere, the sorted pair (u1, u2).  The same two
- * uniforms are drawn per interface whatever d (common random numbers). */
-void mc_positions(const struct wall *w, unsigned long seed,
-		  unsigned long index, double depth, double *xi);
 
 struct mc_config {
 	const struct wall *w;	/* finished; read by every worker */
@@ -60,8 +40,8 @@ struct mc_config {
 	int threads;		/* >= 1 */
 	double depth;		/* < 0: the wall's contacts.depth */
 	struct sample_opts opts;
-	/* replay: n rows of 2 * nifaces positions (or NULL to draw) */
-	const double *positions;
+	/* replay: n rows of draws (or NULL to draw them) */
+	const struct draw_table *replay;
 };
 void mc_config_default(struct mc_config *c, const struct wall *w);
 

@@ -20,7 +20,7 @@
 #include "slipwall/wall.h"
 
 struct record {
-	/* the fixed part, up to xi: plain data without padding, sent as
+	/* the fixed part, up to draw: plain data without padding, sent as
 	 * bytes between the ranks of an MPI job (the same binary on every
 	 * rank: RECORD_FIXED bytes) */
 	long index;		/* the sample's index in the run */
@@ -31,7 +31,7 @@ struct record {
 	double vw_residual;
 	double seconds;		/* compute time of this sample */
 	/* the arrays */
-	double *xi;		/* 2 * nifaces: the contact positions */
+	struct sample_draw draw;	/* contact points and friction */
 	char *joint;		/* nifaces + 1 (mechanism, accepted only) */
 	double *vel;		/* 3 * nblocks (accepted only) */
 };
@@ -41,16 +41,16 @@ void record_free(struct record *r);
 /* dst = src, arrays included; both made by record_init for w. */
 void record_copy(struct record *dst, const struct record *src,
 		 const struct wall *w);
-/* The record of sample `index` at positions r->xi (already there) from
+/* The record of sample `index` of draw r->draw (already there) from
  * the solver's result res, computed in `seconds`: the joint states and
  * velocities of an accepted sample, zeros otherwise. */
 void record_set(struct record *r, long index, const struct sample_result *res,
 		double seconds, const struct wall *w);
 
-#define RECORD_FIXED offsetof(struct record, xi)
+#define RECORD_FIXED offsetof(struct record, draw)
 
-/* The wire form: record_wire_size(w) bytes, the fixed part then xi,
- * vel and joint. */
+/* The wire form: record_wire_size(w) bytes, the fixed part then the
+ * draw's xi and mu, vel and joint. */
 size_t record_wire_size(const struct wall *w);
 void record_pack(const struct record *r, const struct wall *w,
 		 unsigned char *buf);

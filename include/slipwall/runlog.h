@@ -26,6 +26,7 @@
 #ifndef SLIPWALL_RUNLOG_H
 #define SLIPWALL_RUNLOG_H
 
+#include "slipwall/draw.h"
 #include "slipwall/record.h"
 #include "slipwall/wall.h"
 
@@ -49,18 +50,20 @@ enum sw_status runlog_write(struct runlog *l, const struct record *it,
 enum sw_status runlog_close(struct runlog *l, char *err);
 const char *runlog_path(const struct runlog *l);
 
-/* Read the contact positions of a samples file (for --positions):
- * *rows rows of 2 * w->nifaces numbers, malloc'd into *xi.  Errors are
+/* Read the draws of a samples file (for --positions): t->rows rows of
+ * 2 * w->nifaces contact positions into t->xi and, when the file has
+ * mu_k columns (random friction), of w->nifaces frictions into t->mu
+ * (else NULL); malloc'd, draw_table_free frees them.  Errors are
  * "FILE:LINE:COLUMN: message", SW_EINPUT; a file whose header has
- * another number of interfaces than w is refused (another wall's).  warn
- * (SW_ERRLEN bytes, or NULL) gets "" or the warning of a cut last row,
- * which was dropped. */
-enum sw_status runlog_read_positions(const char *path, const struct wall *w,
-				     double **xi, long *rows, char *warn,
-				     char *err);
+ * another number of interfaces than w is refused (another wall's), and
+ * so is a file without frictions for a wall whose friction is random.
+ * warn (SW_ERRLEN bytes, or NULL) gets "" or the warning of a cut last
+ * row, which was dropped. */
+enum sw_status runlog_read_draws(const char *path, const struct wall *w,
+				 struct draw_table *t, char *warn, char *err);
 /* Read the accepted loads of a samples file of wall w (for report and
  * compare): its lambda_min column times wall_quantity's scale, the
- * quantity people read (the force in N of a point load); refused like runlog_read_positions when its
+ * quantity people read (the force in N of a point load); refused like runlog_read_draws when its
  * header does not have w's interfaces; warn as above. */
 enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 				 double **lam, long *n, char *warn, char *err);

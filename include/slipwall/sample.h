@@ -16,6 +16,7 @@
 #ifndef SLIPWALL_SAMPLE_H
 #define SLIPWALL_SAMPLE_H
 
+#include "slipwall/draw.h"
 #include "slipwall/wall.h"
 
 /* X(enum, name in files, text for people) */
@@ -139,12 +140,12 @@ struct sample_ws *sample_ws_new_auto_large(const struct wall *w);
 void sample_ws_free(struct sample_ws *ws);
 
 
-/* Steps 2-5 of SPEC section 2 for the contact positions xi.  Fills r
- * (which must have been sample_result_init'ed for the same wall). */
-void sample_run(struct sample_ws *ws, const double *xi,
+/* Steps 2-5 of docs/method.md for the draw d (contact points, friction).
+ * Fills r (which must have been sample_result_init'ed for the same wall). */
+void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		const struct sample_opts *o, struct sample_result *r);
 
-/* A collapse pattern's onset-of-collapse load, at positions xi (for the
+/* A collapse pattern's onset-of-collapse load, for the draw d (for the
  * global method, whose mixed-integer program proposes the pattern):
  * open[2k + e] != 0 where contact point e of interface k may open, slip[k]
  * the directions (SAMPLE_SLIP_POS: towards +t, SAMPLE_SLIP_NEG) in which
@@ -156,15 +157,17 @@ void sample_run(struct sample_ws *ws, const double *xi,
  * no admissible field keeps the one found (LP-min infeasible: a block
  * pushed high overturns before it can slide). */
 enum { SAMPLE_SLIP_POS = 1, SAMPLE_SLIP_NEG = 2 };
-enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
+enum sample_status sample_pattern(struct sample_ws *ws,
+				  const struct sample_draw *d,
 				  const unsigned char *open,
 				  const unsigned char *slip,
 				  struct sample_result *r);
 
-/* The associative (standard) limit analysis at positions xi: maximum
+/* The associative (standard) limit analysis for the draw d: maximum
  * load factor and its mechanism (the LP dual).  Returns the status
  * (ACCEPTED when an optimum was found). */
-enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
+enum sample_status sample_standard(struct sample_ws *ws,
+				   const struct sample_draw *d,
 				   struct sample_result *r);
 
 /* What the LPs of a workspace cost, by role, since it was made (its

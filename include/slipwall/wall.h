@@ -50,7 +50,6 @@ struct wall_interface {
 	double p1[2], p2[2];	/* shared segment, p1 -> p2 along t */
 	double len;		/* |p2 - p1| */
 	double t[2], n[2];	/* unit tangent and normal (n = a -> b) */
-	double mu;		/* friction coefficient */
 	enum joint_kind kind;	/* bed (horizontal), head (vertical), other */
 };
 
@@ -76,7 +75,10 @@ struct wall_layout {
 struct wall {
 	char *name;		/* owned, may be NULL */
 	char *path;		/* owned, file it came from (for messages) */
-	double mu_bed, mu_head;	/* friction of bed and head joints */
+	double mu_bed, mu_head;	/* friction of bed and head joints: the mean
+				 * when it is random */
+	double mu_cov;		/* friction's coefficient of variation per
+				 * joint and sample; 0: fixed (draw.h) */
 	double unit_weight;	/* gamma, N/m^3 */
 	double thickness;	/* out-of-plane t, m */
 	/* where friction (bed, head) and unit_weight were given, for the
@@ -125,6 +127,9 @@ _Static_assert(ULONG_MAX >= WALL_SEED_MAX,
  * joint slides only within 0.06 degrees of the direction of its contact
  * force.  docs/wall-format.md. */
 #define WALL_FRICTION_MAX 1000.0
+/* friction.cov: at most this (a coefficient of variation of 100 %; a
+ * joint's drawn friction is then capped at WALL_FRICTION_MAX) */
+#define WALL_COV_MAX 1.0
 
 /* Ids the program gives bodies of its own ("ground", the foundation of
  * `supports: [{ground: ...}]`): a block or support may not take one.
@@ -161,6 +166,11 @@ struct wall *wall_copy(const struct wall *w);
  * an edit that moves a load or changes a friction changes it. */
 #define WALL_DIGEST_LEN 32
 void wall_digest(const struct wall *w, char *out);
+
+/* The friction coefficient of interface k: the material's (mu_head for a
+ * head joint, mu_bed for any other), its mean when friction is random.
+ * A sample's own friction is in its draw (draw.h). */
+double wall_iface_mu(const struct wall *w, int k);
 
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */

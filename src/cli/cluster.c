@@ -307,8 +307,11 @@ static uint64_t fingerprint(const struct mc_config *cfg)
 		h = fnv(h, &bl->weight, sizeof bl->weight);
 		h = fnv(h, &bl->fixed, sizeof bl->fixed);
 	}
-	for (int k = 0; k < w->nifaces; k++)
-		h = fnv(h, &w->ifaces[k].mu, sizeof w->ifaces[k].mu);
+	for (int k = 0; k < w->nifaces; k++) {
+		double mu = wall_iface_mu(w, k);
+		h = fnv(h, &mu, sizeof mu);
+	}
+	h = fnv(h, &w->mu_cov, sizeof w->mu_cov);
 	for (int l = 0; l < w->nloads; l++) {
 		const struct wall_load *ld = &w->loads[l];
 		h = fnv(h, ld->at, sizeof ld->at);
@@ -316,11 +319,15 @@ static uint64_t fingerprint(const struct mc_config *cfg)
 		h = fnv(h, &ld->magnitude, sizeof ld->magnitude);
 		h = fnv(h, &ld->kind, sizeof ld->kind);
 	}
-	int replay = cfg->positions != NULL;
+	int replay = cfg->replay != NULL;
 	h = fnv(h, &replay, sizeof replay);
-	if (replay)
-		h = fnv(h, cfg->positions, sizeof(double) * 2 *
+	if (replay) {
+		h = fnv(h, cfg->replay->xi, sizeof(double) * 2 *
 			(size_t)w->nifaces * (size_t)cfg->n);
+		if (cfg->replay->mu)
+			h = fnv(h, cfg->replay->mu, sizeof(double) *
+				(size_t)w->nifaces * (size_t)cfg->n);
+	}
 	return h;
 }
 

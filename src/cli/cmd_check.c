@@ -50,6 +50,10 @@ static void print_json(const struct wall *w)
 	json_double(&j, w->mu_bed);
 	json_key(&j, "head");
 	json_double(&j, w->mu_head);
+	if (w->mu_cov > 0) {	/* random friction: bed and head are means */
+		json_key(&j, "cov");
+		json_double(&j, w->mu_cov);
+	}
 	json_object_end(&j);
 	json_key(&j, "unit_weight");
 	json_double(&j, w->unit_weight);
@@ -100,7 +104,7 @@ static void print_json(const struct wall *w)
 		json_key(&j, "length");
 		json_double(&j, it->len);
 		json_key(&j, "mu");
-		json_double(&j, it->mu);
+		json_double(&j, wall_iface_mu(w, k));
 		json_key(&j, "kind");
 		json_string(&j, kind_name(it->kind));
 		json_object_end(&j);
@@ -164,8 +168,14 @@ static void print_text(const struct wall *w)
 	printf("wall:       %s%s%s%s\n", w->name ? cli_text(w->name) :
 	       "(unnamed)", w->path ? " (" : "", w->path ? cli_text(w->path) :
 	       "", w->path ? ")" : "");
-	printf("material:   friction bed %g, head %g; unit weight %g N/m^3; thickness %g m\n",
-	       w->mu_bed, w->mu_head, w->unit_weight, w->thickness);
+	if (w->mu_cov > 0)
+		printf("material:   friction bed %g, head %g (means; each joint's "
+		       "random, lognormal, cov %g); unit weight %g N/m^3; "
+		       "thickness %g m\n", w->mu_bed, w->mu_head, w->mu_cov,
+		       w->unit_weight, w->thickness);
+	else
+		printf("material:   friction bed %g, head %g; unit weight %g N/m^3; thickness %g m\n",
+		       w->mu_bed, w->mu_head, w->unit_weight, w->thickness);
 	printf("blocks:     %d free, %d support%s; total weight %.6g N (mean block %.6g N)\n",
 	       w->nfree, nfixed, nfixed == 1 ? "" : "s", w->total_weight,
 	       w->mean_weight);
@@ -212,7 +222,7 @@ static void print_text(const struct wall *w)
 		printf("%-5d %-10s %-10s %-21s %-21s %6.3g %s\n", k + 1,
 		       cli_text(w->blocks[it->a].id),
 		       cli_text(w->blocks[it->b].id), p1, p2,
-		       it->mu, kind_name(it->kind));
+		       wall_iface_mu(w, k), kind_name(it->kind));
 	}
 }
 

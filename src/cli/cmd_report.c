@@ -261,7 +261,8 @@ static char *command_line(const struct report_args *a,
 
 /* What report_main computes and frees. */
 struct report_data {
-	double *tests, *lam, *replay, *xi;
+	double *tests, *lam, *replay;
+	struct draw_table draws;	/* the file's, replayed */
 	long ntests, nlam;
 	struct tally t;
 	struct mc_config cfg;
@@ -278,18 +279,18 @@ static int model_of_file(const struct report_args *a, const struct wall *w,
 	long rows, nrep = 0;
 	if (runlog_read_loads(a->samples, w, &d->lam, &d->nlam, NULL, err) !=
 	    SW_OK ||
-	    runlog_read_positions(a->samples, w, &d->xi, &rows, warn,
-				  err) != SW_OK) {
+	    runlog_read_draws(a->samples, w, &d->draws, warn, err) != SW_OK) {
 		cli_errorf("%s", err);
 		return 2;
 	}
 	if (warn[0])
 		cli_errorf("%s", warn);
+	rows = d->draws.rows;
 	if (rows < 1) {
 		cli_errorf("%s: no samples", a->samples);
 		return 2;
 	}
-	d->cfg.positions = d->xi;
+	d->cfg.replay = &d->draws;
 	d->cfg.n = rows;
 	int status = cli_threads(CMD, w, a->threads, mc_ncpu(), d->cfg.n,
 				 &d->cfg.threads);
@@ -527,7 +528,7 @@ static int report_main(int argc, char **argv)
 	tally_free(&d.t);
 	free(d.lam);
 	free(d.replay);
-	free(d.xi);
+	draw_table_free(&d.draws);
 	free(d.tests);
 	wall_free(w);
 	override_free(&a.ov);

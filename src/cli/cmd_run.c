@@ -77,7 +77,8 @@ static void usage(FILE *f)
 		"  --threads T          worker threads (default: the number of CPUs);\n"
 		"                       the results do not depend on it\n"
 		"  --samples FILE.csv   write one row per sample, as it is computed\n"
-		"  --positions FILE.csv replay the contact positions of a samples file\n"
+		"  --positions FILE.csv replay the draws (contact positions, and\n"
+		"                       friction when random) of a samples file\n"
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
 		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
 		"                       of the bed and head joints\n"
@@ -466,7 +467,7 @@ struct run_setup {
 	struct run_args a;
 	struct wall *w;
 	struct mc_config cfg;
-	double *replay;		/* --positions */
+	struct draw_table replay;	/* --positions */
 	struct runlog *log;	/* --samples, rank 0 only */
 };
 
@@ -474,7 +475,7 @@ static void setup_free(struct run_setup *s)
 {
 	char err[SW_ERRLEN];
 	runlog_close(s->log, err);
-	free(s->replay);
+	draw_table_free(&s->replay);
 	wall_free(s->w);
 	override_free(&s->a.ov);
 	memset(s, 0, sizeof *s);
@@ -550,19 +551,19 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	mc_config_default(cfg, w);
 	cfg->opts.slp = (enum sample_slp)a->slp;
 	if (a->positions) {
-		long rows;
 		char warn[SW_ERRLEN];
-		if (runlog_read_positions(a->positions, w, &s->replay, &rows,
-					  warn, err) != SW_OK) {
+		if (runlog_read_draws(a->positions, w, &s->replay, warn,
+				      err) != SW_OK) {
 			cli_errorf("%s", err);
 			return 2;
 		}
 		if (warn[0])
 			cli_errorf("%s", warn);
+		long rows = s->replay.rows;
 		if (a->n_set && a->n > rows)
 			return cli_usage_error(CMD, "-n %ld: %s holds %ld "
 					       "samples", a->n, a->positions, rows);
-		cfg->positions = s->replay;
+		cfg->replay = &s->replay;
 		cfg->n = a->n_set ? a->n : rows;
 	} else {
 		cfg->n = a->n_set ? a->n : w->samples;

@@ -492,7 +492,6 @@ static int contact_pair(int ea, int eb, void *vctx)
 		it.kind = JOINT_HEAD;
 	else
 		it.kind = JOINT_OTHER;
-	it.mu = it.kind == JOINT_HEAD ? c->w->mu_head : c->w->mu_bed;
 	if (c->n == c->cap) {
 		c->cap = c->cap ? 2 * c->cap : 64;
 		c->out = sw_xrealloc(c->out, sizeof *c->out * (size_t)c->cap);

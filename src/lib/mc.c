@@ -12,12 +12,9 @@
  * signal handler may set it; waits are timed (100 ms) so that a stop is
  * noticed without a signal-unsafe broadcast.
  *
- * Random streams: sample i of a run with seed s draws from its own
- * xoshiro256** generator, whose 256-bit state splitmix64 expands from
- * the sample's 64-bit seed mix(mix(s) ^ i).  Every step is a bijection of
- * 64 bits, so two samples of one run never share a stream (GSL's
- * mt19937, used before, kept 32 bits of that seed: a million samples
- * held about 116 identical pairs).
+ * Random input: sample i's draw (draw.h: its contact points and
+ * friction) is made from (seed, i) alone by draw_make, or read from a
+ * replayed samples file's table, in the worker that computes it.
  *
  * Estimate (mc_sample_seconds).  A sample's time grows with the wall
  * faster than linearly: the LPs have rows and columns in proportion to
@@ -86,72 +83,6 @@ struct mc {
 	int nextid;
 };
 
-/* splitmix64's finaliser: a bijection of 64 bits */
-static uint64_t mix(uint64_t z)
-{
-	z += 0x9e3779b97f4a7c15ULL;
-	z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-	return z ^ (z >> 31);
-}
-
-void mc_rng_seed(struct mc_rng *r, unsigned long seed, unsigned long index)
-{
-	uint64_t x = mix(mix((uint64_t)seed) ^ (uint64_t)index);
-	/* splitmix64 expands the sample seed into the state: its outputs
-	 * mix(x), mix(x + g), ... (each a bijection of x, so the state is
-	 * never all zero) */
-	for (int k = 0; k < 4; k++) {
-		r->s[k] = mix(x);
-		x += 0x9e3779b97f4a7c15ULL;
-	}
-}
-
-static uint64_t rotl(uint64_t x, int k)
-{
-	return (x << k) | (x >> (64 - k));
-}
-
-uint64_t mc_rng_next(struct mc_rng *r)
-{
-	uint64_t *s = r->s;
-	uint64_t out = rotl(s[1] * 5, 7) * 9, t = s[1] << 17;
-	s[2] ^= s[0];
-	s[3] ^= s[1];
-	s[1] ^= s[2];
-	s[0] ^= s[3];
-	s[2] ^= t;
-	s[3] = rotl(s[3], 45);
-	return out;
-}
-
-double mc_rng_uniform(struct mc_rng *r)
-{
-	return (double)(mc_rng_next(r) >> 11) * 0x1.0p-53;
-}
-
-void mc_positions(const struct wall *w, unsigned long seed,
-		  unsigned long index, double depth, double *xi)
-{
-	struct mc_rng r;
-	mc_rng_seed(&r, seed, index);
-	if (depth < 0)
-		depth = w->depth;
-	for (int k = 0; k < w->nifaces; k++) {
-		/* two uniforms per interface, always drawn, so that the
-		 * positions are continuous in the depth (common random
-		 * numbers for --fit-depth) */
-		double u1 = mc_rng_uniform(&r), u2 = mc_rng_uniform(&r);
-		if (w->anywhere) {
-			xi[2 * k] = fmin(u1, u2);
-			xi[2 * k + 1] = fmax(u1, u2);
-		} else {
-			xi[2 * k] = depth * u1;
-			xi[2 * k + 1] = 1 - depth * u2;
-		}
-	}
-}
-
 void mc_config_default(struct mc_config *c, const struct wall *w)
 {
 	memset(c, 0, sizeof *c);
@@ -203,7 +134,6 @@ static void *worker(void *arg)
 	struct record it;
 	sample_result_init(&r, w);
 	record_init(&it, w);
-	size_t nxi = 2 * (size_t)w->nifaces;
 
 	for (;;) {
 		pthread_mutex_lock(&m->mu);
@@ -223,14 +153,13 @@ static void *worker(void *arg)
 		pthread_mutex_unlock(&m->mu);
 		long i = m->cfg.first + k * m->cfg.stride;
 
-		if (m->cfg.positions)
-			memcpy(it.xi, m->cfg.positions + (size_t)i * nxi,
-			       sizeof(double) * nxi);
+		if (m->cfg.replay)
+			draw_from_table(&it.draw, w, m->cfg.replay, i);
 		else
-			mc_positions(w, m->cfg.seed, (unsigned long)i,
-				     m->cfg.depth, it.xi);
+			draw_make(&it.draw, w, m->cfg.seed, (unsigned long)i,
+				  m->cfg.depth);
 		double t0 = sys_now();
-		sample_run(ws, it.xi, &m->cfg.opts, &r);
+		sample_run(ws, &it.draw, &m->cfg.opts, &r);
 		if (lp_thread_interrupted())
 			break;	/* incomplete: never reported (mc_pop ends
 				 * at its index once the workers are gone) */

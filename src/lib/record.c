@@ -12,9 +12,15 @@
 _Static_assert(RECORD_FIXED == sizeof(long) + 4 * sizeof(int) +
 	       5 * sizeof(double), "struct record: padding in the fixed part");
 
+/* the draw's numbers: xi, then mu */
 static size_t nxi(const struct wall *w)
 {
 	return 2 * (size_t)w->nifaces;
+}
+
+static size_t nmu(const struct wall *w)
+{
+	return (size_t)w->nifaces;
 }
 
 static size_t nvel(const struct wall *w)
@@ -25,14 +31,14 @@ static size_t nvel(const struct wall *w)
 void record_init(struct record *r, const struct wall *w)
 {
 	memset(r, 0, sizeof *r);
-	r->xi = sw_xcalloc(nxi(w) + 1, sizeof(double));
+	draw_init(&r->draw, w);
 	r->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
 	r->vel = sw_xcalloc(nvel(w) + 1, sizeof(double));
 }
 
 void record_free(struct record *r)
 {
-	free(r->xi);
+	draw_free(&r->draw);
 	free(r->joint);
 	free(r->vel);
 	memset(r, 0, sizeof *r);
@@ -42,7 +48,7 @@ void record_copy(struct record *dst, const struct record *src,
 		 const struct wall *w)
 {
 	memcpy(dst, src, RECORD_FIXED);
-	memcpy(dst->xi, src->xi, sizeof(double) * nxi(w));
+	draw_copy(&dst->draw, &src->draw);
 	memcpy(dst->vel, src->vel, sizeof(double) * nvel(w));
 	memcpy(dst->joint, src->joint, (size_t)w->nifaces + 1);
 }
@@ -70,7 +76,7 @@ void record_set(struct record *r, long index, const struct sample_result *res,
 
 size_t record_wire_size(const struct wall *w)
 {
-	return RECORD_FIXED + sizeof(double) * (nxi(w) + nvel(w)) +
+	return RECORD_FIXED + sizeof(double) * (nxi(w) + nmu(w) + nvel(w)) +
 	       (size_t)w->nifaces + 1;
 }
 
@@ -80,7 +86,9 @@ void record_pack(const struct record *r, const struct wall *w,
 	size_t sx = sizeof(double) * nxi(w), sv = sizeof(double) * nvel(w);
 	memcpy(b, r, RECORD_FIXED);
 	b += RECORD_FIXED;
-	memcpy(b, r->xi, sx);
+	memcpy(b, r->draw.xi, sx);
+	memcpy(b + sx, r->draw.mu, sizeof(double) * nmu(w));
+	b += sizeof(double) * nmu(w);
 	memcpy(b + sx, r->vel, sv);
 	memcpy(b + sx + sv, r->joint, (size_t)w->nifaces + 1);
 }
@@ -91,7 +99,9 @@ void record_unpack(struct record *r, const struct wall *w,
 	size_t sx = sizeof(double) * nxi(w), sv = sizeof(double) * nvel(w);
 	memcpy(r, b, RECORD_FIXED);
 	b += RECORD_FIXED;
-	memcpy(r->xi, b, sx);
+	memcpy(r->draw.xi, b, sx);
+	memcpy(r->draw.mu, b + sx, sizeof(double) * nmu(w));
+	b += sizeof(double) * nmu(w);
 	memcpy(r->vel, b + sx, sv);
 	memcpy(r->joint, b + sx + sv, (size_t)w->nifaces + 1);
 	r->joint[w->nifaces] = 0;

@@ -33,6 +33,7 @@ struct runlog {
 	char *path;
 	int fd;
 	int nifaces;
+	int mu;			/* rows have the draw's friction (mu_k) */
 	int failed;		/* a write failed: close reports it */
 	char *buf;		/* the row being formatted */
 	size_t len, cap;
@@ -144,6 +145,13 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 		int n = snprintf(tmp, sizeof tmp, ",xa_%d,xb_%d", k, k);
 		put(l, tmp, (size_t)n);
 	}
+	/* random friction: each sample's draw has it (draw.h) */
+	l->mu = w->mu_cov > 0;
+	for (int k = 1; l->mu && k <= w->nifaces; k++) {
+		char tmp[48];
+		int n = snprintf(tmp, sizeof tmp, ",mu_%d", k);
+		put(l, tmp, (size_t)n);
+	}
 	put(l, "\n", 1);
 	enum sw_status rc = flush_row(l, err);
 	if (rc != SW_OK) {
@@ -171,7 +179,11 @@ enum sw_status runlog_write(struct runlog *l, const struct record *it,
 	put(l, tmp, (size_t)n);
 	for (int k = 0; k < 2 * l->nifaces; k++) {
 		put(l, ",", 1);
-		put_num(l, it->xi[k]);
+		put_num(l, it->draw.xi[k]);
+	}
+	for (int k = 0; l->mu && k < l->nifaces; k++) {
+		put(l, ",", 1);
+		put_num(l, it->draw.mu[k]);
 	}
 	put(l, "\n", 1);
 	return flush_row(l, err);
@@ -227,6 +239,7 @@ struct reader {
 	char **field;
 	int *col;
 	int nfield, capfield;
+	int nmu;		/* the header's mu_k columns: 0 or its m */
 };
 
 static int reader_open(struct reader *r, const char *path, char *err)
@@ -329,8 +342,9 @@ static enum sw_status at(const struct reader *r, int field, char *err,
 		       (int)r->len + 1, what);
 }
 
-/* Check the header: the five fixed columns, then xa_k,xb_k pairs.
- * *m gets the number of interfaces. */
+/* Check the header: the five fixed columns, then xa_k,xb_k pairs, then
+ * (random friction) mu_k for every k.  *m gets the number of interfaces,
+ * r->nmu the mu columns'. */
 static enum sw_status read_header(struct reader *r, int *m, char *err)
 {
 	int got = reader_next(r, err);
@@ -350,6 +364,26 @@ static enum sw_status read_header(struct reader *r, int *m, char *err)
 		}
 	}
 	int extra = r->nfield - FIXED_COLS;
+	int npos = extra;	/* the xa_k,xb_k columns: up to the first mu_ */
+	for (int k = 0; k < extra; k++)
+		if (!strncmp(r->field[FIXED_COLS + k], "mu_", 3)) {
+			npos = k;
+			break;
+		}
+	if (npos != extra && 2 * (extra - npos) != npos)
+		return at(r, FIXED_COLS + npos, err, "the frictions mu_k "
+			  "come one per interface, after its positions");
+	r->nmu = extra - npos;
+	for (int k = 0; k < r->nmu; k++) {
+		char want[48];
+		snprintf(want, sizeof want, "mu_%d", k + 1);
+		if (strcmp(r->field[FIXED_COLS + npos + k], want)) {
+			char msg[96];
+			snprintf(msg, sizeof msg, "expected column '%s'", want);
+			return at(r, FIXED_COLS + npos + k, err, msg);
+		}
+	}
+	extra = npos;
 	if (extra % 2)
 		return at(r, r->nfield - 1, err,
 			  "the contact positions come in xa_k,xb_k pairs");
@@ -364,7 +398,8 @@ static enum sw_status read_header(struct reader *r, int *m, char *err)
 		}
 	}
 	*m = extra / 2;
-	r->max = 64 + ROW_FIELD_MAX * ((size_t)FIXED_COLS + (size_t)extra);
+	r->max = 64 + ROW_FIELD_MAX * ((size_t)FIXED_COLS + (size_t)extra +
+				       (size_t)r->nmu);
 	return SW_OK;
 }
 
@@ -385,14 +420,13 @@ static int parse_num(const char *s, double *v)
 static enum sw_status check_row(struct reader *r, int m, int *status,
 				char *err)
 {
-	if (r->nfield != FIXED_COLS + 2 * m) {
+	int want = FIXED_COLS + 2 * m + r->nmu;
+	if (r->nfield != want) {
 		char msg[128];
 		snprintf(msg, sizeof msg, "%d fields, the header has %d%s",
-			 r->nfield, FIXED_COLS + 2 * m,
-			 r->nfield < FIXED_COLS + 2 * m ?
-			 " (an incomplete row?)" : "");
-		return at(r, r->nfield < FIXED_COLS + 2 * m ? r->nfield :
-			  FIXED_COLS + 2 * m, err, msg);
+			 r->nfield, want,
+			 r->nfield < want ? " (an incomplete row?)" : "");
+		return at(r, r->nfield < want ? r->nfield : want, err, msg);
 	}
 	*status = sample_status_parse(r->field[1]);
 	if (*status < 0)
@@ -444,16 +478,19 @@ static enum sw_status reader_start(struct reader *r, const char *path,
 	return st == SW_OK ? check_wall(r, *m, w, err) : st;
 }
 
-enum sw_status runlog_read_positions(const char *path, const struct wall *w,
-				     double **xi, long *rows, char *warn,
-				     char *err)
+enum sw_status runlog_read_draws(const char *path, const struct wall *w,
+				 struct draw_table *t, char *warn, char *err)
 {
 	struct reader r;
 	int m;
 	enum sw_status st = reader_start(&r, path, w, &m, err);
-	double *x = NULL;
+	double *x = NULL, *mu = NULL;
 	long n = 0, cap = 0;
-	size_t per = 2 * (size_t)m;
+	size_t per = 2 * (size_t)m + (size_t)r.nmu;
+	if (st == SW_OK && w->mu_cov > 0 && !r.nmu)
+		st = sw_fail(err, SW_EINPUT, "%s:1:1: the wall's friction is "
+			     "random (cov %g) but the file has no friction "
+			     "columns (mu_k) to replay", path, w->mu_cov);
 	while (st == SW_OK) {
 		int got = reader_next(&r, err);
 		if (got <= 0) {
@@ -467,9 +504,13 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 			break;
 		if (n == cap) {
 			cap = cap ? 2 * cap : 256;
-			x = sw_xrealloc(x, sizeof(double) * per * (size_t)cap + 1);
+			x = sw_xrealloc(x, sizeof(double) * 2 * (size_t)m *
+					       (size_t)cap + 1);
+			if (r.nmu)
+				mu = sw_xrealloc(mu, sizeof(double) * (size_t)m *
+						 (size_t)cap + 1);
 		}
-		double *row = x + per * (size_t)n;
+		double *row = x + 2 * (size_t)m * (size_t)n;
 		for (int k = 0; k < 2 * m && st == SW_OK; k++) {
 			double v = 0;
 			if (parse_num(r.field[FIXED_COLS + k], &v))
@@ -484,6 +525,15 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 					"xb must not be less than xa");
 			row[k] = v;
 		}
+		for (int k = 0; k < r.nmu && st == SW_OK; k++) {
+			double v = 0;
+			int c = FIXED_COLS + 2 * m + k;
+			if (parse_num(r.field[c], &v) || v < 0 ||
+			    v > WALL_FRICTION_MAX)
+				st = at(&r, c, err, "a friction must be a "
+					"number from 0 to 1000");
+			mu[(size_t)m * (size_t)n + (size_t)k] = v;
+		}
 		n++;
 	}
 	if (st == SW_OK && n == 0)
@@ -493,10 +543,12 @@ enum sw_status runlog_read_positions(const char *path, const struct wall *w,
 	reader_close(&r);
 	if (st != SW_OK) {
 		free(x);
+		free(mu);
 		return st;
 	}
-	*xi = x;
-	*rows = n;
+	t->xi = x;
+	t->mu = mu;
+	t->rows = n;
 	return SW_OK;
 }
 

@@ -209,7 +209,6 @@ struct sample_ws {
 	 * solves of a role only bounds change and GLPK keeps its basis */
 	struct lp *lp[ROLES];
 	double *c;		/* m: SLP capacities (sum of normal forces) */
-	double *mu;		/* m: the interfaces' friction */
 	double *cstar;		/* m: a piece's fixed point (slp) */
 	double *fallback;	/* m: where a failed jump goes on (slp) */
 	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
@@ -440,7 +439,7 @@ static void build(struct sample_ws *ws)
 	write_points(ws);
 }
 
-static void set_points(struct sample_ws *ws, const double *xi);
+static void set_points(struct sample_ws *ws, const struct sample_draw *d);
 
 /* Solve one sample at the classical contact (xi = 0, 1) from the freshly
  * built problems and keep the basis each role ended at: the start of
@@ -453,19 +452,17 @@ static void canonical_bases(struct sample_ws *ws)
 	struct sample_result r;
 	sample_opts_default(&o);
 	sample_result_init(&r, ws->w);
-	double *xi = sw_xmalloc(sizeof(double) * (2 * (size_t)ws->m + 1));
-	for (int k = 0; k < ws->m; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
+	struct sample_draw d;
+	draw_init(&d, ws->w);
+	draw_mean(&d, ws->w);	/* the classical contact, mean friction */
 	ws->setup = 1;
-	sample_run(ws, xi, &o, &r);
+	sample_run(ws, &d, &o, &r);
 	ws->setup = 0;
 	/* interrupted (lp_thread_stop_flag): the problems are dead and the
 	 * workspace is only fit to be freed; lp_basis_save skips them */
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_save(ws->lp[p], &ws->canon[p]);
-	free(xi);
+	draw_free(&d);
 	sample_result_free(&r);
 }
 
@@ -489,9 +486,6 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
 	ws->cstar = sw_xcalloc(m + 1, sizeof(double));
 	ws->fallback = sw_xcalloc(m + 1, sizeof(double));
-	ws->mu = sw_xcalloc(m + 1, sizeof(double));
-	for (int k = 0; k < ws->m; k++)
-		ws->mu[k] = w->ifaces[k].mu;
 	for (int i = 0; i <= SLP_MEMORY; i++) {
 		ws->hist.c[i] = sw_xcalloc(m + 1, sizeof(double));
 		ws->hist.f[i] = sw_xcalloc(m + 1, sizeof(double));
@@ -533,7 +527,6 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->c0);
 	free(ws->cstar);
 	free(ws->fallback);
-	free(ws->mu);
 	for (int i = 0; i <= SLP_MEMORY; i++) {
 		free(ws->hist.c[i]);
 		free(ws->hist.f[i]);
@@ -797,10 +790,10 @@ static enum sample_start role_start(const struct sample_ws *ws, int p)
  * `previous` takes the problems back to a fresh state before it writes
  * the points (refill: no basis, no factorization kept from the last
  * sample). */
-static void set_points(struct sample_ws *ws, const double *xi)
+static void set_points(struct sample_ws *ws, const struct sample_draw *d)
 {
-	statics_set_points(&ws->st, xi);
-	tie_weights(ws, xi);
+	statics_set_draw(&ws->st, d);
+	tie_weights(ws, d->xi);
 	if (ws->start == SAMPLE_START_PREVIOUS) {
 		for (int j = 0; j < 3 * ws->m; j++)
 			put_column(ws, j);
@@ -870,7 +863,7 @@ static void assoc_field(const struct sample_ws *ws, const struct lp *P,
 			double *x)
 {
 	for (int k = 0; k < ws->m; k++) {
-		double mu = ws->w->ifaces[k].mu, t = 0;
+		double mu = ws->st.mu[k], t = 0;
 		for (int e = 0; e < 2; e++) {
 			double a = lp_col(P, ACOL_ALPHA(k, e));
 			double b = lp_col(P, ACOL_BETA(k, e));
@@ -954,7 +947,7 @@ static enum sample_status standing(struct sample_ws *ws,
 /* The shear capacity mu_k c_k of interface k in the SLP. */
 static double capacity(const struct sample_ws *ws, int k)
 {
-	return ws->w->ifaces[k].mu * fmax(ws->c[k], 0);
+	return ws->st.mu[k] * fmax(ws->c[k], 0);
 }
 
 /* LP2's feasible set: LP1's optimal face.  A column that is non-basic in
@@ -1254,7 +1247,7 @@ static int piece_jump(struct sample_ws *ws)
 {
 	struct piece pc = {
 		.m = ws->m, .R = ws->R, .closeness = ws->slp_lp == LP2,
-		.mu = ws->mu,
+		.mu = ws->st.mu,
 	};
 	if (piece_fixed_point(ws->lp[ws->slp_lp], &pc, ws->c, ws->cstar))
 		return -1;
@@ -1511,7 +1504,7 @@ static double virtual_work(const struct sample_ws *ws, double lam)
 		fd += ws->st.fD[i] * ws->v[i];
 	}
 	for (int k = 0; k < ws->m; k++)
-		diss += ws->w->ifaces[k].mu * (ws->x[3 * k] + ws->x[3 * k + 1]) *
+		diss += ws->st.mu[k] * (ws->x[3 * k] + ws->x[3 * k + 1]) *
 			fabs(ws->dt[k]);
 	double lhs = lam * fl, rhs = diss - fd;
 	double scale = fmax(fabs(lhs), fmax(fabs(rhs), fabs(fd)));
@@ -1558,10 +1551,10 @@ static void export(struct sample_ws *ws, struct sample_result *r)
 	r->joint[ws->m] = 0;
 }
 
-/* A sample's result, reset, and its problems built at the points xi;
+/* A sample's result, reset, and its problems built for its draw d;
  * forces: it reports its stress field. */
-static void begin(struct sample_ws *ws, const double *xi, int forces,
-		  struct sample_result *r)
+static void begin(struct sample_ws *ws, const struct sample_draw *d,
+		  int forces, struct sample_result *r)
 {
 	ws->forces = forces;
 	r->status = SAMPLE_NUMERICAL;
@@ -1570,7 +1563,7 @@ static void begin(struct sample_ws *ws, const double *xi, int forces,
 	r->converged = 0;
 	r->lps = 0;
 	r->vw_residual = NAN;
-	set_points(ws, xi);
+	set_points(ws, d);
 }
 
 /* After step 3 found a mechanism (st accepted): LP-min, the virtual work
@@ -1613,10 +1606,10 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->status = st;
 }
 
-void sample_run(struct sample_ws *ws, const double *xi,
+void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		const struct sample_opts *o, struct sample_result *r)
 {
-	begin(ws, xi, o->forces, r);
+	begin(ws, d, o->forces, r);
 	enum sample_status st = lp_max(ws, r, NULL);
 	if (st == SAMPLE_ACCEPTED)
 		st = standing(ws, r);
@@ -1627,12 +1620,13 @@ void sample_run(struct sample_ws *ws, const double *xi,
 	finish(ws, st, r);
 }
 
-enum sample_status sample_pattern(struct sample_ws *ws, const double *xi,
+enum sample_status sample_pattern(struct sample_ws *ws,
+				  const struct sample_draw *d,
 				  const unsigned char *open,
 				  const unsigned char *slip,
 				  struct sample_result *r)
 {
-	begin(ws, xi, 1, r);
+	begin(ws, d, 1, r);
 	struct lp *K = ws->lp[KIN];
 	for (int k = 0; k < ws->m; k++) {
 		for (int e = 0; e < 2; e++)
@@ -1666,12 +1660,13 @@ void sample_export(struct sample_ws *ws, const double *v, const double *x,
 	export(ws, r);
 }
 
-enum sample_status sample_standard(struct sample_ws *ws, const double *xi,
+enum sample_status sample_standard(struct sample_ws *ws,
+				   const struct sample_draw *d,
 				   struct sample_result *r)
 {
 	r->lps = 0;
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
-	set_points(ws, xi);
+	set_points(ws, d);
 	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
 	 * that f_L . v = 1; the stress field: LP-max's, by the tie-break */
 	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));

@@ -164,7 +164,7 @@ static double max_total_normal(const struct statics *st, double lam_hi)
 		lp_set_row_bounds(P, i, -st->fD[i], -st->fD[i]);
 	for (int j = 0; j < 3 * m; j++) {
 		int k = j / 3, n = statics_column(st, j, rows, vals);
-		double mu = w->ifaces[k].mu;
+		double mu = st->mu[k];
 		if (j % 3 == 2) {
 			rows[n] = R + 2 * k;
 			vals[n++] = 1;
@@ -231,7 +231,7 @@ static void global_statics(struct lp *P, const struct glayout *gp,
 	double vals[16];
 	for (int j = 0; j < 3 * m; j++) {
 		int k = j / 3, e = j % 3, n = statics_column(st, j, rows, vals);
-		double mu = w->ifaces[k].mu;
+		double mu = st->mu[k];
 		if (e == 2) {
 			rows[n] = g.fr + 2 * k; vals[n++] = 1;
 			rows[n] = g.fr + 2 * k + 1; vals[n++] = -1;
@@ -383,7 +383,8 @@ static void global_binaries(struct lp *P, const struct glayout *gp, int m,
  * top) into r; SW_OK, or SW_EANALYSIS with the message. */
 static enum sw_status global_result(struct lp *P, const struct glayout *gp,
 				    enum lp_mip_status ms, double gap,
-				    struct sample_ws *ws, const double *xi,
+				    struct sample_ws *ws,
+				    const struct sample_draw *d,
 				    double lam_std, struct solve_result *r,
 				    double time_limit, char *err)
 {
@@ -414,7 +415,7 @@ static enum sw_status global_result(struct lp *P, const struct glayout *gp,
 		r->mip_optimal = ms == LP_MIP_OPTIMAL;
 		r->lower_bound = ms == LP_MIP_OPTIMAL ? lam_mip
 			: lam_mip - (isfinite(gap) ? gap : 1) * fabs(lam_mip);
-		enum sample_status s = sample_pattern(ws, xi, open, slip,
+		enum sample_status s = sample_pattern(ws, d, open, slip,
 						      &r->mech);
 		free(open);
 		free(slip);
@@ -455,7 +456,8 @@ static enum sw_status global_result(struct lp *P, const struct glayout *gp,
 
 static enum sw_status solve_global(const struct wall *w,
 				   const struct solve_opts *o,
-				   struct sample_ws *ws, const double *xi,
+				   struct sample_ws *ws,
+				   const struct sample_draw *d,
 				   double lam_std, struct solve_result *r,
 				   char *err, struct progress *prog)
 {
@@ -471,7 +473,7 @@ static enum sw_status solve_global(const struct wall *w,
 	M = M * (1 + 1e-6) + 1e-9;
 	double mumax = 0;
 	for (int k = 0; k < m; k++)
-		mumax = fmax(mumax, w->ifaces[k].mu);
+		mumax = fmax(mumax, st->mu[k]);
 	double Mf = 2 * mumax * M + 1e-9;
 
 	struct lp *P = lp_new(g.nrows, g.ncols);
@@ -486,7 +488,7 @@ static enum sw_status solve_global(const struct wall *w,
 	enum lp_mip_status ms = lp_solve_mip(P, o->time_limit, &gap);
 	prog->scale = 1;
 	prog->what = "the exact LPs of its pattern";
-	enum sw_status ret = global_result(P, &g, ms, gap, ws, xi, lam_std, r,
+	enum sw_status ret = global_result(P, &g, ms, gap, ws, d, lam_std, r,
 					   o->time_limit, err);
 	lp_free(P);
 	return ret;
@@ -510,14 +512,13 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		lp_thread_progress(progress, &prog);
 	sample_result_init(&r->mech, w);
 	struct sample_ws *ws = sample_ws_new(w);
-	double *xi = sw_xmalloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	for (int k = 0; k < w->nifaces; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
+	/* the classical contact, the wall's (mean) friction */
+	struct sample_draw d;
+	draw_init(&d, w);
+	draw_mean(&d, w);
 	enum sw_status ret = SW_OK;
 	/* every method starts from the standard solution */
-	enum sample_status s = sample_standard(ws, xi, &r->mech);
+	enum sample_status s = sample_standard(ws, &d, &r->mech);
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
 		ret = failure(s, r->mech.lambda_lpmax, err);
@@ -531,7 +532,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		break;
 	case SOLVE_GILBERT:
 		prog.what = "the sequential LP and its onset check";
-		sample_run(ws, xi, &o->sample, &r->mech);
+		sample_run(ws, &d, &o->sample, &r->mech);
 		r->status = r->mech.status;
 		r->iterations = r->mech.iterations;
 		r->converged = r->mech.converged;
@@ -544,7 +545,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			ret = failure(r->status, r->mech.lambda_lpmax, err);
 		break;
 	case SOLVE_GLOBAL:
-		ret = solve_global(w, o, ws, xi, lam_std, r, err, &prog);
+		ret = solve_global(w, o, ws, &d, lam_std, r, err, &prog);
 		break;
 	}
 out:
@@ -559,7 +560,7 @@ out:
 	if (o->stop)
 		lp_thread_stop_flag(NULL);
 	r->seconds = sys_now() - t0;
-	free(xi);
+	draw_free(&d);
 	sample_ws_free(ws);
 	/* the solver's environment of this thread goes with its last
 	 * problem: callers (the batch commands' main thread, the

@@ -76,13 +76,12 @@ void statics_init(struct statics *s, const struct wall *w)
 		if (!b->fixed)
 			s->fD[3 * b->eq + 1] = -b->weight / s->F;
 	}
-	double *xi = sw_xmalloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	for (int k = 0; k < w->nifaces; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
-	statics_set_points(s, xi);
-	free(xi);
+	s->mu = sw_xcalloc((size_t)w->nifaces + 1, sizeof(double));
+	struct sample_draw d;
+	draw_init(&d, w);
+	draw_mean(&d, w);
+	statics_set_draw(s, &d);
+	draw_free(&d);
 }
 
 void statics_free(struct statics *s)
@@ -91,16 +90,18 @@ void statics_free(struct statics *s)
 	free(s->fD);
 	free(s->q);
 	free(s->xi);
+	free(s->mu);
 	memset(s, 0, sizeof *s);
 }
 
-void statics_set_points(struct statics *s, const double *xi)
+void statics_set_draw(struct statics *s, const struct sample_draw *d)
 {
 	const struct wall *w = s->w;
 	for (int k = 0; k < w->nifaces; k++) {
 		const struct wall_interface *it = &w->ifaces[k];
+		s->mu[k] = d->mu[k];
 		for (int e = 0; e < 2; e++) {
-			double x = xi[2 * k + e];
+			double x = d->xi[2 * k + e];
 			s->xi[2 * k + e] = x;
 			s->q[4 * k + 2 * e] = it->p1[0] + x * (it->p2[0] - it->p1[0]);
 			s->q[4 * k + 2 * e + 1] = it->p1[1] + x * (it->p2[1] - it->p1[1]);
@@ -142,7 +143,7 @@ int statics_edge_column(const struct statics *s, int k, int e, int sgn,
 	double tvals[6];
 	int n = statics_column(s, 3 * k + e, rows, vals);
 	int tn = statics_column(s, 3 * k + 2, trows, tvals);
-	double mu = s->w->ifaces[k].mu;
+	double mu = s->mu[k];
 	/* the shear's column has the normal's rows, in the same order */
 	for (int i = 0; i < n && i < tn; i++)
 		vals[i] += (sgn ? -mu : mu) * tvals[i];

@@ -26,6 +26,7 @@
 #ifndef SLIPWALL_STATICS_H
 #define SLIPWALL_STATICS_H
 
+#include "slipwall/draw.h"
 #include "slipwall/wall.h"
 
 struct statics {
@@ -36,13 +37,16 @@ struct statics {
 	double *fL, *fD;	/* nrows each, scaled: live and dead loads */
 	double *q;		/* 4 * nifaces: q_a (x, y), q_b (x, y) */
 	double *xi;		/* 2 * nifaces: xi_a, xi_b */
+	double *mu;		/* nifaces: each interface's friction */
 };
 
 void statics_init(struct statics *s, const struct wall *w);
 void statics_free(struct statics *s);
 
-/* Place the contact points: xi[2k], xi[2k+1] for interface k. */
-void statics_set_points(struct statics *s, const double *xi);
+/* A sample's draw: its contact points (xi[2k], xi[2k+1] for interface
+ * k) and its friction (mu[k]).  statics_init sets the classical contact
+ * and the wall's mean friction (draw_mean). */
+void statics_set_draw(struct statics *s, const struct sample_draw *d);
 
 /* The non-zeros of column j of A (scaled): at most 6; rows are 0-based
  * equation numbers.  Returns the count. */

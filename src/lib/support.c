@@ -105,7 +105,7 @@ struct pick {
  * point, or three points of one joint), or by shearing two joints in
  * opposite directions, which pushes the blocks beneath sideways (and
  * those beneath them) for nothing. */
-static double net_shear(const struct wall *w, const int *col,
+static double net_shear(const struct statics *st, const int *col,
 			const struct pick *p)
 {
 	double total = 0;
@@ -119,7 +119,7 @@ static double net_shear(const struct wall *w, const int *col,
 		for (int u = s; u < 3; u++)
 			if (col[p->t[u]] / 4 == k)
 				net += (col[p->t[u]] % 2 ? -1 : 1) *
-				       w->ifaces[k].mu * p->y[u];
+				       st->mu[k] * p->y[u];
 		total += fabs(net);
 	}
 	return total;
@@ -221,7 +221,7 @@ int support_basis(const struct statics *st, unsigned char *basic)
 					if (!solve3(cc, &rhs[3 * q], p.y))
 						continue;
 					p.least = fmin(p.y[0], fmin(p.y[1], p.y[2]));
-					p.shear = net_shear(w, col, &p);
+					p.shear = net_shear(st, col, &p);
 					if (better(&p, &best, tol))
 						best = p;
 				}

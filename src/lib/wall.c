@@ -143,6 +143,11 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
 	return h;
 }
 
+double wall_iface_mu(const struct wall *w, int k)
+{
+	return w->ifaces[k].kind == JOINT_HEAD ? w->mu_head : w->mu_bed;
+}
+
 void wall_digest(const struct wall *w, char *out)
 {
 	uint64_t h = 14695981039346656037ULL;
@@ -161,8 +166,11 @@ void wall_digest(const struct wall *w, char *out)
 		h = fnv(h, ab, sizeof ab);
 		h = fnv(h, f->p1, sizeof f->p1);
 		h = fnv(h, f->p2, sizeof f->p2);
-		h = fnv(h, &f->mu, sizeof f->mu);
+		double mu = wall_iface_mu(w, k);
+		h = fnv(h, &mu, sizeof mu);
 	}
+	if (w->mu_cov > 0)	/* only then: digests of fixed friction stay */
+		h = fnv(h, &w->mu_cov, sizeof w->mu_cov);
 	h = fnv(h, &w->nloads, sizeof w->nloads);
 	for (int l = 0; l < w->nloads; l++) {
 		const struct wall_load *ld = &w->loads[l];

@@ -492,8 +492,8 @@ static int read_material(struct reader *r, yaml_node_t *n)
 {
 	static const char *const keys[] = {"friction", "unit_weight",
 					   "thickness", NULL};
-	static const char *const fkeys[] = {"bed", "head", NULL};
-	yaml_node_t *v[3], *f[2];
+	static const char *const fkeys[] = {"bed", "head", "cov", NULL};
+	yaml_node_t *v[3], *f[3];
 	struct wall *w = r->w;
 
 	if (reader_map(r, n, "material", keys, v))
@@ -512,6 +512,10 @@ static int read_material(struct reader *r, yaml_node_t *n)
 			return -1;
 		w->friction_mark[0] = mark_of(f[0]);
 		w->friction_mark[1] = mark_of(f[1]);
+		/* friction as a random variable (docs/wall-format.md) */
+		if (f[2] && reader_number_in(r, f[2], "friction (cov)", 0, 0,
+					     WALL_COV_MAX, &w->mu_cov))
+			return -1;
 	} else if (v[0]) {
 		if (reader_number_in(r, v[0], "friction", 0, 0, INFINITY,
 				     &w->mu_bed))
@@ -1530,8 +1534,11 @@ static void save_wall(FILE *f, const struct wall *w)
 	}
 	struct save_nums ns = {.k = 0};
 	fprintf(f, "material:\n");
-	fprintf(f, "  friction: {bed: %s, head: %s}\n", num(&ns, w->mu_bed),
+	fprintf(f, "  friction: {bed: %s, head: %s", num(&ns, w->mu_bed),
 		num(&ns, w->mu_head));
+	if (w->mu_cov > 0)
+		fprintf(f, ", cov: %s", num(&ns, w->mu_cov));
+	fprintf(f, "}\n");
 	fprintf(f, "  unit_weight: %s\n", num(&ns, w->unit_weight));
 	fprintf(f, "  thickness: %s\n", num(&ns, w->thickness));
 

@@ -158,7 +158,7 @@ static void test_lp_singular(void)
 struct one_sample {
 	struct sample_opts o;
 	struct sample_result r0, r;
-	double *xi;
+	struct sample_draw dr;
 	struct sample_ws *ws;
 };
 
@@ -168,16 +168,17 @@ static void one_sample_init(struct one_sample *x, const struct wall *w,
 	sample_opts_default(&x->o);
 	sample_result_init(&x->r0, w);
 	sample_result_init(&x->r, w);
-	x->xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	mc_positions(w, 1, index, -1, x->xi);
+	draw_init(&x->dr, w);
+	draw_mean(&x->dr, w);
+	draw_make(&x->dr, w, 1, index, -1);
 	x->ws = sample_ws_new(w);
-	sample_run(x->ws, x->xi, &x->o, &x->r0);
+	sample_run(x->ws, &x->dr, &x->o, &x->r0);
 }
 
 /* x->r again, and is it the clean sample bit for bit? */
 static int one_sample_clean(struct one_sample *x)
 {
-	sample_run(x->ws, x->xi, &x->o, &x->r);
+	sample_run(x->ws, &x->dr, &x->o, &x->r);
 	return x->r.status == SAMPLE_ACCEPTED &&
 	       x->r.lambda_min == x->r0.lambda_min &&
 	       x->r.lambda_max == x->r0.lambda_max &&
@@ -190,7 +191,7 @@ static void one_sample_free(struct one_sample *x)
 	sample_ws_free(x->ws);
 	sample_result_free(&x->r0);
 	sample_result_free(&x->r);
-	free(x->xi);
+	draw_free(&x->dr);
 }
 
 /* The n-th LP of one sample fails, for every n: numerical, then the
@@ -206,7 +207,7 @@ static void test_sample_faults(const struct wall *w, enum lp_status as)
 		int numerical = 0, recovered = 0;
 		for (int n = 1; n <= lps; n++) {
 			lp_fault_set(n, as);
-			sample_run(x.ws, x.xi, &x.o, &x.r);
+			sample_run(x.ws, &x.dr, &x.o, &x.r);
 			numerical += x.r.status == SAMPLE_NUMERICAL;
 			lp_fault_set(0, LP_FAILED);
 			recovered += one_sample_clean(&x);
@@ -259,7 +260,7 @@ static void test_iteration_limit(const struct wall *w)
 	struct one_sample x;
 	one_sample_init(&x, w, 3);
 	lp_thread_iteration_limit(2);
-	sample_run(x.ws, x.xi, &x.o, &x.r);
+	sample_run(x.ws, &x.dr, &x.o, &x.r);
 	enum sample_status limited = x.r.status;
 	lp_thread_iteration_limit(0);
 	int clean = one_sample_clean(&x);
@@ -291,19 +292,21 @@ static void sample_at_scale(double f, int point, struct sample_result *rs)
 	tw_finish(w);
 	struct sample_opts o;
 	sample_opts_default(&o);
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_draw dr;
+	draw_init(&dr, w);
+	draw_mean(&dr, w);
 	struct sample_ws *ws = sample_ws_new(w);
 	for (int k = 0; k < SCALE_SAMPLES; k++) {
 		sample_result_init(&rs[k], w);
-		mc_positions(w, 5, (unsigned long)k, -1, xi);
-		sample_run(ws, xi, &o, &rs[k]);
+		draw_make(&dr, w, 5, (unsigned long)k, -1);
+		sample_run(ws, &dr, &o, &rs[k]);
 		if (point) {	/* the load per unit weight */
 			rs[k].lambda_min /= w->total_weight;
 			rs[k].lambda_max /= w->total_weight;
 		}
 	}
 	sample_ws_free(ws);
-	free(xi);
+	draw_free(&dr);
 	wall_free(w);
 }
 

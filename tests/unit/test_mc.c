@@ -30,7 +30,8 @@ struct run {
 	struct mc_counters c;
 };
 
-static void run(const struct wall *w, int threads, const double *replay,
+static void run(const struct wall *w, int threads,
+		const struct draw_table *replay,
 		struct run *r)
 {
 	char err[SW_ERRLEN];
@@ -40,7 +41,7 @@ static void run(const struct wall *w, int threads, const double *replay,
 	cfg.n = N;
 	cfg.seed = 12345;
 	cfg.threads = threads;
-	cfg.positions = replay;
+	cfg.replay = replay;
 	memset(r, 0, sizeof *r);
 	r->xi = calloc(N * nxi, sizeof(double));
 	r->joint = calloc(N * nj, 1);
@@ -64,7 +65,7 @@ static void run(const struct wall *w, int threads, const double *replay,
 			r->lmax[k] = it.lambda_max;
 			r->iters[k] = it.iterations;
 			r->lps[k] = it.lps;
-			memcpy(r->xi + k * nxi, it.xi, nxi * sizeof(double));
+			memcpy(r->xi + k * nxi, it.draw.xi, nxi * sizeof(double));
 			memcpy(r->joint + k * nj, it.joint, nj);
 		}
 		r->n++;
@@ -131,16 +132,19 @@ static void test_order(const struct wall *w)
 	       "bit for bit (positions, loads, iterations, mechanisms)");
 
 	/* replay the drawn positions: the same samples again */
-	run(w, 2, r1.xi, &rr);
+	struct draw_table t = {.rows = N, .xi = r1.xi};
+	run(w, 2, &t, &rr);
 	tap_ok(rr.n == N && same(&r1, &rr, nxi, nj),
 	       "a replay of the positions recomputes the same samples");
 
 	/* positions depend on (seed, index) only */
-	double *xi = malloc(nxi * sizeof(double));
-	mc_positions(w, 12345, 17, -1, xi);
-	tap_ok(!memcmp(xi, r3.xi + 17 * nxi, nxi * sizeof(double)),
-	       "sample 17's positions are mc_positions(seed, 17)");
-	free(xi);
+	struct sample_draw d;
+	draw_init(&d, w);
+	draw_mean(&d, w);
+	draw_make(&d, w, 12345, 17, -1);
+	tap_ok(!memcmp(d.xi, r3.xi + 17 * nxi, nxi * sizeof(double)),
+	       "sample 17's positions are draw_make(seed, 17)'s");
+	draw_free(&d);
 	free_run(&r1);
 	free_run(&r3);
 	free_run(&rr);
@@ -221,7 +225,7 @@ static void test_share(const struct wall *w)
 				      !memcmp(&it.lambda_min, &all.lam[i],
 					      sizeof(double)) &&
 				      it.iterations == all.iters[i] &&
-				      !memcmp(it.xi, all.xi + (size_t)i * nxi,
+				      !memcmp(it.draw.xi, all.xi + (size_t)i * nxi,
 					      nxi * sizeof(double));
 			seen++;
 		}
@@ -254,14 +258,18 @@ static void test_share(const struct wall *w)
 static void test_depth(const struct wall *w)
 {
 	size_t nxi = 2 * (size_t)w->nifaces;
-	double *a = malloc(nxi * sizeof(double));
-	double *b = malloc(nxi * sizeof(double));
-	double *z = malloc(nxi * sizeof(double));
+	struct sample_draw da, db, dz;
+	draw_init(&da, w);
+	draw_mean(&da, w);
+	draw_init(&db, w);
+	draw_init(&dz, w);
+	draw_mean(&dz, w);
+	double *a = da.xi, *b = db.xi, *z = dz.xi;
 	int ok = 1;
 	for (unsigned long i = 0; i < 20; i++) {
-		mc_positions(w, 3, i, 0.1, a);
-		mc_positions(w, 3, i, 0.4, b);
-		mc_positions(w, 3, i, 0.0, z);
+		draw_make(&da, w, 3, i, 0.1);
+		draw_make(&db, w, 3, i, 0.4);
+		draw_make(&dz, w, 3, i, 0.0);
 		for (size_t k = 0; k < nxi; k += 2) {
 			/* xa = d u1, xb = 1 - d u2 with the same u for every d */
 			ok &= fabs(4 * a[k] - b[k]) < 1e-15;
@@ -272,9 +280,9 @@ static void test_depth(const struct wall *w)
 	}
 	tap_ok(ok, "positions scale with the depth (common random numbers); "
 	       "depth 0 puts the points at the ends");
-	free(a);
-	free(b);
-	free(z);
+	draw_free(&da);
+	draw_free(&db);
+	draw_free(&dz);
 }
 
 static int pair_cmp(const void *pa, const void *pb)
@@ -303,11 +311,11 @@ static long equal_pairs(double *p, long n)
 #define MANY 1000000L
 static void test_streams(void)
 {
-	struct mc_rng r;
+	struct draw_rng r;
 	/* the reference outputs of xoshiro256** from the state {1, 2, 3, 4} */
 	memcpy(r.s, (uint64_t[4]){1, 2, 3, 4}, sizeof r.s);
-	uint64_t x0 = mc_rng_next(&r), x1 = mc_rng_next(&r);
-	uint64_t x2 = mc_rng_next(&r), x3 = mc_rng_next(&r);
+	uint64_t x0 = draw_rng_next(&r), x1 = draw_rng_next(&r);
+	uint64_t x2 = draw_rng_next(&r), x3 = draw_rng_next(&r);
 	tap_ok(x0 == 11520 && x1 == 0 && x2 == 1509978240 &&
 	       x3 == 1215971899390074240ULL,
 	       "xoshiro256** gives its reference outputs");
@@ -320,14 +328,18 @@ static void test_streams(void)
 	}
 	double *u = malloc(sizeof(double) * 2 * MANY);
 	double *xi = malloc(sizeof(double) * 2 * MANY);
+	struct sample_draw d1;
+	draw_init(&d1, one);
+	draw_mean(&d1, one);
 	unsigned long seeds[] = {809873, 0xfedcba9876543210UL};
 	for (int s = 0; s < 2; s++) {
 		for (long i = 0; i < MANY; i++) {
-			mc_rng_seed(&r, seeds[s], (unsigned long)i);
-			u[2 * i] = mc_rng_uniform(&r);
-			u[2 * i + 1] = mc_rng_uniform(&r);
-			mc_positions(one, seeds[s], (unsigned long)i, -1,
-				     xi + 2 * i);
+			draw_rng_seed(&r, seeds[s], (unsigned long)i);
+			u[2 * i] = draw_rng_uniform(&r);
+			u[2 * i + 1] = draw_rng_uniform(&r);
+			draw_make(&d1, one, seeds[s], (unsigned long)i, -1);
+			xi[2 * i] = d1.xi[0];
+			xi[2 * i + 1] = d1.xi[1];
 		}
 		long eu = equal_pairs(u, MANY), ex = equal_pairs(xi, MANY);
 		tap_ok(eu == 0 && ex == 0 && one->nifaces == 1,
@@ -337,6 +349,7 @@ static void test_streams(void)
 	}
 	free(u);
 	free(xi);
+	draw_free(&d1);
 	wall_free(one);
 }
 

@@ -59,7 +59,7 @@ static int script_pop(void *ctx, struct record *r, int wait_ms)
 	r->iterations = 2;
 	r->lps = 5;
 	for (int k = 0; k < 2 * M; k++)
-		r->xi[k] = 0.1 * (double)k;
+		r->draw.xi[k] = 0.1 * (double)k;
 	memset(r->joint, JOINT_CLOSED, M);
 	r->joint[0] = JOINT_SLIDES;
 	return 1;
@@ -340,12 +340,14 @@ static void test_resume(void)
 	struct mc *m = mc_start(&cfg, err);
 	struct record rec;
 	record_init(&rec, w);
-	double *xi = calloc(2 * (size_t)w->nifaces + 1, sizeof(double));
+	struct sample_draw d;
+	draw_init(&d, w);
+	draw_mean(&d, w);
 	long want = 5, bad = 0;
 	while (m && mc_pop(m, &rec, -1) > 0) {
-		mc_positions(w, cfg.seed, (unsigned long)want, -1, xi);
+		draw_make(&d, w, cfg.seed, (unsigned long)want, -1);
 		bad += rec.index != want ||
-		       memcmp(xi, rec.xi, sizeof(double) * 2 *
+		       memcmp(d.xi, rec.draw.xi, sizeof(double) * 2 *
 			      (size_t)w->nifaces) != 0;
 		want++;
 	}
@@ -353,7 +355,7 @@ static void test_resume(void)
 	       "samples 5..8 of the run, at their positions (%ld, %ld bad)",
 	       want, bad);
 	mc_free(m);
-	free(xi);
+	draw_free(&d);
 	record_free(&rec);
 	wall_free(w);
 }
@@ -373,7 +375,9 @@ static void test_wire(void)
 	a.vw_residual = 2e-9;
 	a.seconds = 0.25;
 	for (int k = 0; k < 2 * M; k++)
-		a.xi[k] = 1.0 / (k + 3);
+		a.draw.xi[k] = 1.0 / (k + 3);
+	for (int k = 0; k < M; k++)
+		a.draw.mu[k] = 0.5 + 1.0 / (k + 7);
 	for (int k = 0; k < 3 * B; k++)
 		a.vel[k] = -k - 0.5;
 	memcpy(a.joint, "sh", M + 1);
@@ -381,16 +385,18 @@ static void test_wire(void)
 	unsigned char *buf = malloc(n);
 	record_pack(&a, &fake, buf);
 	record_unpack(&b, &fake, buf);
-	tap_ok(n == RECORD_FIXED + sizeof(double) * (2 * M + 3 * B) + M + 1,
+	tap_ok(n == RECORD_FIXED + sizeof(double) * (3 * M + 3 * B) + M + 1,
 	       "the wire size: the fixed part and the arrays (%zu)", n);
 	tap_ok(b.index == a.index && b.status == a.status &&
 	       b.iterations == 7 && b.lps == 11 && b.lambda_lpmax == 3.5 &&
 	       b.lambda_min == 1e-300 && b.vw_residual == 2e-9 &&
 	       b.seconds == 0.25 && signbit(b.lambda_max),
 	       "the fixed part survives the wire");
-	tap_ok(!memcmp(a.xi, b.xi, sizeof(double) * 2 * M) &&
+	tap_ok(!memcmp(a.draw.xi, b.draw.xi, sizeof(double) * 2 * M) &&
+	       !memcmp(a.draw.mu, b.draw.mu, sizeof(double) * M) &&
 	       !memcmp(a.vel, b.vel, sizeof(double) * 3 * B) &&
-	       !strcmp(b.joint, "sh"), "xi, vel and joint survive the wire");
+	       !strcmp(b.joint, "sh"), "the draw (xi, mu), vel and joint "
+	       "survive the wire");
 	free(buf);
 	record_free(&a);
 	record_free(&b);

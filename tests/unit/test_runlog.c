@@ -63,10 +63,10 @@ static void test_format(void)
 	it.lambda_max = 1.5;
 	it.lambda_min = 0.1;
 	it.iterations = 12;
-	it.xi[0] = 0.25;
-	it.xi[1] = 0.75;
-	it.xi[2] = 0;
-	it.xi[3] = 1;
+	it.draw.xi[0] = 0.25;
+	it.draw.xi[1] = 0.75;
+	it.draw.xi[2] = 0;
+	it.draw.xi[3] = 1;
 	runlog_write(l, &it, err);
 	it.index = 1;
 	it.status = SAMPLE_NO_MECHANISM;
@@ -92,6 +92,23 @@ static void test_format(void)
 	if (got && strcmp(got, want))
 		printf("# got:\n%s", got);
 	record_free(&it);
+}
+
+
+/* runlog_read_draws' positions (the tests below check them; the
+ * frictions have test_friction_columns) */
+static enum sw_status read_positions(const char *p, const struct wall *w,
+				     double **x, long *n, char *warn,
+				     char *err)
+{
+	struct draw_table t = {0};
+	enum sw_status st = runlog_read_draws(p, w, &t, warn, err);
+	if (st == SW_OK) {
+		*x = t.xi;
+		*n = t.rows;
+		free(t.mu);
+	}
+	return st;
 }
 
 static void test_round_trip(void)
@@ -121,17 +138,17 @@ static void test_round_trip(void)
 		for (int k = 0; k < 2 * M; k += 2) {
 			double a = awkward[(i + k) % na];
 			double b = (double)rand() / RAND_MAX;
-			it.xi[k] = a < b ? a : b;
-			it.xi[k + 1] = a < b ? b : a;
+			it.draw.xi[k] = a < b ? a : b;
+			it.draw.xi[k + 1] = a < b ? b : a;
 		}
-		memcpy(want + 2 * M * i, it.xi, sizeof(double) * 2 * M);
+		memcpy(want + 2 * M * i, it.draw.xi, sizeof(double) * 2 * M);
 		runlog_write(l, &it, err);
 	}
 	runlog_close(l, err);
 
 	double *xi = NULL;
 	long n = 0;
-	enum sw_status st = runlog_read_positions(p, &fake, &xi, &n, NULL, err);
+	enum sw_status st = read_positions(p, &fake, &xi, &n, NULL, err);
 	tap_ok(st == SW_OK && n == rows, "positions read back: 50 rows");
 	tap_ok(st == SW_OK && !memcmp(xi, want, sizeof(double) * 2 * M *
 				      (size_t)rows),
@@ -160,7 +177,7 @@ static void refused(const char *name, const char *text, int loads,
 	double *x = NULL;
 	long n = -1;
 	enum sw_status st = loads ? runlog_read_loads(p, &fake, &x, &n, NULL, err) :
-			    runlog_read_positions(p, &fake, &x, &n, NULL, err);
+			    read_positions(p, &fake, &x, &n, NULL, err);
 	char prefix[300];
 	snprintf(prefix, sizeof prefix, "%s:%s: ", p, where);
 	int ok = st == SW_EINPUT && !strncmp(err, prefix, strlen(prefix)) &&
@@ -223,7 +240,7 @@ static void test_errors(void)
 	char err[SW_ERRLEN];
 	double *x = NULL;
 	long n;
-	enum sw_status st = runlog_read_positions(path_of("missing.csv"),
+	enum sw_status st = read_positions(path_of("missing.csv"),
 						  &fake, &x, &n, NULL, err);
 	tap_ok(st == SW_EINPUT && strstr(err, "missing.csv: cannot open"),
 	       "a missing file is refused with its name");
@@ -235,7 +252,7 @@ static void test_errors(void)
 	     "xa_2,xb_2\r\n0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\r\n"
 	     "1,accepted,1,0.25,3,0,1,0.5,0.5");
 	char warn[SW_ERRLEN] = "x";
-	st = runlog_read_positions(p, &fake, &x, &n, warn, err);
+	st = read_positions(p, &fake, &x, &n, warn, err);
 	tap_ok(st == SW_OK && n == 1 && x[0] == 0.1 && x[3] == 0.8,
 	       "CRLF accepted; a last row without its newline dropped");
 	tap_ok(strstr(warn, "crlf.csv:3: warning: the last row is "
@@ -254,7 +271,7 @@ static void test_errors(void)
 	free(lam);
 	/* a cut row cut in the middle of a number: still only dropped */
 	spit(p, HDR "0,accepted,1,0.5,3,0.1,0.9,0.2,0.8\n1,accepted,1,0.2");
-	st = runlog_read_positions(p, &fake, &x, &n, warn, err);
+	st = read_positions(p, &fake, &x, &n, warn, err);
 	tap_ok(st == SW_OK && n == 1 && warn[0], "a row cut mid-number "
 	       "dropped with a warning");
 	free(x);
@@ -267,7 +284,7 @@ static void test_bounds(void)
 	char err[SW_ERRLEN];
 	double *x = NULL;
 	long n = -1;
-	enum sw_status st = runlog_read_positions("/dev/zero", &fake, &x, &n,
+	enum sw_status st = read_positions("/dev/zero", &fake, &x, &n,
 						  NULL, err);
 	tap_ok(st == SW_EINPUT && strstr(err, "/dev/zero:1:1: a NUL byte"),
 	       "/dev/zero refused at once: %s", err);

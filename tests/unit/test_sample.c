@@ -16,16 +16,6 @@
 #include "tap.h"
 #include "walls.h"
 
-static double *classical(const struct wall *w)
-{
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	for (int k = 0; k < w->nifaces; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
-	return xi;
-}
-
 /* A block b x h on the ground: body load fails at min(mu, b/h); a point
  * load at height a on the left face at P = W min(mu, b/(2a)). */
 static void closed_forms(void)
@@ -55,11 +45,14 @@ static void closed_forms(void)
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r;
 		sample_result_init(&r, w);
-		double *xi = classical(w);
-		sample_standard(ws, xi, &r);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
+		double *xi = dr.xi;
+		sample_standard(ws, &dr, &r);
 		tap_near(r.lambda_max, want, 1e-9, "standard: block %gx%g mu %g a %g",
 			 b, h, mu, a);
-		sample_run(ws, xi, &o, &r);
+		sample_run(ws, &dr, &o, &r);
 		tap_ok(r.status == SAMPLE_ACCEPTED, "sample accepted (%s)",
 		       sample_status_name(r.status));
 		tap_near(r.lambda_min, want, 1e-9, "sample lambda_min = closed form");
@@ -71,14 +64,14 @@ static void closed_forms(void)
 		 * point q_b = (1 - d) b, so P = W min(mu, b (1 - 2d)... ) */
 		xi[0] = 0.1;
 		xi[1] = 0.8;
-		sample_run(ws, xi, &o, &r);
+		sample_run(ws, &dr, &o, &r);
 		/* resultant arm about q_b: the weight acts at b/2, the toe is
 		 * at 0.8 b: overturning P a = W (0.8 b - b/2) */
 		double arm = 0.8 * b - b / 2;
 		double want_d = a > 0 ? W * fmin(mu, arm / a) : fmin(mu, arm / (h / 2));
 		tap_near(r.lambda_min, want_d, 1e-9,
 			 "contact at xi = (0.1, 0.8): min(mu, arm/a)");
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);
 		wall_free(w);
@@ -117,9 +110,11 @@ static void patterns(void)
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r;
 		sample_result_init(&r, w);
-		double *xi = classical(w);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
 		unsigned char slip = p[i].slip;
-		enum sample_status st = sample_pattern(ws, xi, p[i].open, &slip, &r);
+		enum sample_status st = sample_pattern(ws, &dr, p[i].open, &slip, &r);
 		if (p[i].found) {
 			tap_ok(st == SAMPLE_ACCEPTED && r.vw_residual <= 1e-8,
 			       "pattern: %s (%s)", p[i].what, sample_status_name(st));
@@ -128,7 +123,7 @@ static void patterns(void)
 			tap_ok(st != SAMPLE_ACCEPTED, "pattern: %s (%s)",
 			       p[i].what, sample_status_name(st));
 		}
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);
 		wall_free(w);
@@ -151,12 +146,14 @@ static void ferris_tinloi(void)
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r;
 		sample_result_init(&r, w);
-		double *xi = classical(w);
-		sample_standard(ws, xi, &r);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
+		sample_standard(ws, &dr, &r);
 		tap_ok(fabs(r.lambda_max - fw[i].standard) <= 1e-4,
 		       "%s: standard %.6f, published %.4f", fw[i].file,
 		       r.lambda_max, fw[i].standard);
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);
 		wall_free(w);
@@ -181,11 +178,13 @@ static void acceptance(void)
 		struct sample_opts o;
 		sample_opts_default(&o);
 		sample_result_init(&r, w);
-		double *xi = malloc(sizeof(double) * 2 * (size_t)w->nifaces);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
 		int count[SAMPLE_STATUS_COUNT] = {0};
 		for (int i = 0; i < 200; i++) {
-			mc_positions(w, 1, (unsigned long)i, -1, xi);
-			sample_run(ws, xi, &o, &r);
+			draw_make(&dr, w, 1, (unsigned long)i, -1);
+			sample_run(ws, &dr, &o, &r);
 			count[r.status]++;
 		}
 		for (int s = 0; s < SAMPLE_STATUS_COUNT; s++)
@@ -197,7 +196,7 @@ static void acceptance(void)
 		       "%s, depth 0.25: %d of 200 accepted (>= 198), %d "
 		       "numerical (<= 1)", files[f], count[SAMPLE_ACCEPTED],
 		       count[SAMPLE_NUMERICAL]);
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);
 		wall_free(w);
@@ -209,10 +208,14 @@ static void positions(void)
 {
 	struct wall *w = tw_load_file("walls/ferris-tinloi-1.yaml");
 	size_t n = 2 * (size_t)w->nifaces;
-	double *a = malloc(sizeof(double) * n), *b = malloc(sizeof(double) * n);
-	mc_positions(w, 7, 42, -1, a);
-	mc_positions(w, 7, 41, -1, b);
-	mc_positions(w, 7, 42, -1, b);
+	struct sample_draw da, db;
+	draw_init(&da, w);
+	draw_mean(&da, w);
+	draw_init(&db, w);
+	double *a = da.xi, *b = db.xi;
+	draw_make(&da, w, 7, 42, -1);
+	draw_make(&db, w, 7, 41, -1);
+	draw_make(&db, w, 7, 42, -1);
 	int same = 1, in = 1;
 	for (size_t i = 0; i < n; i++) {
 		same &= a[i] == b[i];
@@ -223,10 +226,10 @@ static void positions(void)
 	}
 	tap_ok(same, "positions of (seed 7, sample 42) are reproducible");
 	tap_ok(in, "xi_a in [0, d], xi_b in [1 - d, 1] for d = 0.25");
-	mc_positions(w, 8, 42, -1, b);
+	draw_make(&db, w, 8, 42, -1);
 	tap_ok(a[0] != b[0], "another seed gives other positions");
-	free(a);
-	free(b);
+	draw_free(&da);
+	draw_free(&db);
 	wall_free(w);
 }
 
@@ -250,10 +253,12 @@ static int same_bits(const struct sample_result *a,
 static void history_free_wall(const char *path, unsigned long seed, int n)
 {
 	struct wall *w = tw_load_file(path);
-	size_t nxi = 2 * (size_t)w->nifaces;
-	double *xi = malloc(sizeof(double) * nxi * (size_t)n);
-	for (int i = 0; i < n; i++)
-		mc_positions(w, seed, (unsigned long)i, -1, xi + nxi * (size_t)i);
+	struct sample_draw *dr = malloc(sizeof *dr * (size_t)n);
+	for (int i = 0; i < n; i++) {
+		draw_init(&dr[i], w);
+		draw_mean(&dr[i], w);
+		draw_make(&dr[i], w, seed, (unsigned long)i, -1);
+	}
 	struct sample_opts o;
 	sample_opts_default(&o);
 	struct sample_ws *fwd = sample_ws_new(w), *rev = sample_ws_new(w);
@@ -261,11 +266,11 @@ static void history_free_wall(const char *path, unsigned long seed, int n)
 	sample_result_init(&q, w);
 	for (int i = 0; i < n; i++) {
 		sample_result_init(&r[i], w);
-		sample_run(fwd, xi + nxi * (size_t)i, &o, &r[i]);
+		sample_run(fwd, &dr[i], &o, &r[i]);
 	}
 	int differ = 0, first = -1;
 	for (int i = n - 1; i >= 0; i--) {
-		sample_run(rev, xi + nxi * (size_t)i, &o, &q);
+		sample_run(rev, &dr[i], &o, &q);
 		if (!same_bits(&r[i], &q)) {
 			differ++;
 			first = i;
@@ -277,18 +282,20 @@ static void history_free_wall(const char *path, unsigned long seed, int n)
 
 	/* one sample after others, and on a fresh workspace */
 	struct sample_ws *fresh = sample_ws_new(w);
-	sample_run(fwd, xi, &o, &q);
+	sample_run(fwd, &dr[0], &o, &q);
 	tap_ok(same_bits(&r[0], &q), "%s: sample 0 again after %d others: "
 	       "bit-identical (%.17g, %.17g)", path, n - 1, r[0].lambda_min,
 	       q.lambda_min);
-	sample_run(fresh, xi, &o, &q);
+	sample_run(fresh, &dr[0], &o, &q);
 	tap_ok(same_bits(&r[0], &q), "%s: sample 0 on a fresh workspace: "
 	       "bit-identical", path);
 	for (int i = 0; i < n; i++)
 		sample_result_free(&r[i]);
 	sample_result_free(&q);
 	free(r);
-	free(xi);
+	for (int i = 0; i < n; i++)
+		draw_free(&dr[i]);
+	free(dr);
 	sample_ws_free(fwd);
 	sample_ws_free(rev);
 	sample_ws_free(fresh);
@@ -320,16 +327,18 @@ static void properties(void)
 		struct sample_result r, s;
 		sample_result_init(&r, w);
 		sample_result_init(&s, w);
-		double *xi = classical(w);
-		sample_standard(ws, xi, &s);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
+		sample_standard(ws, &dr, &s);
 		double lam_std = s.lambda_max;
-		mc_positions(w, 99, (unsigned long)c, -1, xi);
-		sample_run(ws, xi, &unrep, &r);
+		draw_make(&dr, w, 99, (unsigned long)c, -1);
+		sample_run(ws, &dr, &unrep, &r);
 		enum sample_status st0 = r.status;
 		double lmin0 = r.lambda_min;
 		if (!isnan(r.N[0]))
 			bad_unrep++;
-		sample_run(ws, xi, &o, &r);
+		sample_run(ws, &dr, &o, &r);
 		if (st0 != r.status ||
 		    (st0 == SAMPLE_ACCEPTED &&
 		     !(fabs(lmin0 - r.lambda_min) <= 1e-9 * fabs(r.lambda_min)))) {
@@ -355,7 +364,7 @@ static void properties(void)
 						   fmax(r.dn[2 * k], r.dn[2 * k + 1])));
 			for (int k = 0; k < w->nifaces; k++) {
 				double na = r.N[2 * k], nb2 = r.N[2 * k + 1], t = r.T[k];
-				double m = w->ifaces[k].mu;
+				double m = wall_iface_mu(w, k);
 				if (na < -1e-9 * F || nb2 < -1e-9 * F ||
 				    fabs(t) > m * (na + nb2) + 1e-9 * F)
 					bad_adm++;
@@ -370,7 +379,7 @@ static void properties(void)
 					bad_comp++;
 			}
 		}
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_result_free(&s);
 		sample_ws_free(ws);

@@ -169,9 +169,11 @@ static void global_walls(void)
 		struct sample_ws *ws = sample_ws_new(w);
 		struct sample_result r;
 		sample_result_init(&r, w);
-		double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-		mc_positions(w, 3, (unsigned long)c, 0, xi);
-		sample_run(ws, xi, &so, &r);
+		struct sample_draw dr;
+		draw_init(&dr, w);
+		draw_mean(&dr, w);
+		draw_make(&dr, w, 3, (unsigned long)c, 0);
+		sample_run(ws, &dr, &so, &r);
 		double smp = r.status == SAMPLE_ACCEPTED ? r.lambda_min : NAN;
 		double tol = 1e-6 * fmax(1, fabs(gil));
 		small += one_course;
@@ -192,7 +194,7 @@ static void global_walls(void)
 			bad_bound++, tap_diag("case %d: bound %.9g > gilbert %.9g "
 					      "or sample %.9g", c, rg.lower_bound,
 					      gil, smp);
-		free(xi);
+		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);
 		solve_result_free(&rg);

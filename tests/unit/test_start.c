@@ -53,16 +53,18 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	struct sample_opts opts;
 	sample_opts_default(&opts);
 	o = &opts;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	mc_positions(w, seed, index, -1, xi);
+	struct sample_draw dr;
+	draw_init(&dr, w);
+	draw_mean(&dr, w);
+	draw_make(&dr, w, seed, index, -1);
 	struct sample_result ref, r;
 	sample_result_init(&ref, w);
 	sample_result_init(&r, w);
-	sample_run(ws[0], xi, o, &ref);
+	sample_run(ws[0], &dr, o, &ref);
 	t->samples++;
 	t->accepted += ref.status == SAMPLE_ACCEPTED;
 	for (int s = 1; s < NSTART; s++) {
-		sample_run(ws[s], xi, o, &r);
+		sample_run(ws[s], &dr, o, &r);
 		if (r.status != ref.status) {
 			t->status++;
 			tap_diag("%s sample %lu: %s by %s, %s by %s", what, index,
@@ -92,7 +94,7 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	}
 	sample_result_free(&ref);
 	sample_result_free(&r);
-	free(xi);
+	draw_free(&dr);
 }
 
 /* The workspaces of w, the default start first. */
@@ -129,11 +131,9 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 {
 	struct sample_opts o;
 	sample_opts_default(&o);
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
-	for (int k = 0; k < w->nifaces; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
+	struct sample_draw dr;	/* the classical contact */
+	draw_init(&dr, w);
+	draw_mean(&dr, w);
 	struct sample_result r;
 	sample_result_init(&r, w);
 	double std[NSTART], gmax[NSTART],
@@ -141,9 +141,9 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 	char *mech[NSTART];
 	int st_ok = 1, g_ok = 1, m_ok = 1;
 	for (int s = 0; s < NSTART; s++) {
-		sample_standard(ws[s], xi, &r);
+		sample_standard(ws[s], &dr, &r);
 		std[s] = r.lambda_max;
-		sample_run(ws[s], xi, &o, &r);
+		sample_run(ws[s], &dr, &o, &r);
 		gmax[s] = r.lambda_max;
 		gmin[s] = r.lambda_min;
 		mech[s] = strdup(r.status == SAMPLE_ACCEPTED ? r.joint : "-");
@@ -166,7 +166,7 @@ static void classical(struct sample_ws **ws, const struct wall *w,
 	for (int s = 0; s < NSTART; s++)
 		free(mech[s]);
 	sample_result_free(&r);
-	free(xi);
+	draw_free(&dr);
 }
 
 static void wall_file(const char *path, long n)

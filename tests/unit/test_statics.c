@@ -54,8 +54,11 @@ int main(void)
 	v[0] = om * (0 - 0.4);
 	v[1] = -om * (0.4 - 0.2);
 	v[2] = om * L;					/* scaled omega */
-	double xi[2] = {0, 1};
-	statics_set_points(&s, xi);
+	struct sample_draw d;	/* the classical contact: xi = 0, 1 */
+	draw_init(&d, w);
+	draw_mean(&d, w);
+	statics_set_draw(&s, &d);
+	draw_free(&d);
 	tap_near(statics_rate(&s, 1, v), 0, 1e-15, "hinging about q_b: no motion at q_b");
 	tap_ok(statics_rate(&s, 0, v) > 0, "... and the left corner q_a lifts off (%.3g)", statics_rate(&s, 0, v));
 	statics_free(&s);

@@ -25,12 +25,10 @@ static void classical(struct wall *w, const char *what)
 	struct statics st;
 	statics_init(&st, w);
 	int m = w->nifaces, R = st.nrows;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)m + 1));
-	for (int k = 0; k < m; k++) {
-		xi[2 * k] = 0;
-		xi[2 * k + 1] = 1;
-	}
-	statics_set_points(&st, xi);
+	struct sample_draw dr;	/* the classical contact */
+	draw_init(&dr, w);
+	draw_mean(&dr, w);
+	statics_set_draw(&st, &dr);
 	unsigned char *basic = calloc(4 * (size_t)m + 1, 1);
 	int bad = support_basis(&st, basic);
 	tap_ok(bad == 0, "%s: every block carried with forces >= 0 (%d not)", what, bad);
@@ -46,7 +44,7 @@ static void classical(struct wall *w, const char *what)
 	tap_ok(n == R, "%s: %d basic columns, 3 per free block (%d)", what, n, R);
 	tap_ok(below, "%s: every basic column on a bed joint", what);
 	free(basic);
-	free(xi);
+	draw_free(&dr);
 	statics_free(&st);
 }
 
@@ -61,19 +59,22 @@ static long standing_pivots(struct wall *w, enum sample_start start, int n,
 	struct sample_result r;
 	sample_opts_default(&o);
 	sample_result_init(&r, w);
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_draw dr;
+	draw_init(&dr, w);
+	draw_mean(&dr, w);
+	double *xi = dr.xi;
 	*accepted = 0;
 	for (int i = 0; i < n; i++) {
 		for (int k = 0; k < w->nifaces; k++) {
 			xi[2 * k] = depth ? 0.2 * ((i * 7 + k * 3) % 11) / 10.0 : 0;
 			xi[2 * k + 1] = depth ? 1 - 0.2 * ((i * 5 + k) % 13) / 12.0 : 1;
 		}
-		sample_run(ws, xi, &o, &r);
+		sample_run(ws, &dr, &o, &r);
 		*accepted += r.status == SAMPLE_ACCEPTED;
 	}
 	struct sample_lp_stats s[SAMPLE_ROLE_COUNT];
 	sample_ws_stats(ws, s);
-	free(xi);
+	draw_free(&dr);
 	sample_result_free(&r);
 	sample_ws_free(ws);
 	return s[1].iterations;	/* role 1: the standing check */

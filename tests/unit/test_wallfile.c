@@ -189,10 +189,10 @@ static void test_settings(void)
 	for (int k = 0; k < w->nifaces; k++) {
 		if (w->ifaces[k].kind == JOINT_HEAD) {
 			nhead++;
-			headmu &= w->ifaces[k].mu == 0.45;
+			headmu &= wall_iface_mu(w, k) == 0.45;
 		} else if (w->ifaces[k].kind == JOINT_BED) {
 			nbed++;
-			bedmu &= w->ifaces[k].mu == 0.7;
+			bedmu &= wall_iface_mu(w, k) == 0.7;
 		}
 	}
 	tap_ok(nhead == 9 && headmu,
