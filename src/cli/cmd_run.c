@@ -82,7 +82,9 @@ static void usage(FILE *f)
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
 		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
 		"                       of the bed and head joints\n"
-		"  --load-at X,Y        where the wall's live load acts\n"
+		"                       (the means when friction is random)\n"
+		"  --cov COV            friction random per joint and sample:\n"
+		"                       lognormal, this coefficient of variation\n"		"  --load-at X,Y        where the wall's live load acts\n"
 		"  --load-direction DX,DY   its direction\n"
 		"  --set KEY=VALUE      any key of the wall file (material.unit_weight=\n"
 		"                       20000, analysis.seed=3, loads.0.point.at=[0,1]);\n"
@@ -292,6 +294,10 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf(", %d rank%s x", r->ranks, r->ranks > 1 ? "s" : "");
 	printf("%s%d thread%s)\n", r->ranks ? " " : ", ", r->cfg->threads,
 	       r->cfg->threads > 1 ? "s" : "");
+	if (w->mu_cov > 0)
+		printf("friction     random per joint and sample: lognormal, "
+		       "mean bed %g, head %g, cov %g\n", w->mu_bed, w->mu_head,
+		       w->mu_cov);
 	if (r->a->ov.n > 0) {
 		char d[1024];
 		override_describe(&r->a->ov, d, sizeof d);
@@ -387,6 +393,17 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_null(&j);
 	else
 		json_double(&j, depth_used(r));
+	if (r->w->mu_cov > 0) {	/* random friction (absent: fixed) */
+		json_key(&j, "friction");
+		json_object_begin(&j);
+		json_key(&j, "bed");
+		json_double(&j, r->w->mu_bed);
+		json_key(&j, "head");
+		json_double(&j, r->w->mu_head);
+		json_key(&j, "cov");
+		json_double(&j, r->w->mu_cov);
+		json_object_end(&j);
+	}
 	override_json(&r->a->ov, &j);
 	json_key(&j, "threads");
 	json_int(&j, r->cfg->threads);

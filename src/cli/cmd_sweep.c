@@ -47,7 +47,7 @@
 #define CMD "sweep"
 #define MAX_VALUES 1000
 
-enum sweep_param { SW_NONE, SW_FRICTION, SW_DEPTH, SW_LOAD_AT };
+enum sweep_param { SW_NONE, SW_FRICTION, SW_COV, SW_DEPTH, SW_LOAD_AT };
 
 struct sweep_args {
 	const char *wall, *csv, *out;
@@ -79,6 +79,8 @@ static void usage(FILE *f)
 		"random numbers), so the curve shows the parameter's effect.\n"
 		"\n"
 		"  --friction A:B:STEP     friction of every joint from A to B\n"
+		"  --cov A:B:STEP          friction's coefficient of variation per\n"
+		"                          joint from A to B (0..1; random friction)\n"
 		"  --depth A:B:STEP        imperfection depth from A to B (0..0.5)\n"
 		"  --load-at X1,Y1:X2,Y2:N the live load at N points along a line\n"
 		"  -n N                    samples per value (default: the wall's)\n"
@@ -180,14 +182,19 @@ static int set_param(struct sweep_args *a, enum sweep_param p, const char *v)
 	a->range = v;
 	int bad = p == SW_FRICTION ? parse_steps(v, 0, INFINITY, &a->val,
 						 &a->nval) :
+		  p == SW_COV ? parse_steps(v, 0, WALL_COV_MAX, &a->val,
+					    &a->nval) :
 		  p == SW_DEPTH ? parse_steps(v, 0, 0.5, &a->val, &a->nval) :
 		  parse_line(v, a);
 	if (bad)
 		return cli_usage_error(CMD, "%s: '%s' is not %s",
 				       p == SW_FRICTION ? "--friction" :
+				       p == SW_COV ? "--cov" :
 				       p == SW_DEPTH ? "--depth" : "--load-at", v,
 				       p == SW_FRICTION ? "A:B:STEP (0 <= A <= B, "
 				       "STEP > 0, at most 1000 values)" :
+				       p == SW_COV ? "A:B:STEP (0 <= A <= B <= "
+				       "1, STEP > 0, at most 1000 values)" :
 				       p == SW_DEPTH ? "A:B:STEP (0 <= A <= B <= "
 				       "0.5, STEP > 0, at most 1000 values)" :
 				       "X1,Y1:X2,Y2:N (N from 2 to 1000)");
@@ -203,8 +210,9 @@ static int opt_depth(const char *cmd, const char *name, const char *v,
 	return set_param(dst, SW_DEPTH, v);
 }
 
-/* --friction and --load-at: the parameter when a range (A:B:STEP,
- * X1,Y1:X2,Y2:N), else a fixed override as for run (MU, X,Y). */
+/* --friction, --cov and --load-at: the parameter when a range
+ * (A:B:STEP, X1,Y1:X2,Y2:N), else a fixed override as for run (MU, COV,
+ * X,Y). */
 static int opt_range_or_fixed(const char *cmd, const char *name,
 			      const char *v, void *dst)
 {
@@ -212,7 +220,7 @@ static int opt_range_or_fixed(const char *cmd, const char *name,
 	if (!strchr(v, ':'))
 		return override_add(cmd, name, v, &a->ov);
 	return set_param(a, !strcmp(name, "--friction") ? SW_FRICTION :
-			 SW_LOAD_AT, v);
+			 !strcmp(name, "--cov") ? SW_COV : SW_LOAD_AT, v);
 }
 
 static int parse_args(int argc, char **argv, struct sweep_args *a)
@@ -224,6 +232,8 @@ static int parse_args(int argc, char **argv, struct sweep_args *a)
 		{ .name = "--depth", .kind = CLI_OPT_CALL, .dst = a,
 		  .call = opt_depth },
 		{ .name = "--friction", .kind = CLI_OPT_CALL, .dst = a,
+		  .call = opt_range_or_fixed },
+		{ .name = "--cov", .kind = CLI_OPT_CALL, .dst = a,
 		  .call = opt_range_or_fixed },
 		{ .name = "--load-at", .kind = CLI_OPT_CALL, .dst = a,
 		  .call = opt_range_or_fixed },
@@ -243,8 +253,8 @@ static int parse_args(int argc, char **argv, struct sweep_args *a)
 		return rc;
 	if (a->param == SW_NONE)
 		return cli_usage_error(CMD, "what to sweep? --friction A:B:STEP, "
-				       "--depth A:B:STEP or --load-at "
-				       "X1,Y1:X2,Y2:N");
+				       "--cov A:B:STEP, --depth A:B:STEP or "
+				       "--load-at X1,Y1:X2,Y2:N");
 	a->asked = a->nval;
 	return 0;
 }
@@ -273,14 +283,15 @@ static int wall_for(const struct sweep_args *a, int k, struct wall **w)
 	int rc = 0;
 	for (int i = 0; i < a->ov.n && !rc; i++)
 		rc = override_add(CMD, a->ov.o[i].option, a->ov.o[i].arg, &ov);
-	if (!rc && (a->param == SW_FRICTION || a->param == SW_LOAD_AT)) {
-		if (a->param == SW_FRICTION)
+	if (!rc && a->param != SW_DEPTH) {
+		if (a->param == SW_FRICTION || a->param == SW_COV)
 			snprintf(arg, sizeof arg, "%.17g", a->val[k]);
 		else
 			snprintf(arg, sizeof arg, "%.17g,%.17g", a->at[k][0],
 				 a->at[k][1]);
-		rc = override_add(CMD, a->param == SW_FRICTION ?
-				  "--friction" : "--load-at", arg, &ov);
+		rc = override_add(CMD, a->param == SW_FRICTION ? "--friction" :
+				  a->param == SW_COV ? "--cov" : "--load-at",
+				  arg, &ov);
 	}
 	if (!rc)
 		rc = override_load(CMD, a->wall, &ov, w);
@@ -324,8 +335,8 @@ static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
 
 static const char *param_name(enum sweep_param p)
 {
-	return p == SW_FRICTION ? "friction" : p == SW_DEPTH ? "depth" :
-	       "load_at";
+	return p == SW_FRICTION ? "friction" : p == SW_COV ? "cov" :
+	       p == SW_DEPTH ? "depth" : "load_at";
 }
 
 static void print_table(const struct sweep_args *a, const struct wall *w,
@@ -488,6 +499,9 @@ static int write_figure(const struct sweep_args *a, const struct wall *w,
 	char xlabel[160], cap[512];
 	if (a->param == SW_FRICTION)
 		snprintf(xlabel, sizeof xlabel, "friction coefficient μ");
+	else if (a->param == SW_COV)
+		snprintf(xlabel, sizeof xlabel, "friction's coefficient of "
+			 "variation");
 	else if (a->param == SW_DEPTH)
 		snprintf(xlabel, sizeof xlabel, "imperfection depth d");
 	else

@@ -56,6 +56,7 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 {
 	struct overrides *ov = dst;
 	enum override_kind kind = !strcmp(opt, "--friction") ? OVR_FRICTION :
+				  !strcmp(opt, "--cov") ? OVR_COV :
 				  !strcmp(opt, "--load-at") ? OVR_LOAD_AT :
 				  !strcmp(opt, "--load-direction") ?
 				  OVR_LOAD_DIR : OVR_SET;
@@ -73,6 +74,13 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 					       "MU nor BED,HEAD (numbers)", v);
 		}
 		key = dup_printf("material.friction");
+		break;
+	case OVR_COV:
+		if (split_numbers(v, 1, buf, sizeof buf, part))
+			return cli_usage_error(cmd, "--cov: '%s' is not a "
+					       "number", v);
+		key = dup_printf("material.friction.cov");
+		value = dup_printf("%s", part[0]);
 		break;
 	case OVR_LOAD_AT:
 	case OVR_LOAD_DIR:
@@ -108,6 +116,66 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 	x->key = key;
 	x->value = value;
 	x->label = dup_printf("%s %s", opt, v);
+	return 0;
+}
+
+/* Friction's edits when it is random (docs/wall-format.md, "Friction as
+ * a random variable"): --friction sets the mean and keeps the file's
+ * cov; --cov and --set material.friction.cov set the cov and keep the
+ * mean, also where the file writes friction as one number.  Each such
+ * edit becomes the whole mapping material.friction = {bed, head, cov},
+ * from the file's values and the edits before it, in order.  Without a
+ * cov anywhere, --friction's edit is left as it is. */
+static int resolve_friction(const char *path, struct overrides *ov)
+{
+	int need = 0, any = 0;
+	for (int k = 0; k < ov->n; k++) {
+		need |= ov->o[k].kind == OVR_COV ||
+			(ov->o[k].kind == OVR_SET &&
+			 !strcmp(ov->o[k].key, "material.friction.cov"));
+		any |= ov->o[k].kind == OVR_FRICTION;
+	}
+	if (!need && !any)
+		return 0;
+	struct wall *w = NULL;
+	int rc = cli_load_wall(path, &w);
+	if (rc)
+		return rc;
+	need |= w->mu_cov > 0;
+	if (!need) {
+		wall_free(w);
+		return 0;
+	}
+	char bed[64], head[64], cov[64];
+	snprintf(bed, sizeof bed, "%.17g", w->mu_bed);
+	snprintf(head, sizeof head, "%.17g", w->mu_head);
+	snprintf(cov, sizeof cov, "%.17g", w->mu_cov);
+	wall_free(w);
+	for (int k = 0; k < ov->n; k++) {
+		struct override *x = &ov->o[k];
+		char buf[256], *part[2];
+		if (x->kind == OVR_FRICTION) {
+			if (!split_numbers(x->arg, 1, buf, sizeof buf, part)) {
+				snprintf(bed, sizeof bed, "%s", part[0]);
+				snprintf(head, sizeof head, "%s", part[0]);
+			} else if (!split_numbers(x->arg, 2, buf, sizeof buf,
+						  part)) {
+				snprintf(bed, sizeof bed, "%s", part[0]);
+				snprintf(head, sizeof head, "%s", part[1]);
+			}
+		} else if (x->kind == OVR_COV ||
+			   (x->kind == OVR_SET &&
+			    !strcmp(x->key, "material.friction.cov"))) {
+			snprintf(cov, sizeof cov, "%.60s", x->value);
+		} else {
+			continue;
+		}
+		free(x->key);
+		free(x->value);
+		x->key = dup_printf("material.friction");
+		x->value = dup_printf("{bed: %s, head: %s, cov: %s}", bed, head,
+				      cov);
+	}
 	return 0;
 }
 
@@ -161,6 +229,8 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 	if (ov->n == 0)
 		return cli_load_wall(path, w);
 	int rc = resolve_loads(cmd, path, ov);
+	if (!rc)
+		rc = resolve_friction(path, ov);
 	if (rc)
 		return rc;
 	struct wallfile_edit *e = sw_xmalloc(sizeof *e * (size_t)ov->n);

@@ -29,7 +29,8 @@
 #include "slipwall/json.h"
 #include "slipwall/wall.h"
 
-enum override_kind { OVR_FRICTION, OVR_LOAD_AT, OVR_LOAD_DIR, OVR_SET };
+enum override_kind { OVR_FRICTION, OVR_COV, OVR_LOAD_AT, OVR_LOAD_DIR,
+		     OVR_SET };
 
 struct override {
 	enum override_kind kind;
@@ -56,6 +57,7 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst);
 	  .call = override_add }
 #define OVERRIDE_OPTIONS(ov)						\
 	OVERRIDE_OPTION("--friction", ov),				\
+	OVERRIDE_OPTION("--cov", ov),					\
 	OVERRIDE_OPTION("--load-at", ov),				\
 	OVERRIDE_OPTION("--load-direction", ov),			\
 	OVERRIDE_OPTION("--set", ov)
