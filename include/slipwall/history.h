@@ -40,10 +40,10 @@ struct history_row {
 	char file[PATH_MAX];	/* the samples file */
 };
 
-/* The runs directory: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs,
- * else ~/.local/share/slipwall/runs; made when missing.  -1 and err
- * when there is no such place or it cannot be made. */
-int history_runs_dir(char *out, size_t len, char *err);
+/* Make the runs directory dir when it is missing (the front end says
+ * where it is: the workbench's tui_file_runs_dir); -1 and err when it
+ * cannot be made. */
+int history_runs_make(const char *dir, char *err);
 /* The index file in dir. */
 int history_index_path(const char *dir, char *out, size_t len);
 /* Append one row (the header first when the file is new or empty). */

@@ -8,6 +8,10 @@
  * the reader for ever.  The reader reads at most the last
  * HISTORY_MAX_BYTES of the file, so the H screen never waits on a
  * large file either.
+ *
+ * Where the runs directory is comes from the front end (the workbench
+ * reads $SLIPWALL_RUNS, $XDG_DATA_HOME and $HOME: tui_file.c): the
+ * library reads no environment: configuration is passed, not read.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -62,29 +66,10 @@ static int history_open(const char *path, int flags, int *missing,
 	return fd;
 }
 
-int history_runs_dir(char *out, size_t len, char *err)
+int history_runs_make(const char *dir, char *err)
 {
-	const char *env = getenv("SLIPWALL_RUNS");
-	const char *xdg = getenv("XDG_DATA_HOME");
-	const char *home = getenv("HOME");
-	int n;
-
-	if (env && env[0])
-		n = snprintf(out, len, "%s", env);
-	else if (xdg && xdg[0] == '/')
-		n = snprintf(out, len, "%s/slipwall/runs", xdg);
-	else if (home && home[0])
-		n = snprintf(out, len, "%s/.local/share/slipwall/runs", home);
-	else {
-		sw_fail(err, SW_EIO, "no place for the samples files: set SLIPWALL_RUNS or HOME");
-		return -1;
-	}
-	if (n < 0 || (size_t)n >= len) {
-		sw_fail(err, SW_EIO, "the runs directory's path is too long");
-		return -1;
-	}
-	if (sys_mkdir_p(out, NULL, 0)) {
-		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", out,
+	if (sys_mkdir_p(dir, NULL, 0)) {
+		sw_fail(err, SW_EIO, "%s: cannot make the directory: %s", dir,
 			strerror(errno));
 		return -1;
 	}

@@ -127,7 +127,7 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	t->cur_x = t->cur_y = NAN;	/* placed on a block by Tab */
 	localtime_r(&now, &tm);
 	strftime(t->session, sizeof t->session, "%Y%m%d-%H%M%S", &tm);
-	if (history_runs_dir(dir, sizeof dir, err) != 0 ||
+	if (tui_file_runs_dir(dir, sizeof dir, err) != 0 ||
 	    history_index_path(dir, t->hist_path, sizeof t->hist_path))
 		t->hist_path[0] = 0;
 	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
@@ -239,7 +239,7 @@ static void tui_finish(struct tui *t)
 	fflush(stdout);
 	free(t->hist);
 	free(t->prev_lam);
-	tui_history_free();
+	tui_history_free(t);
 	undo_free(&t->undo);
 	wall_free(t->w);
 }
@@ -264,6 +264,7 @@ int tui_main(const char *path)
 	setlocale(LC_ALL, "");
 	t->utf8 = !strcmp(nl_langinfo(CODESET), "UTF-8");
 	t->threads = mc_ncpu();
+	t->run_ended = tui_history_record;	/* tui_run.c: a run's row */
 	if (tui_signal_install()) {
 		fprintf(stderr, "slipwall: cannot install signal handlers\n");
 		wall_free(w);

@@ -5,9 +5,12 @@
  * Who does what, from the top of the calls down (a file calls only
  * files below it; tui_draw.c, tui_signal.c and tui_fatal.c call none):
  *   tui.c        tui_main: the terminal, the poll() loop, the screens
- *   tui_home.c   the main screen: its key table, its layout
- *   tui_help.c   the help screen
+ *   tui_home.c   the main screen: its layout, its keys through tui_keys.c
+ *   tui_help.c   the help screen, made from tui_keys.c's table
+ *   tui_keys.c   the one key table (dispatch, status line, help) and the
+ *                main screen's own keys
  *   tui_history.c the run history: its rows, the H screen, what q prints
+ *                (tui_run.c reaches it only through t->run_ended)
  *   tui_io.c     the keys that read and write files: save, open, report
  *   tui_edit.c   the edits of the wall (through src/lib/wedit.c), undo
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
@@ -92,6 +95,15 @@ struct tui_screen {
 
 typedef void (*tui_prompt_done)(struct tui *t, const char *text);
 
+/* Where the wall pane drew the wall last (tui_wall.c), for the mouse:
+ * screen cell (y + r, x + c) is the wall point (x0 + (c - c0) / sx,
+ * y1 - (r - r0) / sy). */
+struct tui_wall_view {
+	int ok;			/* 0: nothing drawn yet */
+	int y, x;		/* the screen cell of canvas cell (0, 0) */
+	double x0, y1, sx, sy, c0, r0;
+};
+
 struct tui {
 	struct wall *w;		/* the wall being sampled (finished) */
 	struct undo undo;	/* the walls before and after (u, U) */
@@ -109,6 +121,10 @@ struct tui {
 	int prev_run;
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
+	/* called when a run ends, its file closed and its tally whole
+	 * (tui_main sets tui_history_record): tui_run.c calls nothing above
+	 * it */
+	void (*run_ended)(struct tui *t);
 
 	struct tui_solve *solve;/* the solve thread (standard, gilbert) */
 	int has_std, has_gil;	/* the values below are known */
@@ -135,6 +151,16 @@ struct tui {
 	 * until the next key (tui_note) */
 	char note[2 * SW_ERRLEN];
 	char hist_err[SW_ERRLEN];	/* why the history is not kept */
+
+	/* the screens' own state: what each screen or pane keeps between
+	 * frames is here, not in its file (tui_signal.c and tui_fatal.c keep
+	 * theirs in statics: their signal handlers have no argument) */
+	int help_top;		/* help: lines scrolled away */
+	int hist_top;		/* H: lines scrolled away; -1: at the bottom */
+	struct history_row *hist_old;	/* H: rows of earlier sessions */
+	int hist_nold;
+	char hist_rerr[SW_ERRLEN + 64];	/* H: why they could not be read */
+	struct tui_wall_view wall_view;	/* the wall pane's last drawing */
 
 	int mech_sel;		/* 0: latest accepted; k: k-th most frequent */
 	int cursor_mode;	/* arrows move the block cursor, not the load */
@@ -195,10 +221,20 @@ int tui_signal_pending(void);
 /* tui_prompt.c */
 void tui_prompt(struct tui *t, const char *label, const char *initial,
 		tui_prompt_done done);
-void tui_prompt_key(struct tui *t, int ch);	/* while t->prompting */
+/* The prompt's keys (tui_keys.c's table), while t->prompting: */
+void tui_prompt_accept(struct tui *t, int ch);	/* Enter */
+void tui_prompt_cancel(struct tui *t, int ch);	/* Esc, Ctrl-G */
+void tui_prompt_erase(struct tui *t, int ch);	/* Backspace */
+void tui_prompt_clear(struct tui *t, int ch);	/* Ctrl-U */
+void tui_prompt_type(struct tui *t, int ch);	/* any other: typed */
 void tui_prompt_draw(struct tui *t, int y);
 
 /* tui_file.c */
+/* The runs directory: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs
+ * (an absolute $XDG_DATA_HOME), else ~/.local/share/slipwall/runs; made
+ * when missing.  -1 and err when there is no such place or it cannot be
+ * made. */
+int tui_file_runs_dir(char *out, size_t len, char *err);
 /* The wall's short name: file name without directory and .yaml. */
 void tui_file_stem(const struct wall *w, char *out, size_t len);
 /* The directory and name of the next samples file. */
@@ -239,7 +275,8 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w);
 /* The wall point under screen cell (y, x) in the last drawing; 0 if
  * none has been drawn. */
-int tui_wall_point(int y, int x, double *wx, double *wy);
+int tui_wall_point(const struct tui *t, int y, int x, double *wx,
+		   double *wy);
 
 /* tui_hist.c */
 void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w);
@@ -269,6 +306,36 @@ void tui_io_save(struct tui *t);	/* s: the wall and a summary */
 void tui_io_open(struct tui *t);	/* o: another wall */
 void tui_io_report(struct tui *t);	/* R: a directory */
 
+/* tui_keys.c: the workbench's keys, one table: the main screen's
+ * dispatch, the status line and the help are made from it */
+enum tui_keys_mode {
+	TUI_KEYS_MAIN,		/* the main screen */
+	TUI_KEYS_CURSOR,	/* the main screen in block cursor mode */
+	TUI_KEYS_PROMPT,	/* the prompt line */
+	TUI_KEYS_MODES
+};
+#define TUI_KEYS_NAME_W 12	/* the help's column of names */
+struct tui_key {
+	int ch[9];		/* the codes bound to it, 0 after the last */
+	const char *name;	/* as the help shows it: "f / F" */
+	const char *help;	/* what it does; "\n" starts a new line */
+	struct {
+		const char *text;	/* "f/F mu" */
+		int at;			/* its place, 1 first; 0: not shown */
+	} bar[TUI_KEYS_MODES];	/* on the status line, in each mode */
+	void (*fn)(struct tui *t, int ch);	/* NULL: only a screen */
+	enum tui_screen_id next;	/* the screen to show next */
+	int prompt;		/* a key of the prompt line */
+};
+/* The key bound to ch on the main screen or (prompt) the prompt line;
+ * NULL if none. */
+const struct tui_key *tui_keys_find(int prompt, int ch);
+/* The status line of the mode: the labels in their order, as many as
+ * fit in cols - 1. */
+void tui_keys_bar(enum tui_keys_mode mode, int cols, char *buf, size_t len);
+/* Line `line` of the keys' part of the help; 0 past the last. */
+int tui_keys_help(int line, char *buf, size_t len);
+
 /* tui_home.c: the main screen */
 void tui_home_init(struct tui *t);
 enum tui_screen_id tui_home_key(struct tui *t, int ch);
@@ -279,7 +346,7 @@ void tui_history_record(struct tui *t);	/* the current run ends */
 void tui_history_lines(const struct tui *t, const struct history_row *h,
 		       char *a, size_t alen, char *b, size_t blen);
 void tui_history_print(const struct tui *t, FILE *f);
-void tui_history_free(void);
+void tui_history_free(struct tui *t);	/* the H screen's rows */
 void tui_history_init(struct tui *t);
 enum tui_screen_id tui_history_key(struct tui *t, int ch);
 void tui_history_draw(struct tui *t);

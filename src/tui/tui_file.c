@@ -8,7 +8,8 @@
  * <wall>-<YYYYmmdd-HHMMSS>-<run>.csv: <wall> is the wall file's name
  * without .yaml, <run> counts the runs of the session (each edit, reset
  * or open starts one).  The file streams from the first sample, so
- * saving never copies it.
+ * saving never copies it.  The environment is read here, not in the
+ * library: history_runs_make is given the directory.
  *
  * Two sessions started in the same second ask for the same name.  The
  * name is taken by creating the file (O_CREAT | O_EXCL), which only one
@@ -21,6 +22,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
@@ -42,11 +44,35 @@ void tui_file_stem(const struct wall *w, char *out, size_t len)
 		snprintf(out, len, "wall");
 }
 
+int tui_file_runs_dir(char *out, size_t len, char *err)
+{
+	const char *env = getenv("SLIPWALL_RUNS");
+	const char *xdg = getenv("XDG_DATA_HOME");
+	const char *home = getenv("HOME");
+	int n;
+
+	if (env && env[0])
+		n = snprintf(out, len, "%s", env);
+	else if (xdg && xdg[0] == '/')
+		n = snprintf(out, len, "%s/slipwall/runs", xdg);
+	else if (home && home[0])
+		n = snprintf(out, len, "%s/.local/share/slipwall/runs", home);
+	else {
+		sw_fail(err, SW_EIO, "no place for the samples files: set SLIPWALL_RUNS or HOME");
+		return -1;
+	}
+	if (n < 0 || (size_t)n >= len) {
+		sw_fail(err, SW_EIO, "the runs directory's path is too long");
+		return -1;
+	}
+	return history_runs_make(out, err);
+}
+
 int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
 {
 	char dir[PATH_MAX], stem[128], stamp[32];
 
-	if (history_runs_dir(dir, sizeof dir, err))
+	if (tui_file_runs_dir(dir, sizeof dir, err))
 		return -1;
 	time_t now = time(NULL);
 	struct tm tm;

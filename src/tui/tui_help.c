@@ -1,54 +1,21 @@
 /*
- * tui_help.c - the help screen: every key of the workbench, from one
- * table (docs/workbench.md lists the same).  Sampling goes on behind it;
- * any key returns to the main screen, and j/k or the arrows scroll when
- * the terminal is shorter than the list.
+ * tui_help.c - the help screen: every key of the workbench, made from
+ * the one key table (tui_keys.c; docs/workbench.md lists the same, and
+ * tests/keys_doc.sh checks it does), then a few notes.  Sampling goes
+ * on behind it; any key returns to the main screen, and j/k or the
+ * arrows scroll when the terminal is shorter than the list.
  */
+#include <stdio.h>
+
 #include <curses.h>
 
 #include "tui.h"
 
-static const char *const tui_help_lines[] = {
-	"slipwall workbench: keys",
-	"",
-	"  ?            this help (any key returns)",
-	"  q            quit: print the history and every file written",
-	"  space, p     pause / resume sampling (resume continues the same run)",
-	"  r            reset: a new run on the same wall",
-	"  n            sample target (prompt)",
-	"  m / M        next / previous mechanism: latest, then by frequency",
-	"  H            run history: one row per run of the session (any key returns)",
-	"",
-	"  u            undo the last edit of the wall (100 steps)",
-	"  U, Ctrl-R    redo",
-	"  f / F        friction of bed and head joints +0.05 / -0.05",
-	"  g            friction, typed: bed or bed,head",
-	"  e / E        contact depth +0.05 / -0.05 (0 .. 0.5)",
-	"  i            contact points: depth <-> anywhere",
-	"  arrows, hjkl move the load along the wall's outline (h left, j down,",
-	"               k up, l right; in block cursor mode: move the cursor)",
-	"  d / D        turn the load 45 degrees counter-clockwise / clockwise",
-	"  P            load position and direction, typed: x,y or x,y,dx,dy",
-	"  c            courses (prompt)",
-	"  L            blocks per course (prompt; length = that many widths)",
-	"  w            block width,height (prompt)",
-	"  b            bond: running <-> stack",
-	"  B            first course: half <-> full block",
-	"  Tab          block cursor on/off (arrows then move the cursor)",
-	"  a / x        add a block at / remove the block under the cursor",
-	"               (a removed block of the courses comes back with its id)",
-	"",
-	"  s            save the wall (YAML) and a summary (JSON)",
-	"  R            write the report of this run (figures, report.md)",
-	"  o            open another wall file",
-	"  Ctrl-L       redraw",
-	"  mouse        left click: select the block under it (block cursor);",
-	"               right click: move the load to the nearest face there",
-	"",
+/* The help: a title, the keys (tui_keys_help: their table), then this. */
+static const char *const tui_help_notes[] = {
 	"Every edit starts a new run at once and can be undone; * in the title:",
 	"the wall differs from the one opened or saved.  The samples of every",
-	"run stay in their file.  In a prompt: Enter accepts, Esc cancels,",
-	"Ctrl-U clears.  Samples and the history (history.tsv) go to",
+	"run stay in their file.  Samples and the history (history.tsv) go to",
 	"$SLIPWALL_RUNS (default ~/.local/share/slipwall/runs).",
 	"Wall drawing: filled blocks move,",
 	"arrows show their motion, = a sliding joint, : an opening joint,",
@@ -56,27 +23,46 @@ static const char *const tui_help_lines[] = {
 	"the outline under the bars: the previous run.  NO_COLOR=1: no colours.",
 };
 
-#define TUI_HELP_N ((int)(sizeof tui_help_lines / sizeof *tui_help_lines))
+#define TUI_HELP_NOTES ((int)(sizeof tui_help_notes / sizeof *tui_help_notes))
 
-static int tui_help_top;
+/* The help's lines: the title, a blank, the keys, a blank, the notes. */
+static int tui_help_count(void)
+{
+	char buf[160];
+	int n = 0;
+	while (tui_keys_help(n, buf, sizeof buf))
+		n++;
+	return 2 + n + 1 + TUI_HELP_NOTES;
+}
+
+static void tui_help_line(int i, char *buf, size_t len)
+{
+	int nkeys = tui_help_count() - 3 - TUI_HELP_NOTES;
+	buf[0] = 0;
+	if (i == 0)
+		snprintf(buf, len, "slipwall workbench: keys");
+	else if (i >= 2 && i < 2 + nkeys)
+		tui_keys_help(i - 2, buf, len);
+	else if (i >= 3 + nkeys)
+		snprintf(buf, len, "%s", tui_help_notes[i - 3 - nkeys]);
+}
 
 void tui_help_init(struct tui *t)
 {
-	(void)t;
-	tui_help_top = 0;
+	t->help_top = 0;
 }
 
 enum tui_screen_id tui_help_key(struct tui *t, int ch)
 {
 	int page = t->rows - 2;
 	if (ch == 'j' || ch == KEY_DOWN) {
-		if (tui_help_top + page < TUI_HELP_N)
-			tui_help_top++;
+		if (t->help_top + page < tui_help_count())
+			t->help_top++;
 		return TUI_SCREEN_HELP;
 	}
 	if (ch == 'k' || ch == KEY_UP) {
-		if (tui_help_top > 0)
-			tui_help_top--;
+		if (t->help_top > 0)
+			t->help_top--;
 		return TUI_SCREEN_HELP;
 	}
 	return TUI_SCREEN_MAIN;	/* q too: it leaves the help, not the program */
@@ -84,11 +70,14 @@ enum tui_screen_id tui_help_key(struct tui *t, int ch)
 
 void tui_help_draw(struct tui *t)
 {
-	for (int i = 0; i + tui_help_top < TUI_HELP_N && i < t->rows - 1; i++) {
-		if (i + tui_help_top == 0)
+	char buf[160];
+	int n = tui_help_count();
+	for (int i = 0; i + t->help_top < n && i < t->rows - 1; i++) {
+		tui_help_line(i + t->help_top, buf, sizeof buf);
+		if (i + t->help_top == 0)
 			attron(A_BOLD);
-		tui_text(i, 1, t->cols - 2, tui_help_lines[i + tui_help_top]);
-		if (i + tui_help_top == 0)
+		tui_text(i, 1, t->cols - 2, buf);
+		if (i + t->help_top == 0)
 			attroff(A_BOLD);
 	}
 	attron(A_REVERSE);

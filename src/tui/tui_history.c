@@ -149,25 +149,20 @@ void tui_history_print(const struct tui *t, FILE *f)
 
 /* ---- the H screen ---- */
 
-static int tui_history_top;	/* rows scrolled away */
-static struct history_row *tui_history_old;	/* earlier sessions */
-static int tui_history_nold;
-static char tui_history_rerr[SW_ERRLEN + 64];	/* the index could not be read */
+/* Its state is t's: hist_top, hist_old, hist_nold, hist_rerr. */
 
 void tui_history_init(struct tui *t)
 {
 	char err[SW_ERRLEN];
 	struct history_row *all = NULL;
 	int n = 0;
-	free(tui_history_old);
-	tui_history_old = NULL;
-	tui_history_nold = 0;
-	tui_history_top = -1;	/* at the bottom */
-	tui_history_rerr[0] = 0;
+	tui_history_free(t);
+	t->hist_top = -1;	/* at the bottom */
+	t->hist_rerr[0] = 0;
 	if (!t->hist_path[0])
 		return;
 	if (history_read(t->hist_path, TUI_HISTORY_OLD, &all, &n, err) != SW_OK) {
-		snprintf(tui_history_rerr, sizeof tui_history_rerr,
+		snprintf(t->hist_rerr, sizeof t->hist_rerr,
 			 "earlier sessions not shown: %s", err);
 		return;
 	}
@@ -176,27 +171,26 @@ void tui_history_init(struct tui *t)
 	for (int i = 0; i < n; i++)
 		if (strcmp(all[i].session, t->session))
 			all[k++] = all[i];
-	tui_history_old = all;
-	tui_history_nold = k;
+	t->hist_old = all;
+	t->hist_nold = k;
 }
 
-void tui_history_free(void)
+void tui_history_free(struct tui *t)
 {
-	free(tui_history_old);
-	tui_history_old = NULL;
-	tui_history_nold = 0;
+	free(t->hist_old);
+	t->hist_old = NULL;
+	t->hist_nold = 0;
 }
 
 enum tui_screen_id tui_history_key(struct tui *t, int ch)
 {
-	(void)t;
 	if (ch == 'j' || ch == KEY_DOWN) {
-		tui_history_top++;
+		t->hist_top++;
 		return TUI_SCREEN_HISTORY;
 	}
 	if (ch == 'k' || ch == KEY_UP) {
-		if (tui_history_top > 0)
-			tui_history_top--;
+		if (t->hist_top > 0)
+			t->hist_top--;
 		return TUI_SCREEN_HISTORY;
 	}
 	return TUI_SCREEN_MAIN;
@@ -249,13 +243,13 @@ void tui_history_draw(struct tui *t)
 	if (running)
 		tui_history_row(t, &live);
 
-	int nrows = tui_history_nold + t->nhist + running;
+	int nrows = t->hist_nold + t->nhist + running;
 	int body = R - 3;	/* rows 1 .. R-3 */
-	int lines = 3 * nrows + (tui_history_nold ? 1 : 0) +
-		    (tui_history_rerr[0] ? 1 : 0) + (t->hist_err[0] ? 1 : 0);
+	int lines = 3 * nrows + (t->hist_nold ? 1 : 0) +
+		    (t->hist_rerr[0] ? 1 : 0) + (t->hist_err[0] ? 1 : 0);
 	int maxtop = lines > body ? lines - body : 0;
-	if (tui_history_top < 0 || tui_history_top > maxtop)
-		tui_history_top = maxtop;
+	if (t->hist_top < 0 || t->hist_top > maxtop)
+		t->hist_top = maxtop;
 
 	snprintf(buf, sizeof buf, " run history: %d runs this session%s%s",
 		 t->nhist + running,
@@ -271,9 +265,9 @@ void tui_history_draw(struct tui *t)
 	tui_text(0, 0, C, ab);
 	attroff(A_REVERSE);
 
-	int y = 1 - tui_history_top, y1 = R - 2;
+	int y = 1 - t->hist_top, y1 = R - 2;
 	/* why the index was not written or read, above the rows */
-	const char *why[] = {t->hist_err, tui_history_rerr};
+	const char *why[] = {t->hist_err, t->hist_rerr};
 	for (int i = 0; i < 2; i++) {
 		if (!why[i][0])
 			continue;
@@ -282,12 +276,12 @@ void tui_history_draw(struct tui *t)
 			tui_text(y, 0, C, buf);
 		y++;
 	}
-	if (tui_history_nold) {
+	if (t->hist_nold) {
 		if (y >= 1 && y < y1)
 			tui_text(y, 0, C, "earlier sessions (session, run):");
 		y++;
-		for (int i = 0; i < tui_history_nold; i++)
-			y += tui_history_draw_row(t, y, y1, &tui_history_old[i], 0, 1);
+		for (int i = 0; i < t->hist_nold; i++)
+			y += tui_history_draw_row(t, y, y1, &t->hist_old[i], 0, 1);
 	}
 	for (int i = 0; i < t->nhist; i++)
 		y += tui_history_draw_row(t, y, y1, &t->hist[i], 0, 0);

@@ -2,8 +2,9 @@
  * tui_prompt.c - the prompt line of the main screen: a label, a text
  * being typed, and what to do with it on Enter (a tui_prompt_done
  * callback: an edit typed in, a path to save to).  While t->prompting,
- * the main screen hands every key here (tui_home.c) and draws the line
- * with tui_prompt_draw.
+ * the main screen hands the prompt's keys of the key table (tui_keys.c:
+ * Enter, Esc, Backspace, Ctrl-U) to their handlers here and every other
+ * key to tui_prompt_type, and draws the line with tui_prompt_draw.
  */
 #include <stdio.h>
 #include <string.h>
@@ -22,27 +23,42 @@ void tui_prompt(struct tui *t, const char *label, const char *initial,
 	t->pdone = done;
 }
 
-void tui_prompt_key(struct tui *t, int ch)
+void tui_prompt_accept(struct tui *t, int ch)
 {
-	if (ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
-		char text[sizeof t->pbuf];
-		memcpy(text, t->pbuf, sizeof text);
-		t->prompting = 0;
-		t->pdone(t, text);
-	} else if (ch == 27 || ch == 7) {	/* Esc, Ctrl-G */
-		t->prompting = 0;
-		tui_message(t, 0, "cancelled");
-	} else if (ch == KEY_BACKSPACE || ch == 127 || ch == 8) {
-		/* remove one UTF-8 character */
-		while (t->plen > 0 &&
-		       ((unsigned char)t->pbuf[--t->plen] & 0xc0) == 0x80)
-			;
-		t->pbuf[t->plen] = 0;
-	} else if (ch == 21) {			/* Ctrl-U */
-		t->plen = 0;
-		t->pbuf[0] = 0;
-	} else if (ch >= 32 && ch < 256 && ch != 127 &&
-		   t->plen < (int)sizeof t->pbuf - 1) {
+	char text[sizeof t->pbuf];
+	(void)ch;
+	memcpy(text, t->pbuf, sizeof text);
+	t->prompting = 0;
+	t->pdone(t, text);
+}
+
+void tui_prompt_cancel(struct tui *t, int ch)
+{
+	(void)ch;
+	t->prompting = 0;
+	tui_message(t, 0, "cancelled");
+}
+
+void tui_prompt_erase(struct tui *t, int ch)
+{
+	(void)ch;
+	/* remove one UTF-8 character */
+	while (t->plen > 0 && ((unsigned char)t->pbuf[--t->plen] & 0xc0) == 0x80)
+		;
+	t->pbuf[t->plen] = 0;
+}
+
+void tui_prompt_clear(struct tui *t, int ch)
+{
+	(void)ch;
+	t->plen = 0;
+	t->pbuf[0] = 0;
+}
+
+void tui_prompt_type(struct tui *t, int ch)
+{
+	if (ch >= 32 && ch < 256 && ch != 127 &&
+	    t->plen < (int)sizeof t->pbuf - 1) {
 		t->pbuf[t->plen++] = (char)ch;
 		t->pbuf[t->plen] = 0;
 	}

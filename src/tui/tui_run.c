@@ -20,7 +20,9 @@
  *
  * tui_run_end() is called before the wall changes and at exit: it
  * drains the pool the same way, so every computed sample has its row,
- * and closes the file (which stays on disk).
+ * and closes the file (which stays on disk); then t->run_ended (the
+ * run history's row, set by tui_main) sees the whole tally before it
+ * is freed.
  */
 #include <math.h>
 #include <stdio.h>
@@ -147,7 +149,8 @@ void tui_run_end(struct tui *t)
 	if (r->log && runlog_close(r->log, err) != SW_OK)
 		tui_message(t, 1, "samples file: %s", err);
 	r->log = NULL;
-	tui_history_record(t);
+	if (t->run_ended)
+		t->run_ended(t);	/* the history's row (tui_main) */
 	run_free(&r->core);
 	tally_free(&r->tally);
 	free(r->latest_joint);

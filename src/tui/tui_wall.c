@@ -254,16 +254,14 @@ static void tui_wall_coarse(const struct tui *t, struct tui_canvas *cv,
 		}
 }
 
-/* The map of the last drawing, for the mouse (the UI thread only). */
-static struct tui_map tui_wall_last;
-static int tui_wall_last_ok, tui_wall_last_y, tui_wall_last_x;
-
-int tui_wall_point(int y, int x, double *wx, double *wy)
+/* The map of the last drawing is t->wall_view, for the mouse. */
+int tui_wall_point(const struct tui *t, int y, int x, double *wx,
+		   double *wy)
 {
-	const struct tui_map *m = &tui_wall_last;
-	if (!tui_wall_last_ok)
+	const struct tui_wall_view *m = &t->wall_view;
+	if (!m->ok)
 		return 0;
-	double r = y - tui_wall_last_y, c = x - tui_wall_last_x;
+	double r = y - m->y, c = x - m->x;
 	*wx = m->x0 + (c - m->c0) / m->sx;
 	*wy = m->y1 - (r - m->r0) / m->sy;
 	return 1;
@@ -473,10 +471,9 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 
 	double cur[2] = {t->cur_x, t->cur_y};
 	tui_wall_fit(wall, t->cursor_mode ? cur : NULL, cv.w, cv.h, &m);
-	tui_wall_last = m;
-	tui_wall_last_ok = 1;
-	tui_wall_last_y = y0 + 1;
-	tui_wall_last_x = x0;
+	t->wall_view = (struct tui_wall_view){
+		.ok = 1, .y = y0 + 1, .x = x0, .x0 = m.x0, .y1 = m.y1,
+		.sx = m.sx, .sy = m.sy, .c0 = m.c0, .r0 = m.r0};
 	tui_wall_fill(wall, &cv, &m);
 	double cmin = INFINITY, cmax = -INFINITY;
 	/* coarse: head joints when a course has its row, else dots */
