@@ -1,5 +1,6 @@
 /*
- * solve.h - the single-solution methods of SPEC section 2, all on the
+ * solve.h - the single-solution methods (docs/method.md, "Single-solution
+ * methods"), all on the
  * classical contact (points at the interface ends, d = 0):
  *
  *   standard  associative limit analysis: max lambda with each contact
