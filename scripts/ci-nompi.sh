@@ -27,4 +27,4 @@ fi
 [ "$rc" = 0 ] || meson_failures "$dir"
 meson_counts "$dir/test-output.txt" "$rc"
 echo "tests: $mpassed passed, $mfailed failed"
-[ "$rc" = 0 ]
+[ "$rc" = 0 ] && [ "$mfailed" = 0 ]

@@ -2,13 +2,25 @@
 # (test.sh, ci-nompi.sh, ci-sanitize.sh).
 # meson_counts LOG RC: from meson test's output LOG and its exit status
 # RC, set mpassed (Ok) and mfailed (Fail + Timeout; at least 1 when RC
-# is not 0, so a run that failed without a count is not a pass).
+# is not 0, so a run that failed without a count is not a pass).  In CI
+# (CI=true) and under scripts/test.sh (SLIPWALL_TEST_TOOLS=required)
+# every test must run: a test that meson reports skipped (a TAP plan
+# "1..0 # SKIP", or exit status 77) is a failure too, and is named.
+# (tests/tap.sh's skip_all and tap.h's tap_skip already fail there;
+# this catches a skip that goes around them.)
 meson_counts() {
 	mpassed=$(sed -n 's/^Ok: *\([0-9]*\).*/\1/p' "$1" | tail -n 1)
 	mfailed=$(sed -n 's/^Fail: *\([0-9]*\).*/\1/p' "$1" | tail -n 1)
 	_t=$(sed -n 's/^Timeout: *\([0-9]*\).*/\1/p' "$1" | tail -n 1)
+	_s=$(sed -n 's/^Skipped: *\([0-9]*\).*/\1/p' "$1" | tail -n 1)
 	mpassed=${mpassed:-0}
 	mfailed=$(( ${mfailed:-0} + ${_t:-0} ))
+	if [ "${_s:-0}" != 0 ] && { [ "${CI:-}" = true ] ||
+		[ "${SLIPWALL_TEST_TOOLS:-}" = required ]; }; then
+		grep -E '^ *[0-9]+/[0-9]+ .* SKIP ' "$1" |
+			sed 's/^/--- skipped, a failure here (CI=true or SLIPWALL_TEST_TOOLS=required): /'
+		mfailed=$(( mfailed + _s ))
+	fi
 	if [ "$2" != 0 ] && [ "$mfailed" = 0 ]; then mfailed=1; fi
 }
 

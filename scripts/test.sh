@@ -17,4 +17,4 @@ cat build/test-output.txt
 [ "$rc" = 0 ] || meson_failures build
 meson_counts build/test-output.txt "$rc"
 echo "tests: $mpassed passed, $mfailed failed"
-[ "$rc" = 0 ]
+[ "$rc" = 0 ] && [ "$mfailed" = 0 ]

@@ -2,8 +2,12 @@
  * json.h - a small streaming JSON writer (no DOM).
  *
  * The caller opens objects and arrays and names keys; the writer keeps
- * the commas and the nesting right and prints doubles with 17 significant
- * digits (NaN and infinities become null).
+ * the commas and the nesting right (at most 63 levels are tracked) and
+ * prints each double with the fewest of 15, 16 or 17 significant digits
+ * that read back to the same double (0 and -0 as "0"; NaN and
+ * infinities become null).  Strings are escaped: '"', '\\', \n, \r, \t,
+ * the other control characters (C0, DEL, C1) as \u00XX, bytes that are
+ * not valid UTF-8 as \ufffd; a NULL string is written as "".
  */
 #ifndef SLIPWALL_JSON_H
 #define SLIPWALL_JSON_H

@@ -1,7 +1,7 @@
 /*
  * runlog.h - the samples file: one CSV row per sample, streamed.
  *
- * Format (SPEC section 4): a header line
+ * Format (docs/run.md, "The samples file"): a header line
  *   sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1,...,xa_m,xb_m
  * then one row per sample in index order (0-based sample numbers), with
  * status "accepted" or the rejection reason (sample_status_name), loads

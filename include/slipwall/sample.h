@@ -1,17 +1,21 @@
 /*
- * sample.h - one Monte Carlo sample of SPEC section 2, and the pieces the
- * single-solution methods reuse.
+ * sample.h - one Monte Carlo sample (docs/method.md, "One sample"), and
+ * the pieces the single-solution methods reuse.
  *
- * A `struct sample_ws` holds the three LPs of one wall (the associative
- * problem for LP-max and LP-min, the fixed-capacity SLP problem, the
- * kinematic problem of the onset check) and keeps their bases from sample
- * to sample: every solve is a warm start.  It belongs to one thread (GLPK
- * rule): create, use and free it on the same thread.  The wall it reads
- * must stay alive and unchanged.
+ * A `struct sample_ws` holds six LPs of one wall, one per role (src/lib/
+ * sample.c): LP-max, the standing check and LP-min (the associative
+ * problem), LP1 and LP2 (the SLP's fixed-capacity problem and its
+ * stabilisation), and the kinematic LP of the onset check.  Each sample
+ * starts every role from the basis sample_start() names (`previous`
+ * keeps the last sample's bases); within a sample every re-solve of a
+ * role is a warm start.  It belongs to one thread (GLPK rule): create,
+ * use and free it on the same thread.  The wall it reads must stay alive
+ * and unchanged.
  *
  * Units: sample_result carries real units (load factor as the user reads
  * it: N for a point load of magnitude 1, a coefficient for a body load;
- * forces in N; velocities normalised so the largest block speed is 1).
+ * forces in N; velocities and joint rates normalised so that the largest
+ * block speed or rotation rate is 1).
  */
 #ifndef SLIPWALL_SAMPLE_H
 #define SLIPWALL_SAMPLE_H
@@ -140,8 +144,9 @@ struct sample_ws *sample_ws_new_auto_large(const struct wall *w);
 void sample_ws_free(struct sample_ws *ws);
 
 
-/* Steps 2-5 of docs/method.md for the draw d (contact points, friction).
- * Fills r (which must have been sample_result_init'ed for the same wall). */
+/* Steps 2-6 of docs/method.md ("One sample") for the draw d (contact
+ * points, friction).  Fills r (which must have been sample_result_init'ed
+ * for the same wall). */
 void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		const struct sample_opts *o, struct sample_result *r);
 

@@ -41,7 +41,7 @@
 /* wallfile  YAML wall files in and out, every error with its line and
  *           column; saves that keep the author's layout */
 #include "slipwall/wallfile.h"
-/* sample    one Monte Carlo sample (SPEC section 2): its LPs, one
+/* sample    one Monte Carlo sample (docs/method.md): its LPs, one
  *           answer per set of contact points whatever the solver's path */
 #include "slipwall/sample.h"
 /* solve     the single-solution methods: standard, gilbert, global */

@@ -1,6 +1,7 @@
 /*
- * solve.h - the single-solution methods of SPEC section 2, all on the
- * classical contact (points at the interface ends, d = 0):
+ * solve.h - the single-solution methods (docs/method.md, "Single-solution
+ * methods"), all on the classical contact (points at the interface ends,
+ * d = 0):
  *
  *   standard  associative limit analysis: max lambda with each contact
  *             point n >= 0, |t| <= mu n.  An upper value (may be unsafe).

@@ -1,5 +1,5 @@
 /*
- * wallfile.h - wall files in YAML (SPEC section 3, docs/wall-format.md).
+ * wallfile.h - wall files in YAML (docs/wall-format.md).
  *
  * Reading uses libyaml's document API, with checks libyaml does not make:
  * duplicate keys, unknown keys, types, finite numbers, alias expansion

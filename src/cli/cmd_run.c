@@ -1,6 +1,6 @@
 /*
  * cmd_run.c - `slipwall run`: the Monte Carlo analysis from the command
- * line (SPEC sections 2 and 4; docs/run.md is the user's page).
+ * line (docs/method.md, "One sample"; docs/run.md is the user's page).
  *
  * The run itself is the library's (run.h): the worker pool (mc.c)
  * computes the samples; this thread takes them in index order through

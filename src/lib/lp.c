@@ -699,7 +699,7 @@ enum lp_status lp_solve(struct lp *p, enum lp_method m)
 }
 
 /*
- * Tie-break (SPEC section 2, "One answer per sample").  The optimal face
+ * Tie-break (docs/method.md, "One answer per sample").  The optimal face
  * of the LP just solved is, by complementary slackness with the dual
  * solution GLPK holds, the set of feasible points at which every
  * non-basic variable with a non-zero reduced cost stays where it is (this

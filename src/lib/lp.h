@@ -119,7 +119,7 @@ int lp_solve_square(int n, int nnz, const int *ri, const int *ci,
 /* 1 if the optimum is unique as far as the reduced costs tell: no
  * non-basic variable (except fixed ones) has a zero reduced cost. */
 int lp_unique(const struct lp *p, double tol);
-/* The tie-break of SPEC section 2 ("One answer per sample"), right after
+/* The tie-break of docs/method.md, "One answer per sample", right after
  * an LP_OPTIMAL solve of p: if some non-basic variable has a reduced cost
  * |d| <= tol, the optimum may not be unique, and p is solved again over
  * its optimal face (every non-basic variable with |d| > tol held where it

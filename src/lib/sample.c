@@ -1,5 +1,5 @@
 /*
- * sample.c - one Monte Carlo sample (SPEC section 2), the hot loop.
+ * sample.c - one Monte Carlo sample (docs/method.md), the hot loop.
  *
  * Six GLPK problems per wall and thread, one per LP role, built once
  * per workspace.  Each sample rewrites what its contact points change
@@ -708,7 +708,7 @@ static void tie_weights(struct sample_ws *ws, const double *xi)
 }
 
 /* LP2's objective: min sum (p + q) + TIE_LP2 sum r_j N_j, the tie-break
- * of SPEC section 2 folded into LP2's objective, so that LP2's optimum
+ * (docs/method.md) folded into LP2's objective, so that LP2's optimum
  * is nearly always unique and no second LP runs (lp2_tiebreak is the
  * safety net).  The closeness term dominates: a move of the normal
  * forces changes sum r_j N_j by at most 2 per unit of sum |dN|, so the

@@ -38,7 +38,7 @@
 #include "slipwall/stats.h"
 #include "slipwall/status.h"
 
-/* Confidence of the interval of the characteristic value (SPEC 2). */
+/* Confidence of the interval of the characteristic value (docs/statistics.md). */
 #define STATS_P05_CONF 0.99
 /* Largest n*m for the exact KS lattice count (O(n m) time). */
 #define STATS_KS_EXACT_MAX 10000000.0

@@ -1,5 +1,5 @@
 /*
- * wallfile.c - reading and writing wall files (SPEC section 3,
+ * wallfile.c - reading and writing wall files (the format:
  * docs/wall-format.md).
  *
  * Called by the command line and the workbench; returns a finished

@@ -7,17 +7,138 @@
  * gives exactly those samples of the whole run; and the positions scale
  * with the depth (the common random numbers of compare --fit-depth);
  * a million samples of one run draw from a million distinct streams.
+ * mc_free of a running pool can fail only by not returning: a watchdog
+ * thread turns a hang into a failing TAP line within WATCHDOG_SECONDS
+ * (and the watchdog itself is tested first, on a call that hangs).
  */
+#include <errno.h>
 #include <math.h>
+#include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "slipwall/mc.h"
 #include "slipwall/wallfile.h"
 #include "tap.h"
 
 #define N 48
+
+/* mc_free of a running pool stops 2 threads each within a sample (a
+ * few ms; under TSan some 0.1 s): 30 s is a hang, not a slow machine */
+#define WATCHDOG_SECONDS 30
+
+/*
+ * A watchdog for a call that can fail only by hanging: watchdog_start
+ * before it, watchdog_stop after it.  If the call has not returned
+ * within `seconds`, the watchdog thread prints "not ok N - WHAT (did not
+ * return within S s)" as the next TAP line, then the plan, and ends the
+ * process with status 1: a failure with a message, not meson's timeout
+ * minutes later.
+ */
+struct watchdog {
+	pthread_t thread;
+	pthread_mutex_t mu;
+	pthread_cond_t cv;
+	int done, seconds, number;
+	const char *what;
+};
+
+static void *watchdog_main(void *arg)
+{
+	struct watchdog *d = arg;
+	struct timespec end;
+	int rc = 0, hung;
+	clock_gettime(CLOCK_REALTIME, &end);
+	end.tv_sec += d->seconds;
+	pthread_mutex_lock(&d->mu);
+	while (!d->done && rc != ETIMEDOUT)
+		rc = pthread_cond_timedwait(&d->cv, &d->mu, &end);
+	hung = !d->done;
+	pthread_mutex_unlock(&d->mu);
+	if (hung) {
+		printf("not ok %d - %s (did not return within %d s)\n1..%d\n",
+		       d->number, d->what, d->seconds, d->number);
+		fflush(stdout);
+		_exit(1);
+	}
+	return NULL;
+}
+
+static void watchdog_start(struct watchdog *d, int seconds, const char *what)
+{
+	d->done = 0;
+	d->seconds = seconds;
+	d->what = what;
+	d->number = tap_n + 1;	/* the check that follows the call */
+	pthread_mutex_init(&d->mu, NULL);
+	pthread_cond_init(&d->cv, NULL);
+	if (pthread_create(&d->thread, NULL, watchdog_main, d) != 0) {
+		printf("Bail out! cannot start the watchdog thread\n");
+		exit(1);
+	}
+}
+
+static void watchdog_stop(struct watchdog *d)
+{
+	pthread_mutex_lock(&d->mu);
+	d->done = 1;
+	pthread_cond_signal(&d->cv);
+	pthread_mutex_unlock(&d->mu);
+	pthread_join(d->thread, NULL);
+	pthread_mutex_destroy(&d->mu);
+	pthread_cond_destroy(&d->cv);
+}
+
+/* The watchdog's own failure path, in a child process (before any other
+ * thread exists): a call that hangs (pause) under a 1 s watchdog must
+ * end the child within seconds, with status 1, a "not ok" line that
+ * names the call and a plan. */
+static void test_watchdog(void)
+{
+	int fd[2];
+	char out[512];
+	size_t len = 0;
+	ssize_t k;
+	int status = 0;
+	time_t t0 = time(NULL);
+	fflush(stdout);
+	if (pipe(fd) != 0) {
+		tap_ok(0, "watchdog: pipe");
+		return;
+	}
+	pid_t pid = fork();
+	if (pid == 0) {
+		struct watchdog d;
+		dup2(fd[1], STDOUT_FILENO);
+		close(fd[0]);
+		close(fd[1]);
+		tap_n = 6;
+		watchdog_start(&d, 1, "a call that hangs");
+		for (;;)
+			pause();
+	}
+	close(fd[1]);
+	while (pid > 0 && len < sizeof out - 1 &&
+	       (k = read(fd[0], out + len, sizeof out - 1 - len)) > 0)
+		len += (size_t)k;
+	out[len] = 0;
+	close(fd[0]);
+	if (pid > 0)
+		waitpid(pid, &status, 0);
+	tap_ok(pid > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 1 &&
+	       !strcmp(out, "not ok 7 - a call that hangs (did not return "
+		       "within 1 s)\n1..7\n") && time(NULL) - t0 < 10,
+	       "watchdog: a call hung past 1 s is a failing TAP line and a "
+	       "plan, and the process ends (status %d, %lld s)",
+	       WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+	       (long long)(time(NULL) - t0));
+	if (strncmp(out, "not ok 7 -", 10))
+		tap_diag("the child wrote: %s", out);
+}
 
 struct run {
 	long n;
@@ -177,10 +298,16 @@ static void test_stop(const struct wall *w)
 	record_free(&it);
 	mc_free(m);
 
-	/* freeing a pool nobody popped from must not hang */
+	/* freeing a pool nobody popped from must not hang: a hang fails
+	 * here, by the watchdog, within WATCHDOG_SECONDS */
+	struct watchdog d;
 	m = mc_start(&cfg, err);
+	watchdog_start(&d, WATCHDOG_SECONDS, "mc_free of a running pool returns");
+	time_t t0 = time(NULL);
 	mc_free(m);
-	tap_ok(1, "mc_free of a running pool returns");
+	watchdog_stop(&d);
+	tap_ok(m != NULL, "mc_free of a running pool returns (%lld s)",
+	       (long long)(time(NULL) - t0));
 
 	cfg.threads = 0;
 	m = mc_start(&cfg, err);
@@ -404,6 +531,7 @@ int main(void)
 		printf("Bail out! %s\n", err);
 		return 1;
 	}
+	test_watchdog();
 	test_order(w);
 	test_stop(w);
 	test_share(w);

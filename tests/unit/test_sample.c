@@ -1,7 +1,7 @@
 /*
- * test_sample.c - one Monte Carlo sample (SPEC section 2) against values
- * someone could get wrong: closed forms, the published Ferris & Tin-Loi
- * standard load factors, and properties that every accepted sample must
+ * test_sample.c - one Monte Carlo sample (docs/method.md, "One sample")
+ * against values someone could get wrong: closed forms, the published
+ * Ferris & Tin-Loi standard load factors, and properties that every accepted sample must
  * have (ordering of the loads, admissibility, complementarity, virtual
  * work) on 200 random small walls.
  */
@@ -161,7 +161,8 @@ static void ferris_tinloi(void)
 }
 
 /* The published walls at the default depth: an independent implementation
- * accepts nearly all samples (SPEC section 2).  At least 198 of 200 (all
+ * accepts nearly all samples (docs/method.md, the end of "One sample").
+ * At least 198 of 200 (all
  * 200 today; with the old iteration limit of 200, samples 63, 107, 120
  * and 183 of wall 1 were not_converged), and at most 1 rejected as
  * numerical: when LP2 held lambda >= lambda_LP1

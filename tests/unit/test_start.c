@@ -1,5 +1,5 @@
 /*
- * test_start.c - "One answer per sample" (SPEC section 2): a sample is a
+ * test_start.c - "One answer per sample" (docs/method.md): a sample is a
  * function of its contact positions alone, whatever the LP solver's path.
  * Every sample is solved by eight workspaces that start every LP from a
  * different basis (SLIPWALL_LP_START's values: the default `auto`, the
