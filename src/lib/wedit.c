@@ -41,6 +41,7 @@ struct wall *wedit_copy(const struct wall *w, const struct wall_layout *regen,
 	c->path = w->path ? sw_xstrdup(w->path) : NULL;
 	c->mu_bed = w->mu_bed;
 	c->mu_head = w->mu_head;
+	c->mu_cov = w->mu_cov;
 	c->unit_weight = w->unit_weight;
 	c->thickness = w->thickness;
 	c->layout = regen ? *regen : w->layout;

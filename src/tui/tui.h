@@ -294,7 +294,7 @@ void tui_edit_key_friction(struct tui *t, int ch);	/* f, F */
 void tui_edit_key_depth(struct tui *t, int ch);		/* e, E, i */
 void tui_edit_key_turn(struct tui *t, int ch);		/* d, D */
 void tui_edit_key_bond(struct tui *t, int ch);		/* b, B */
-void tui_edit_key_prompt(struct tui *t, int ch);	/* g, P, c, L, w */
+void tui_edit_key_prompt(struct tui *t, int ch);	/* g, v, P, c, L, w */
 void tui_edit_key_block(struct tui *t, int ch);		/* a, x, Delete */
 /* The point load to the next station in direction (dx, dy). */
 void tui_edit_load_step(struct tui *t, int dx, int dy);

@@ -153,6 +153,29 @@ static void tui_edit_friction_typed(struct tui *t, const char *text)
 	tui_edit_friction(t, v[0], n == 2 ? v[1] : v[0]);
 }
 
+/* v's prompt: the friction's coefficient of variation per joint and
+ * sample (docs/method.md, "Friction as a random variable"); 0 is fixed
+ * friction. */
+static void tui_edit_cov_typed(struct tui *t, const char *text)
+{
+	double v[1];
+	if (tui_edit_numbers(text, v, 1) != 1 || !(v[0] <= WALL_COV_MAX)) {
+		tui_message(t, 1, "friction cov: type a number from 0 to 1 "
+			    "(0: fixed friction)");
+		return;
+	}
+	struct wall *nw = tui_edit_begin(t);
+	if (!nw)
+		return;
+	nw->mu_cov = v[0];
+	char what[128];
+	if (v[0] > 0)
+		snprintf(what, sizeof what, "friction random, cov %.3g", v[0]);
+	else
+		snprintf(what, sizeof what, "friction fixed (cov 0)");
+	tui_edit_done(t, nw, what);
+}
+
 static void tui_edit_depth(struct tui *t, double d, int anywhere)
 {
 	char what[128];
@@ -341,6 +364,11 @@ void tui_edit_key_prompt(struct tui *t, int ch)
 	case 'g':
 		snprintf(buf, sizeof buf, "%.4g,%.4g", w->mu_bed, w->mu_head);
 		tui_prompt(t, "friction bed,head", buf, tui_edit_friction_typed);
+		break;
+	case 'v':
+		snprintf(buf, sizeof buf, "%.4g", w->mu_cov);
+		tui_prompt(t, "friction cov (0..1, 0: fixed)", buf,
+			   tui_edit_cov_typed);
 		break;
 	case 'P':
 		l = wedit_point_load(w);

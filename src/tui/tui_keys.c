@@ -203,6 +203,8 @@ static const struct tui_key tui_keys[] = {
 	 BAR(MAIN, "f/F mu", 6)},
 	{.ch = {'g'}, .name = "g", .fn = tui_edit_key_prompt,
 	 .help = "friction, typed: bed or bed,head"},
+	{.ch = {'v'}, .name = "v", .fn = tui_edit_key_prompt,
+	 .help = "friction's cov per joint, typed (0: fixed; > 0: random)"},
 	{.ch = {'e', 'E'}, .name = "e / E", .fn = tui_edit_key_depth,
 	 .help = "contact depth +0.05 / -0.05 (0 .. 0.5)",
 	 BAR(MAIN, "e/E depth", 7)},

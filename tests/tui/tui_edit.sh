@@ -215,6 +215,31 @@ else
 	not_ok "a layout edit works on the reopened wall" "$(screen w)"
 fi
 
+# --- v: friction random per joint (docs/method.md), its cov in the title,
+# each sample's friction in the run's samples file, undo back to fixed
+cov_shown() { title w | grep -qF 'cov 0.2 |'; }
+cov_gone() { ! title w | grep -qF ' cov '; }
+r0=$(runno w)
+prompt w v 'friction cov' 0.2
+if within 10 cov_shown; then
+	ok "v 0.2: the title shows the friction's cov"
+else
+	not_ok "v 0.2: the title shows the friction's cov" "$(title w)"
+fi
+r1=$((r0 + 1))
+wait_samples w 1 30
+if head -n 1 "$(run_csv "$r1")" 2>/dev/null | grep -q ',mu_1,'; then
+	ok "... and run $r1's samples file has each joint's mu"
+else
+	not_ok "... and run $r1's samples file has each joint's mu" "$(head -c 300 "$(run_csv "$r1")")"
+fi
+T send-keys -t t:w u
+if within 10 cov_gone; then
+	ok "u: fixed friction again, no cov in the title"
+else
+	not_ok "u: fixed friction again, no cov in the title" "$(title w)"
+fi
+
 T send-keys -t t:w q
 wait_for w '^samples: ' 10
 tap_end
