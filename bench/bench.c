@@ -40,6 +40,10 @@ static double now(void)
 	return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
+/* The LP solvers' settings: SLIPWALL_LP_START (and the test variables)
+ * from the environment, as the program reads them (src/cli/cli.c). */
+static struct sample_lp_config lpc;
+
 static int usage(void)
 {
 	fprintf(stderr, "usage: bench WALL.yaml [-n N] [--threads 1,2,...] "
@@ -56,6 +60,7 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	cfg.n = n;
 	cfg.seed = seed;
 	cfg.threads = threads;
+	cfg.opts.lp = lpc;
 	double t0 = now();
 	struct mc *m = mc_start(&cfg, err);
 	if (!m) {
@@ -97,7 +102,7 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 static int bench_roles(const struct wall *w, long n, unsigned long seed)
 {
 	double t_setup = now();
-	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_ws *ws = sample_ws_new_config(w, &lpc);
 	t_setup = now() - t_setup;
 	struct sample_lp_stats before[SAMPLE_ROLE_COUNT], after[SAMPLE_ROLE_COUNT];
 	sample_ws_stats(ws, before);
@@ -129,7 +134,7 @@ static int bench_roles(const struct wall *w, long n, unsigned long seed)
 		lp_total += after[k].seconds - before[k].seconds;
 	printf("start %s: %.2f samples/s (%.3f ms a sample), %ld of %ld "
 	       "accepted, %.1f SLP iterations a sample, %.1f %% of the time "
-	       "inside GLPK\n", sample_start_name(sample_start()),
+	       "inside GLPK\n", sample_start_name(lpc.start),
 	       (double)n / elapsed, 1e3 * elapsed / (double)n, accepted, n,
 	       (double)iters / (double)n, 100 * lp_total / elapsed);
 	printf("%-14s %9s %10s %10s %8s\n", "role", "LPs/smp", "iters/LP",
@@ -156,6 +161,14 @@ int main(int argc, char **argv)
 	long n = 200;
 	unsigned long seed = 1;
 	int threads[16] = {1, 2}, nthreads = 2, roles = 0;
+	char err[SW_ERRLEN];
+	sample_lp_config_default(&lpc);
+	if (sample_lp_config_parse(&lpc, getenv("SLIPWALL_LP_START"),
+				   getenv("SLIPWALL_LP_FAULT"),
+				   getenv("SLIPWALL_GLPK_MEM_MB"), err)) {
+		fprintf(stderr, "bench: %s\n", err);
+		return 2;
+	}
 	for (int i = 1; i < argc; i++) {
 		if (!strcmp(argv[i], "--roles")) {
 			roles = 1;

@@ -2,12 +2,14 @@
 # boundary.sh - the walls between the three rooms (docs/design.md) stand.
 #
 #   src/lib/  libslipwall: computes; the only room that includes the LP
-#             solver (and only its LP layer, lp.c), GSL, libyaml, cairo
+#             solver (and only its backend, lp_glpk.c), GSL, libyaml,
+#             cairo
 #   src/tui/  the workbench: the only room that includes curses
 #   src/cli/  main and the batch commands: the only room with MPI
 #
 # Each rule is a pattern of #include lines (or of dependencies in a
-# room's meson.build) and the places where it may appear; a match
+# room's meson.build, or of words such as getenv) and the places where
+# it may appear; a match
 # anywhere else is a crossing, printed as FILE:LINE: text.  The rules are
 # then proven able to fail: for each one, a copy of the tree gets one
 # crossing planted in it, and the rule must find it.
@@ -17,6 +19,17 @@
 cd "$(dirname "$0")/.." || exit 1
 . tests/tap.sh
 
+# The library's files that may still read the environment (the rest take
+# their configuration as arguments, docs/design.md): shrink the list to
+# nothing and the rule allows none.
+getenv_allowed=(src/lib/history.c)
+getenv_ok=-
+if [ ${#getenv_allowed[@]} -gt 0 ]; then
+	getenv_ok=$(printf '|%s' "${getenv_allowed[@]}")
+	getenv_ok="^(${getenv_ok:1})\$"
+	getenv_ok=${getenv_ok//./\\.}
+fi
+
 # RULE: name | files it looks at (find -path patterns, relative to the
 # tree) | the files of those where the pattern is allowed (an extended
 # regex on the path, or "-" for none) | the pattern (extended regex on
@@ -24,15 +37,19 @@ cd "$(dirname "$0")/.." || exit 1
 rules=(
 	"curses outside src/tui/|src/*|^src/tui/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(n?cursesw?/|n?cursesw?\.h|panel\.h|term\.h)"
 	"MPI outside src/cli/|src/* include/*|^src/cli/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<mpi\.h>"
-	"GLPK outside the LP layer (src/lib/lp.c)|src/* include/*|^src/lib/lp\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
+	"GLPK outside the LP layer's backend (src/lib/lp_glpk.c)|src/* include/*|^src/lib/lp_glpk\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
 	"the LP layer's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp\.h\""
-	"the library's private headers (statics.h, support.h, piece.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support|piece)\.h\""
+	"the library's private headers (statics.h, support.h, piece.h, global.h, sample_lp.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support|piece|global|sample_lp)\.h\""
 	"GSL, libyaml, cairo outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(gsl/|yaml\.h|cairo|fontconfig/)"
 	"src/tui/ including src/cli/|src/tui/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(cli/)?(cli|override|summary|cluster)\.h\""
 	"the library including a front end|src/lib/* include/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*((cli|tui)/)?(cli|override|summary|cluster|tui|workbench)\.h\""
 	"src/cli/ past the workbench's door (workbench.h)|src/cli/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(tui/)?tui\.h\""
 	"a room's meson.build naming another room's dependencies|src/lib/meson.build src/tui/meson.build src/cli/meson.build|-|@meson"
 	"source files outside the three rooms|src/*|-|@loose"
+	"thread-local state outside the LP backend (src/lib/lp_glpk.c)|src/* include/*|^src/lib/lp_glpk\.c$|(_Thread_local|__thread|thread_local)"
+	"getenv in the library (allowed: ${getenv_allowed[*]:-none})|src/lib/* include/*|$getenv_ok|(^|[^[:alnum:]_])(secure_)?getenv[[:space:]]*\("
+	"the LP layer in the pool (mc.c) or solve.c|src/lib/mc.c src/lib/solve.c|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(lp|lp_backend|sample_lp)\.h\""
+	"the LP backend table (lp_backend.h) outside the LP layer (lp.c, lp_glpk.c)|src/* include/*|^src/lib/lp(_glpk)?\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp_backend\.h\""
 )
 
 # crossings TREE RULE: print the crossings of RULE in TREE (empty: none)
@@ -98,6 +115,10 @@ plant() {	# RULE-INDEX: the file and line that cross rule i
 	8) echo "src/cli/planted.c|#include \"tui.h\"" ;;
 	9) echo "src/tui/meson.build|  dependencies : [slipwall_dep, curses_dep, mpi_dep])" ;;
 	10) echo "src/planted.c|int planted;" ;;
+	11) echo "src/lib/mc.c|static _Thread_local int planted;" ;;
+	12) echo "src/lib/sample.c|	const char *e = getenv(\"SLIPWALL_LP_START\");" ;;
+	13) echo "src/lib/solve.c|#include \"lp.h\"" ;;
+	14) echo "src/lib/sample.c|#include \"lp_backend.h\"" ;;
 	esac
 }
 for i in "${!rules[@]}"; do

@@ -3,8 +3,9 @@
  * sample order.
  *
  * Sample i's draw, its contact points and friction, depends only on
- * (seed, i) (draw_make, draw.h; or a replayed table), and each worker computes whole samples with its own
- * GLPK workspace, so the results do not depend on the number of threads.
+ * (seed, i) (draw_make, draw.h; or a replayed table), and each worker
+ * computes whole samples with its own workspace and LP solver, so the
+ * results do not depend on the number of threads.
  * Workers take indices from a shared counter and put finished samples
  * into a reorder window; the consumer (one thread: the `run` command, or
  * the workbench's UI thread) takes them out strictly in index order with
@@ -81,7 +82,7 @@ double mc_sample_seconds(const struct wall *w);
 void mc_about(char *buf, size_t len, double seconds);
 
 /* Ask the workers to stop: each abandons the sample it is computing
- * (within about a second, even inside a long LP: lp_thread_stop_flag)
+ * (within about a second, even inside a long LP: sample_lp_config.stop)
  * and takes no other.  Samples already finished in order can still be
  * popped; an abandoned one is never reported, so the popped samples are
  * always a prefix of the run.  Async-signal-safe. */
@@ -91,12 +92,12 @@ void mc_stop(struct mc *m);
 void mc_free(struct mc *m);
 
 /* Worker-side counters, for the benchmark: LP solves, simplex
- * iterations and solves answered by the held basis (lp.h), summed over
- * the workers that have exited, and the seconds they spent inside GLPK
- * (approximate). */
+ * iterations and solves answered by the held basis (sample_ws_counters),
+ * summed over the workers that have exited, and the seconds they spent
+ * inside the LP solver (approximate). */
 struct mc_counters {
 	long solves, iterations, held;
-	double lp_seconds;	/* inside lp_solve, summed over workers */
+	double lp_seconds;	/* inside the LP solver, summed over workers */
 };
 void mc_counters(const struct mc *m, struct mc_counters *c);
 /* Wait until every worker has exited: after mc_pop returned -1 (or
@@ -106,12 +107,12 @@ void mc_wait(struct mc *m);
 /* Number of online processors (>= 1): the default thread count. */
 int mc_ncpu(void);
 
-/* The limit of the LP solver's allocator on each worker thread, in MiB
- * (0: none; the batch commands share half the memory out between the
- * workers, cli_threads), and how many LPs, over all threads since start,
- * ran out of memory (each fails its sample, not the process). */
-void mc_worker_memory_set(double mb);
-int mc_worker_memory(void);
+/* How many LPs, over all workspaces freed since start (the workers'
+ * among them), ran out of memory (each fails its sample, not the
+ * process): sample_memory_errors.  The limit of the LP solver's
+ * allocator on each worker is config.opts.lp.mem_limit_mb (the batch
+ * commands share half the memory out between the workers,
+ * cli_threads). */
 long mc_memory_errors(void);
 
 #endif

@@ -33,7 +33,7 @@
  * in a scanned PDF) with the same position and size.
  *
  * No terminal code: the `report` command and the workbench both call
- * report_write() on the thread they run on.  Nothing here uses GLPK.
+ * report_write() on the thread they run on.  Nothing here uses the LP solver.
  */
 #ifndef SLIPWALL_REPORT_H
 #define SLIPWALL_REPORT_H

@@ -6,11 +6,11 @@
  * sample.c): LP-max, the standing check and LP-min (the associative
  * problem), LP1 and LP2 (the SLP's fixed-capacity problem and its
  * stabilisation), and the kinematic LP of the onset check.  Each sample
- * starts every role from the basis sample_start() names (`previous`
+ * starts every role from the basis its start option names (`previous`
  * keeps the last sample's bases); within a sample every re-solve of a
- * role is a warm start.  It belongs to one thread (GLPK rule): create,
- * use and free it on the same thread.  The wall it reads must stay alive
- * and unchanged.
+ * role is a warm start.  It owns its LP solver, which belongs to one
+ * thread (the solver's rule): create, use and free the workspace on the
+ * same thread.  The wall it reads must stay alive and unchanged.
  *
  * Units: sample_result carries real units (load factor as the user reads
  * it: N for a point load of magnitude 1, a coefficient for a body load;
@@ -19,6 +19,8 @@
  */
 #ifndef SLIPWALL_SAMPLE_H
 #define SLIPWALL_SAMPLE_H
+
+#include <stdatomic.h>
 
 #include "slipwall/draw.h"
 #include "slipwall/wall.h"
@@ -46,6 +48,68 @@ const char *sample_status_text(enum sample_status s);	/* for people */
 /* The status of a name, or -1. */
 int sample_status_parse(const char *name);
 
+/* Where every LP of a sample starts (SLIPWALL_LP_START, docs/method.md):
+ * the slack basis with LP-max by the primal or the dual simplex, the LP
+ * solver's crash basis, the canonical bases (each role's optimal basis at the
+ * classical contact, a function of the wall alone), the basis the
+ * workspace's previous sample left, the support basis of the sample's
+ * own contact points for LP-max, the standing check and LP-min (each
+ * block carried by its bed joints; the other roles from the slack
+ * basis), or (`auto`, the default) the start
+ * measured fastest for each role and size of wall, a function of the
+ * wall alone.  A sample's result does not depend on it (the tie-breaks
+ * of "one answer per sample"); its cost does. */
+enum sample_start {
+	SAMPLE_START_SLACK_PRIMAL,
+	SAMPLE_START_SLACK_DUAL,
+	SAMPLE_START_CRASH,
+	SAMPLE_START_CANONICAL,
+	SAMPLE_START_PREVIOUS,
+	SAMPLE_START_SUPPORT,
+	SAMPLE_START_AUTO,	/* by role and wall size (docs/method.md) */
+	SAMPLE_START_COUNT
+};
+#define SAMPLE_START_DEFAULT SAMPLE_START_AUTO
+const char *sample_start_name(enum sample_start s);
+/* The start of a name ("slack-primal", ...), or -1. */
+int sample_start_parse(const char *name);
+
+/* The LP solver a workspace owns: its start, and the settings the front
+ * ends pass from the environment (SLIPWALL_LP_START, docs/method.md; the
+ * test variables of fault injection and of the solver's memory limit,
+ * src/cli/main.c): the library reads no environment. */
+struct sample_lp_config {
+	enum sample_start start;	/* default SAMPLE_START_DEFAULT */
+	/* for tests: every fault_every-th LP of the workspace fails (0:
+	 * never), as the solver's internal error if fault_error (the
+	 * problems die and are rebuilt) or else as a failure */
+	long fault_every;
+	int fault_error;
+	/* the limit of the LP solver's allocator on the workspace's
+	 * thread, in MB (0: none; the first workspace of a thread sets
+	 * it): running out fails the sample (numerical), not the process */
+	int mem_limit_mb;
+	/* while *stop is non-zero the LPs stop: a sample in progress is
+	 * abandoned (sample_ws_interrupted) within about a second, even
+	 * inside a long LP.  NULL: never. */
+	const atomic_int *stop;
+	/* progress of a long LP: progress(progress_ctx, incumbent, bound)
+	 * every half second of a long simplex (both NAN) and about once a
+	 * second of a mixed-integer program (its incumbent's objective and
+	 * best bound, NAN where none); it must not call the library.
+	 * NULL: never. */
+	void (*progress)(void *ctx, double incumbent, double bound);
+	void *progress_ctx;
+};
+void sample_lp_config_default(struct sample_lp_config *c);
+/* The test variables' values (NULL or "": not set) into c: start names
+ * a start (sample_start_parse), fault is failed:N or error:N, mem_mb a
+ * number of MB >= 1.  Returns 0, or -1 with the message of the first
+ * value that is not one (that value leaves c as it was). */
+int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
+			   const char *fault, const char *mem_mb,
+			   char *err);
+
 /* The SLP's iteration (docs/method.md, "The SLP's answer"): PLAIN,
  * c <- c + omega (N(c) - c) until it converges; ANDERSON, the last
  * round's default, accelerated by Anderson's steps while the LP bases
@@ -70,6 +134,8 @@ struct sample_opts {
 				 * no front end reports them, and their
 				 * tie-break is a sample's costliest LP on
 				 * large walls) */
+	struct sample_lp_config lp;	/* the workspaces' LP solvers
+					 * (mc.c, solve.c make them) */
 };
 void sample_opts_default(struct sample_opts *o);
 
@@ -103,39 +169,13 @@ struct sample_result {
 void sample_result_init(struct sample_result *r, const struct wall *w);
 void sample_result_free(struct sample_result *r);
 
-/* Where every LP of a sample starts (SLIPWALL_LP_START, docs/method.md):
- * the slack basis with LP-max by the primal or the dual simplex, GLPK's
- * crash basis, the canonical bases (each role's optimal basis at the
- * classical contact, a function of the wall alone), the basis the
- * workspace's previous sample left, the support basis of the sample's
- * own contact points for LP-max, the standing check and LP-min (each
- * block carried by its bed joints; the other roles from the slack
- * basis), or (`auto`, the default) the start
- * measured fastest for each role and size of wall, a function of the
- * wall alone.  A sample's result does not depend on it (the tie-breaks
- * of "one answer per sample"); its cost does. */
-enum sample_start {
-	SAMPLE_START_SLACK_PRIMAL,
-	SAMPLE_START_SLACK_DUAL,
-	SAMPLE_START_CRASH,
-	SAMPLE_START_CANONICAL,
-	SAMPLE_START_PREVIOUS,
-	SAMPLE_START_SUPPORT,
-	SAMPLE_START_AUTO,	/* by role and wall size (docs/method.md) */
-	SAMPLE_START_COUNT
-};
-#define SAMPLE_START_DEFAULT SAMPLE_START_AUTO
-const char *sample_start_name(enum sample_start s);
-/* The start of a name ("slack-primal", ...), or -1. */
-int sample_start_parse(const char *name);
-/* The start every workspace of this process uses: SLIPWALL_LP_START if
- * it names one, else SAMPLE_START_DEFAULT.  Read once. */
-enum sample_start sample_start(void);
 
 struct sample_ws;
-/* A workspace whose samples start from sample_start(); _start: from
- * the given start (the path-invariance test). */
+/* A workspace whose LP solver is set up by c (NULL: the defaults);
+ * _start: from the given start (the path-invariance test). */
 struct sample_ws *sample_ws_new(const struct wall *w);
+struct sample_ws *sample_ws_new_config(const struct wall *w,
+				       const struct sample_lp_config *c);
 struct sample_ws *sample_ws_new_start(const struct wall *w,
 				      enum sample_start start);
 /* (For tests) a workspace with the `auto` start as it is on walls of
@@ -188,6 +228,26 @@ struct sample_lp_stats {
 const char *sample_role_name(int role);
 void sample_ws_stats(const struct sample_ws *ws,
 		     struct sample_lp_stats out[SAMPLE_ROLE_COUNT]);
+
+/* What the workspace's LP solver did since it was made: LPs solved,
+ * simplex iterations, LPs answered by the basis the solver held, seconds
+ * inside the solver, and internal errors that were the solver running
+ * out of memory. */
+struct sample_lp_counters {
+	long solves, iterations, held, memory_errors;
+	double seconds;
+};
+void sample_ws_counters(const struct sample_ws *ws,
+			struct sample_lp_counters *c);
+/* Did an LP of the workspace stop (sample_lp_config.stop) since it was
+ * made?  The sample it belonged to is incomplete: discard it. */
+int sample_ws_interrupted(const struct sample_ws *ws);
+/* A thread that used workspaces is done with them: the LP solver's
+ * per-thread environment goes (call it before the thread exits). */
+void sample_thread_done(void);
+/* Internal errors of workspaces' LP solvers that were running out of
+ * memory, over the process, counted as each workspace is freed. */
+long sample_memory_errors(void);
 
 /* The statics of the workspace (scales, operator), for the global
  * method which builds its own problem on the same operator. */

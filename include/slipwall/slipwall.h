@@ -9,8 +9,9 @@
  * "FILE:LINE:COLUMN: what is wrong" (or "what: why") in a caller's
  * buffer of SW_ERRLEN bytes.
  *
- * Private to the library (src/lib/): lp.h, the LP layer, the only
- * module that includes GLPK; statics.h, the equilibrium operator; and
+ * Private to the library (src/lib/): lp.h, the LP layer (its one
+ * backend, lp_glpk.c, the only file that names the LP solver library);
+ * statics.h, the equilibrium operator; and
  * support.h, the support basis (a starting basis built from how the
  * wall stands, for sample.c).
  */

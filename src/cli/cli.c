@@ -34,15 +34,18 @@ int cli_tests(const char *file, const struct wall *w, double **tests,
 	return 0;
 }
 
+/* SLIPWALL_GLPK_MEM_MB set the limit (cli_lp_from_env) */
+static int lp_mem_env;
+
 void cli_memory_note(const char *cmd)
 {
 	long oom = mc_memory_errors();
-	if (oom > 0)	/* each made a sample "numerical" (src/lib/lp.c) */
+	if (oom > 0)	/* each made a sample "numerical" (src/lib/lp_glpk.c) */
 		cli_errorf("slipwall %s: the LP solver ran out of memory %ld "
-			   "time%s (GLPK's limit: %d MB per thread): the "
+			   "time%s (its limit: %d MB per thread): the "
 			   "samples it was solving were rejected as "
 			   "numerical; free memory or use fewer --threads",
-			   cmd, oom, oom == 1 ? "" : "s", mc_worker_memory());
+			   cmd, oom, oom == 1 ? "" : "s", cli_lp.mem_limit_mb);
 }
 
 int cli_check_depth(const char *cmd, const struct wall *w, const char *path,
@@ -212,10 +215,36 @@ int cli_threads(const char *cmd, const struct wall *w, int requested,
 		t = k;
 	}
 	*threads = t;
-	/* and GLPK's allocator, on each of them, that half shared out: it
-	 * runs out inside its own accounting (src/lib/lp.c, "Out of memory"),
-	 * which fails a sample, before the kernel kills the process */
-	mc_worker_memory_set(0.5 * mem / (double)t / 1048576.0);
+	/* and the LP solver's allocator, on each of them, that half shared
+	 * out: it runs out inside its own accounting (src/lib/lp_glpk.c,
+	 * "Out of memory"), which fails a sample, before the kernel kills
+	 * the process */
+	if (!lp_mem_env) {
+		double mb = 0.5 * mem / (double)t / 1048576.0;
+		cli_lp.mem_limit_mb = !(mb >= 1) ? 1 : mb >= INT_MAX ? INT_MAX :
+				      (int)mb;
+	}
+	return 0;
+}
+
+struct sample_lp_config cli_lp = { .start = SAMPLE_START_DEFAULT };
+
+int cli_lp_from_env(void)
+{
+	char err[SW_ERRLEN];
+	sample_lp_config_default(&cli_lp);
+	if (sample_lp_config_parse(&cli_lp, getenv("SLIPWALL_LP_START"),
+				   NULL, NULL, err)) {
+		fprintf(stderr, "slipwall: %s\n", err);
+		return -1;
+	}
+	if (sample_lp_config_parse(&cli_lp, NULL,
+				   getenv("SLIPWALL_LP_FAULT"), NULL, err))
+		fprintf(stderr, "slipwall: %s\n", err);
+	if (sample_lp_config_parse(&cli_lp, NULL, NULL,
+				   getenv("SLIPWALL_GLPK_MEM_MB"), err))
+		fprintf(stderr, "slipwall: %s\n", err);
+	lp_mem_env = cli_lp.mem_limit_mb > 0;
 	return 0;
 }
 

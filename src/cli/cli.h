@@ -11,6 +11,7 @@
 #define SLIPWALL_CLI_H
 
 #include <stdio.h>
+#include "slipwall/sample.h"
 #include "slipwall/text.h"
 #include "slipwall/wall.h"
 
@@ -84,10 +85,21 @@ double cli_worker_bytes(const struct wall *w);
  * at cli_worker_bytes each (the machine's memory, or the address-space
  * limit when lower).  A default is cut down to fit; an explicit request
  * that does not fit is a usage error: returns 2 after printing it, with
- * the count that fits.  Else 0.  It also sets the limit of GLPK's
- * allocator on each worker (lp_mem_limit_set): the half of the memory
- * above shared out between the *threads workers. */
+ * the count that fits.  Else 0.  It also sets the limit of the LP
+ * solver's allocator on each worker (cli_lp's mem_limit_mb, unless the
+ * environment set it): the half of the memory above shared out between
+ * the *threads workers. */
 int cli_threads(const char *cmd, const struct wall *w, int requested,
 		int def, long n, int *threads);
+
+/* The LP solvers' settings (sample.h): from the environment (main.c:
+ * SLIPWALL_LP_START, and for tests SLIPWALL_LP_FAULT and
+ * SLIPWALL_GLPK_MEM_MB, which wins over cli_threads' limit), read once
+ * before any command; each command copies it into its options. */
+extern struct sample_lp_config cli_lp;
+/* Read the environment into cli_lp: 0, or -1 after printing why not (a
+ * start that is not one; a bad test variable is only said, and
+ * ignored, as it always was). */
+int cli_lp_from_env(void);
 
 #endif

@@ -362,8 +362,10 @@ static int setup(const struct compare_args *a, const struct wall *w,
 	cfg->depth = a->depth;
 	if (cfg->n < 1)
 		return cli_usage_error(CMD, "no samples to compute (-n)");
-	return cli_threads(CMD, w, a->threads, mc_ncpu(), cfg->n,
-			   &cfg->threads);
+	int rc = cli_threads(CMD, w, a->threads, mc_ncpu(), cfg->n,
+			     &cfg->threads);
+	cfg->opts.lp = cli_lp;	/* with cli_threads' memory limit */
+	return rc;
 }
 
 /* The model's loads: from the samples file, the depth profile or one

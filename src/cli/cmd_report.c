@@ -187,6 +187,7 @@ static void single_solutions(const struct wall *w, double tlim,
 		struct solve_result r;
 		char err[SW_ERRLEN];
 		solve_opts_default(&o, ms[i]);
+		o.sample.lp = cli_lp;
 		o.time_limit = tlim;
 		s->ran = 1;
 		fprintf(stderr, "report: %s: computing the single solution "
@@ -296,6 +297,7 @@ static int model_of_file(const struct report_args *a, const struct wall *w,
 				 &d->cfg.threads);
 	if (status)
 		return status;
+	d->cfg.opts.lp = cli_lp;	/* with cli_threads' memory limit */
 	fprintf(stderr, "report: %ld loads from %s; replaying their "
 		"contact positions to recover the mechanisms (the file "
 		"holds none)...\n", d->nlam, cli_text(a->samples));
@@ -336,6 +338,7 @@ static int model_of_run(const struct report_args *a, const struct wall *w,
 				 &d->cfg.threads);
 	if (status)
 		return status;
+	d->cfg.opts.lp = cli_lp;	/* with cli_threads' memory limit */
 	enum sw_status pst = run_pool(&d->cfg, &d->t, &d->lam, &d->nlam, err);
 	if (pst != SW_OK) {
 		cli_errorf("slipwall report: %s", err);

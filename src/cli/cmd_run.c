@@ -467,7 +467,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	/* where every LP started (SLIPWALL_LP_START): not the results,
 	 * which are the same from every start, but their cost */
 	json_key(&j, "lp_start");
-	json_string(&j, sample_start_name(sample_start()));
+	json_string(&j, sample_start_name(cli_lp.start));
 	/* timing: the only fields that change from run to run */
 	json_key(&j, "elapsed_seconds");
 	json_double(&j, r->elapsed);
@@ -593,6 +593,7 @@ static int setup(int argc, char **argv, const struct cluster *cl,
 	if ((rc = cli_threads(CMD, w, a->threads, cl ? cluster_threads(cl) :
 			      mc_ncpu(), cfg->n, &cfg->threads)))
 		return rc;
+	cfg->opts.lp = cli_lp;	/* with cli_threads' memory limit */
 
 	if (a->samples && cluster_rank(cl) == 0) {
 		const char *keep[] = {a->wall, a->positions, NULL};

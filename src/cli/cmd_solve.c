@@ -300,6 +300,7 @@ int cmd_solve(int argc, char **argv)
 		global_forecast(path, w, tlim);
 	struct solve_opts o;
 	solve_opts_default(&o, (enum solve_method)method);
+	o.sample.lp = cli_lp;
 	o.time_limit = tlim;
 	struct solve_progress prog = {
 		path, solve_method_name(o.method), isatty(2), 0, 0,

@@ -592,6 +592,7 @@ static int sample_values(const struct sweep_args *a, unsigned long seed,
 		}
 		struct mc_config cfg;
 		mc_config_default(&cfg, w);
+		cfg.opts.lp = cli_lp;
 		cfg.n = n;
 		cfg.seed = seed;
 		cfg.threads = a->threads ? a->threads : mc_ncpu();

@@ -56,24 +56,13 @@ static int finish(int rc)
 	return rc;
 }
 
-/* SLIPWALL_LP_START (docs/method.md) must name a start: a misspelt one
- * would silently run the default. */
-static int check_environment(void)
-{
-	const char *e = getenv("SLIPWALL_LP_START");
-	if (e && *e && sample_start_parse(e) < 0) {
-		fprintf(stderr, "slipwall: SLIPWALL_LP_START='%s': not a start; "
-			"use auto, slack-primal, slack-dual, crash, canonical, "
-			"previous or support\n", e);
-		return 0;
-	}
-	return 1;
-}
-
 int main(int argc, char **argv)
 {
 	sw_init();	/* the library's process set-up: GSL's handler off */
-	if (!check_environment())
+	/* the LP solvers' settings (cli_lp): SLIPWALL_LP_START
+	 * (docs/method.md) must name a start, a misspelt one would
+	 * silently run the default */
+	if (cli_lp_from_env())
 		return 2;
 	if (argc >= 2) {
 		const char *a = argv[1];
@@ -103,7 +92,7 @@ int main(int argc, char **argv)
 			usage(stderr);
 			return 2;
 		}
-		return tui_main(a);
+		return tui_main(a, &cli_lp);
 	}
-	return tui_main(cli_demo_wall());
+	return tui_main(cli_demo_wall(), &cli_lp);
 }

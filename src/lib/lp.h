@@ -1,19 +1,28 @@
 /*
- * lp.h - a thin layer over GLPK; the only module that includes glpk.h.
+ * lp.h - the LP layer: problems, bases, solves and the tie-break, over
+ * an LP solver instance (docs/design.md, "The LP layer").
  *
- * Indices are 0-based here (GLPK's are 1-based).  Bounds use -HUGE_VAL /
- * HUGE_VAL for "none".  A problem keeps its basis between solves, so
- * changing bounds, objective or a column and solving again is a warm
- * start (presolve is always off).
+ * A solver (struct lp_solver) is made with its settings (struct
+ * lp_config: fault injection, a memory limit, an iteration limit) and
+ * holds its counters, its stop flag and progress hook, and its last
+ * message; every problem belongs to one solver.  Behind it is a backend
+ * (lp_backend.h; today lp_glpk.c, the only file that names the solver
+ * library).  The tie-break of "one answer per sample" and the saved
+ * bases are written here once, over the generic calls (lp.c).
  *
- * Threads: Debian's GLPK keeps one environment per thread.  A problem is
- * created, solved and freed on one thread; every thread that uses this
- * module calls lp_thread_done() before it exits.  The first call on a
- * thread installs hooks so that GLPK never prints (its text is kept, the
- * last line readable with lp_last_message) and never aborts: a GLPK error
- * jumps back into lp_solve(), which frees the thread's environment and
- * returns LP_ERROR.  After LP_ERROR every problem of that thread is dead:
- * lp_free() it (safe) and build new ones.
+ * Indices are 0-based.  Bounds use -HUGE_VAL / HUGE_VAL for "none".  A
+ * problem keeps its basis between solves, so changing bounds, objective
+ * or a column and solving again is a warm start (presolve is always
+ * off).
+ *
+ * Threads: a solver and its problems are used on one thread.  The
+ * backend's environment is the thread's: every thread that used a
+ * solver calls lp_thread_done() before it exits (freeing the last solver
+ * of a thread that holds no problem does it too).  An internal error of
+ * the solver, or running out of memory, never aborts: the solve (or the
+ * setter) returns, the thread's problems are dead (lp_alive), and the
+ * next lp_solve of each returns LP_ERROR; lp_free() them (safe) and
+ * build new ones.
  */
 #ifndef SLIPWALL_LP_H
 #define SLIPWALL_LP_H
@@ -25,23 +34,92 @@ enum lp_status {
 	LP_INFEASIBLE,	/* no primal feasible point */
 	LP_UNBOUNDED,	/* feasible, objective unbounded */
 	LP_FAILED,	/* the simplex gave up (singular basis, limit) */
-	LP_ERROR,	/* GLPK reported an internal error; problems dead */
+	LP_ERROR,	/* the solver reported an internal error; problems
+			 * dead */
 	LP_STOPPED,	/* interrupted by the thread's stop flag; the
 			 * thread's problems are dead (as after LP_ERROR) */
 };
 
 enum lp_method { LP_PRIMAL, LP_DUAL };
 
+/* The status of a variable (a row's auxiliary variable or a column) in
+ * a basis: basic, non-basic at its lower bound, at its upper bound,
+ * free (at 0), fixed. */
+enum lp_var_stat { LP_BS = 1, LP_NL, LP_NU, LP_NF, LP_NS };
+
 /* How far a basic variable of an optimal solution by the simplex method
- * m may lie outside its bounds (absolute at a bound of 0): GLPK's tol_bnd
- * as lp.c sets it, 1e-9 for the dual simplex and 1e-8 for the primal
- * (the tie-breaks).  A value this small is not told from 0. */
+ * m may lie outside its bounds (absolute at a bound of 0): the solver's
+ * feasibility tolerance as the backend sets it (lp_glpk.c: 1e-9 for the
+ * dual simplex and 1e-8 for the primal, the tie-breaks).  A value this
+ * small is not told from 0. */
 double lp_feasibility_tol(enum lp_method m);
+
+/* A solver's settings, passed by the front ends (the test variables
+ * SLIPWALL_LP_FAULT, SLIPWALL_GLPK_MEM_MB: src/cli/, src/tui/, bench/). */
+struct lp_config {
+	/* Fault injection, for tests: every fault_every-th lp_solve of the
+	 * solver (0: never) returns fault_as - LP_FAILED at once, or
+	 * LP_ERROR by raising an error inside the solver's solve, so the
+	 * recovery above runs for real. */
+	long fault_every;
+	enum lp_status fault_as;
+	/* The limit of the solver's allocator on the thread, in MB (0:
+	 * none): running out inside any call of this module is an internal
+	 * error (problems dead, LP_ERROR; lp_glpk.c, "Out of memory").
+	 * The first solver of a thread sets it for the thread. */
+	int mem_limit_mb;
+	/* For tests: the simplex's iteration limit (0: the default,
+	 * 50,000 + 50 (rows + columns)).  A solve that reaches it is
+	 * retried once from an advanced basis, then LP_FAILED. */
+	int iteration_limit;
+};
+void lp_config_default(struct lp_config *c);
+
+struct lp_solver;
+struct lp_solver *lp_solver_new(const struct lp_config *c);
+/* Frees the solver, after its problems (lp_free); lp_thread_done() too
+ * if the thread then holds no problem. */
+void lp_solver_free(struct lp_solver *s);
+
+/* What a solver did since it was made: solves, simplex iterations,
+ * solves answered by the basis the solver held, without the simplex
+ * (lp_glpk.c, "Held bases"), seconds inside lp_solve (monotonic clock),
+ * and internal errors that were the solver running out of memory. */
+struct lp_counters {
+	long solves, iterations, held, memory_errors;
+	double seconds;
+};
+void lp_solver_counters(const struct lp_solver *s, struct lp_counters *c);
+/* Interruption: while *flag is non-zero, lp_solve returns LP_STOPPED at
+ * once, a solve already running stops within about a second, and a
+ * problem being written dies (lp_glpk.c, "Interruption").  NULL: never.
+ * Also clears the interrupted mark. */
+void lp_solver_stop_flag(struct lp_solver *s, const atomic_int *flag);
+/* Did an lp_solve of this solver return LP_STOPPED since the flag was
+ * set?  The sample it belonged to is incomplete: discard it. */
+int lp_solver_interrupted(const struct lp_solver *s);
+/* Progress: fn(ctx, incumbent, bound) is called every half second
+ * during a long simplex of lp_solve (both NAN), and about once a second
+ * during lp_solve_mip (the incumbent's objective, NAN before one is
+ * found, and the best bound of the open nodes).  fn must not call this
+ * module.  NULL: never. */
+typedef void (*lp_progress_fn)(void *ctx, double incumbent, double bound);
+void lp_solver_progress(struct lp_solver *s, lp_progress_fn fn, void *ctx);
+/* The solver's last line of text (an error's, for one). */
+const char *lp_solver_message(const struct lp_solver *s);
+/* For tests: change the fault injection and iteration limit of a made
+ * solver (its fault count starts again from 0). */
+void lp_solver_fault(struct lp_solver *s, long every, enum lp_status as);
+void lp_solver_iteration_limit(struct lp_solver *s, int limit);
+/* The calling thread is done with LP solvers (see the top). */
+void lp_thread_done(void);
 
 struct lp;
 
-struct lp *lp_new(int nrows, int ncols);
+struct lp *lp_new(struct lp_solver *s, int nrows, int ncols);
 void lp_free(struct lp *p);
+/* The solver p belongs to. */
+struct lp_solver *lp_solver_of(const struct lp *p);
 /* Is the problem usable (not dead after LP_ERROR or LP_STOPPED)? */
 int lp_alive(const struct lp *p);
 /* Back to what lp_new() left, the matrix kept: every row fixed at 0,
@@ -65,11 +143,11 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 /* Solve from the current basis.  If the simplex fails (singular basis,
  * iteration limit) it is retried once from an advanced basis.  A dual
  * simplex solve after bound changes only first tries the basis of the
- * last solve as it is (src/lib/lp.c, "Held bases"). */
+ * last solve as it is (src/lib/lp_glpk.c, "Held bases"). */
 enum lp_status lp_solve(struct lp *p, enum lp_method m);
 /* Forget the basis (next solve starts from the standard basis). */
 void lp_reset_basis(struct lp *p);
-/* Start from GLPK's advanced (crash) basis: deterministic, built from
+/* Start from the solver's advanced (crash) basis: deterministic, built from
  * the matrix alone, and usually far fewer pivots from optimal than the
  * standard (all-slack) basis. */
 void lp_crash_basis(struct lp *p);
@@ -77,7 +155,7 @@ void lp_crash_basis(struct lp *p);
  * every row non-basic (its auxiliary variable at its bound), every other
  * column non-basic at its bound (or 0 if free).  The caller makes it a
  * basis (as many basic columns as rows, non-singular); a singular one
- * is GLPK's to repair (lp_solve). */
+ * is the solver's to repair (lp_solve). */
 void lp_set_basis(struct lp *p, const unsigned char *cols);
 
 /* A saved basis (row and column statuses), to warm-start a problem that
@@ -109,18 +187,18 @@ int lp_row_basic(const struct lp *p, int row);
 int lp_get_col(const struct lp *p, int col, int *rows, double *vals);
 /* Solve the square sparse system M y = b of order n, M given by nnz
  * triplets (rows ri[], columns ci[], values v[]; 0-based, a repeated
- * position adds up), by GLPK's sparse LU of the basis matrix of a
- * throw-away problem (glp_factorize, glp_ftran).  b is replaced by y.
- * Returns 0, or -1 if M is singular or too ill-conditioned for GLPK's
- * LU (GLP_ESING, GLP_ECOND), or after a GLPK error (out of memory: the
- * thread's problems are then dead, as after LP_ERROR). */
-int lp_solve_square(int n, int nnz, const int *ri, const int *ci,
-		    const double *v, double *b);
+ * position adds up), by the solver's sparse LU (of the basis matrix of
+ * a throw-away problem).  b is replaced by y.  Returns 0, or -1 if M is
+ * singular or too ill-conditioned for the LU, or after an internal
+ * error (out of memory: the thread's problems are then dead, as after
+ * LP_ERROR). */
+int lp_solve_square(struct lp_solver *s, int n, int nnz, const int *ri,
+		    const int *ci, const double *v, double *b);
 /* 1 if the optimum is unique as far as the reduced costs tell: no
  * non-basic variable (except fixed ones) has a zero reduced cost. */
 int lp_unique(const struct lp *p, double tol);
-/* The tie-break of docs/method.md, "One answer per sample", right after
- * an LP_OPTIMAL solve of p: if some non-basic variable has a reduced cost
+/* The tie-break of docs/method.md, "One answer per sample" (lp.c),
+ * right after an LP_OPTIMAL solve of p: if some non-basic variable has a reduced cost
  * |d| <= tol, the optimum may not be unique, and p is solved again over
  * its optimal face (every non-basic variable with |d| > tol held where it
  * is) with the objective "minimise c2 . x" (c2: one coefficient per
@@ -133,60 +211,6 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 			   int *solved);
 /* Simplex iterations of the last solve. */
 int lp_last_iterations(const struct lp *p);
-
-/* Counters of this thread since start: solves, simplex iterations, and
- * solves answered by the basis GLPK held, without the simplex (src/lib/lp.c,
- * "Held bases"). */
-void lp_thread_counters(long *solves, long *iterations, long *held);
-/* Seconds this thread spent inside lp_solve (GLPK's simplex), by the
- * monotonic clock, since start (for the benchmark). */
-double lp_thread_seconds(void);
-void lp_thread_done(void);
-/* lp_thread_done() if the thread holds no problem (every lp_new freed). */
-void lp_thread_idle(void);
-/* Interruption: while *flag is non-zero, lp_solve on this thread returns
- * LP_STOPPED at once, and a solve already running stops within about a
- * second (src/lib/lp.c, "Interruption").  NULL: never.  Also clears the
- * thread's interrupted mark. */
-void lp_thread_stop_flag(const atomic_int *flag);
-/* Progress: fn(ctx, incumbent, bound) is called on this thread every
- * half second during a long simplex of lp_solve (both NAN), and about
- * once a second during lp_solve_mip (the incumbent's objective, NAN
- * before one is found, and the best bound of the open nodes).  fn must
- * not call this module.  NULL: never. */
-typedef void (*lp_progress_fn)(void *ctx, double incumbent, double bound);
-void lp_thread_progress(lp_progress_fn fn, void *ctx);
-/* Did an lp_solve of this thread return LP_STOPPED since the flag was
- * set?  The sample it belonged to is incomplete: discard it. */
-int lp_thread_interrupted(void);
-const char *lp_last_message(void);
-
-/* Fault injection, for tests: from now on every `every`-th lp_solve()
- * of each thread (counted per thread, from 0 again for the calling
- * thread) returns `as` - LP_FAILED at once,
- * or LP_ERROR by raising a GLPK error inside the solve, so the recovery
- * above runs for real.  every = 0 turns it off.  Call it before the
- * threads that solve start.  Without a call, the environment variable
- * SLIPWALL_LP_FAULT=failed:N or error:N does the same (read once). */
-void lp_fault_set(long every, enum lp_status as);
-/* For tests: GLPK's simplex iteration limit for this thread's solves
- * (0: the default, 50,000 + 50 (rows + columns)).  A solve that reaches
- * it is retried once from an advanced basis, then LP_FAILED: the path of
- * GLPK's own GLP_EITLIM, provoked for real rather than injected. */
-void lp_thread_iteration_limit(int limit);
-
-/* Memory: the limit of GLPK's allocator on each thread, in MB (GLPK's
- * glp_mem_limit; at least 1), for the threads' environments created
- * from now on; call it before the threads start.  The environment
- * variable SLIPWALL_GLPK_MEM_MB (for tests) overrides it.  Running out
- * (of the limit or of malloc) inside any call of this module is a GLPK
- * error: the thread's problems die and the next lp_solve returns
- * LP_ERROR (src/lib/lp.c, "Out of memory").  lp_mem_limit: the limit in
- * force (0: none); lp_memory_errors: how many GLPK errors, over all
- * threads since start, were out of memory. */
-void lp_mem_limit_set(double mb);
-int lp_mem_limit(void);
-long lp_memory_errors(void);
 
 /* Mixed-integer: mark a column binary; solve with branch and cut. */
 void lp_set_binary(struct lp *p, int col);

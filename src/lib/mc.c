@@ -42,7 +42,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/sys.h"
 
@@ -128,8 +127,9 @@ static void *worker(void *arg)
 	pthread_mutex_unlock(&m->mu);
 	/* a stop reaches the LPs too: a sample in progress is abandoned
 	 * (on a large wall one LP can take minutes) */
-	lp_thread_stop_flag(&m->stop);
-	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_lp_config lpc = m->cfg.opts.lp;
+	lpc.stop = &m->stop;
+	struct sample_ws *ws = sample_ws_new_config(w, &lpc);
 	struct sample_result r;
 	struct record it;
 	sample_result_init(&r, w);
@@ -160,7 +160,7 @@ static void *worker(void *arg)
 				  m->cfg.depth);
 		double t0 = sys_now();
 		sample_run(ws, &it.draw, &m->cfg.opts, &r);
-		if (lp_thread_interrupted())
+		if (sample_ws_interrupted(ws))
 			break;	/* incomplete: never reported (mc_pop ends
 				 * at its index once the workers are gone) */
 		record_set(&it, i, &r, sys_now() - t0, w);
@@ -177,19 +177,17 @@ static void *worker(void *arg)
 		pthread_mutex_unlock(&m->mu);
 	}
 
-	long solves, iters, held;
-	lp_thread_counters(&solves, &iters, &held);
-	double lp_seconds = lp_thread_seconds();
+	struct sample_lp_counters lc;
+	sample_ws_counters(ws, &lc);
 	sample_result_free(&r);
 	record_free(&it);
 	sample_ws_free(ws);
-	lp_thread_stop_flag(NULL);
-	lp_thread_done();
+	sample_thread_done();
 	pthread_mutex_lock(&m->mu);
-	m->counters.solves += solves;
-	m->counters.iterations += iters;
-	m->counters.held += held;
-	m->counters.lp_seconds += lp_seconds;
+	m->counters.solves += lc.solves;
+	m->counters.iterations += lc.iterations;
+	m->counters.held += lc.held;
+	m->counters.lp_seconds += lc.seconds;
 	m->since[id] = 0;
 	m->running--;
 	pthread_cond_broadcast(&m->cv_ready);
@@ -409,17 +407,7 @@ int mc_ncpu(void)
 	return n > 0 ? (int)n : 1;
 }
 
-void mc_worker_memory_set(double mb)
-{
-	lp_mem_limit_set(mb);
-}
-
-int mc_worker_memory(void)
-{
-	return lp_mem_limit();
-}
-
 long mc_memory_errors(void)
 {
-	return lp_memory_errors();
+	return sample_memory_errors();
 }

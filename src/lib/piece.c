@@ -105,7 +105,7 @@ int piece_fixed_point(const struct lp *X, const struct piece *pc,
 	for (int k = 0; k < m; k++)
 		if (unk_c[k] >= 0)
 			put(&s, unk_c[k], unk_c[k], 1);
-	if (lp_solve_square(n, s.nnz, s.ri, s.ci, s.v, b) != 0)
+	if (lp_solve_square(lp_solver_of(X), n, s.nnz, s.ri, s.ci, s.v, b) != 0)
 		goto out;
 	for (int k = 0; k < m; k++)
 		cstar[k] = unk_c[k] >= 0 ? b[unk_c[k]] : c[k];

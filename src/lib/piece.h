@@ -14,7 +14,7 @@
  *     rows of the LP, the c-dependent bounds moved to the left,
  *     c_k - N_a,k - N_b,k = 0        for every interface k,
  *
- * solved by GLPK's sparse LU (lp_solve_square).  An interface whose
+ * solved by the LP solver's sparse LU (lp_solve_square).  An interface whose
  * closeness row holds no basic p_k, q_k has N_k = c_k for every c on the
  * piece: its c_k stays where it is (the plain iteration keeps it too),
  * since I - A is singular in that direction.

@@ -1,8 +1,8 @@
 /*
  * sample.c - one Monte Carlo sample (docs/method.md), the hot loop.
  *
- * Six GLPK problems per wall and thread, one per LP role, built once
- * per workspace.  Each sample rewrites what its contact points change
+ * Six LP problems per wall and thread, one per LP role, built once per
+ * workspace, on the workspace's own LP solver (lp.h).  Each sample rewrites what its contact points change
  * (the moment coefficients of the normal-force columns and of the
  * opening-rate rows) and resets every bound and objective (refill; the
  * `previous` start keeps the bases) and starts every role from the
@@ -50,14 +50,16 @@
  * kinematic LP's precision (motion_threshold).  docs/method.md says why.
  */
 #include <gsl/gsl_linalg.h>
+#include <limits.h>
 #include <math.h>
-#include <pthread.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "lp.h"
 #include "piece.h"
+#include "sample_lp.h"
 #include "slipwall/sample.h"
 #include "statics.h"
 #include "support.h"
@@ -205,8 +207,10 @@ struct sample_ws {
 	const struct wall *w;
 	struct statics st;
 	int m, R;		/* interfaces, equilibrium rows */
-	/* one GLPK problem per LP role (see the top), so that between two
-	 * solves of a role only bounds change and GLPK keeps its basis */
+	/* the workspace's LP solver, and one problem per LP role (see the
+	 * top), so that between two solves of a role only bounds change and
+	 * the solver keeps its basis */
+	struct lp_solver *solver;
 	struct lp *lp[ROLES];
 	double *c;		/* m: SLP capacities (sum of normal forces) */
 	double *cstar;		/* m: a piece's fixed point (slp) */
@@ -431,10 +435,10 @@ static void build(struct sample_ws *ws)
 {
 	int m = ws->m, R = ws->R;
 	for (int p = AMAX; p <= AMIN; p++)
-		ws->lp[p] = lp_new(R, 4 * m + 1);
-	ws->lp[LP1] = lp_new(R, 3 * m + 1);
-	ws->lp[LP2] = lp_new(R + m, 3 * m + 1 + 2 * m);
-	ws->lp[KIN] = lp_new(3 * m + 1, R + 2 * m);
+		ws->lp[p] = lp_new(ws->solver, R, 4 * m + 1);
+	ws->lp[LP1] = lp_new(ws->solver, R, 3 * m + 1);
+	ws->lp[LP2] = lp_new(ws->solver, R + m, 3 * m + 1 + 2 * m);
+	ws->lp[KIN] = lp_new(ws->solver, 3 * m + 1, R + 2 * m);
 	write_fixed(ws);
 	write_points(ws);
 }
@@ -458,7 +462,7 @@ static void canonical_bases(struct sample_ws *ws)
 	ws->setup = 1;
 	sample_run(ws, &d, &o, &r);
 	ws->setup = 0;
-	/* interrupted (lp_thread_stop_flag): the problems are dead and the
+	/* interrupted (sample_lp_config.stop): the problems are dead and the
 	 * workspace is only fit to be freed; lp_basis_save skips them */
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_save(ws->lp[p], &ws->canon[p]);
@@ -466,16 +470,20 @@ static void canonical_bases(struct sample_ws *ws)
 	sample_result_free(&r);
 }
 
-struct sample_ws *sample_ws_new(const struct wall *w)
-{
-	return sample_ws_new_start(w, sample_start());
-}
-
 static struct sample_ws *ws_new(const struct wall *w,
-				enum sample_start start, int large)
+				const struct sample_lp_config *c, int large)
 {
 	sw_init();	/* GSL's handler off before anderson_step can run */
 	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
+	struct lp_config lc;
+	lp_config_default(&lc);
+	lc.fault_every = c->fault_every;
+	lc.fault_as = c->fault_error ? LP_ERROR : LP_FAILED;
+	lc.mem_limit_mb = c->mem_limit_mb;
+	ws->solver = lp_solver_new(&lc);
+	/* before the problems are written: a stop reaches them too */
+	lp_solver_stop_flag(ws->solver, c->stop);
+	lp_solver_progress(ws->solver, c->progress, c->progress_ctx);
 	ws->w = w;
 	ws->large = large;
 	statics_init(&ws->st, w);
@@ -499,22 +507,48 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->r = sw_xcalloc(3 * m + 1, sizeof(double));
 	ws->c2 = sw_xcalloc(5 * m + (size_t)ws->R + 2, sizeof(double));
 	ws->basic = sw_xcalloc(4 * m + 1, 1);
-	ws->start = start;
+	ws->start = c->start;
 	build(ws);
 	canonical_bases(ws);
 	return ws;
 }
 
+struct sample_ws *sample_ws_new_config(const struct wall *w,
+				       const struct sample_lp_config *c)
+{
+	struct sample_lp_config d;
+	if (!c) {
+		sample_lp_config_default(&d);
+		c = &d;
+	}
+	return ws_new(w, c, w->nifaces > AUTO_LARGE_IFACES);
+}
+
+struct sample_ws *sample_ws_new(const struct wall *w)
+{
+	return sample_ws_new_config(w, NULL);
+}
+
 struct sample_ws *sample_ws_new_start(const struct wall *w,
 				      enum sample_start start)
 {
-	return ws_new(w, start, w->nifaces > AUTO_LARGE_IFACES);
+	struct sample_lp_config c;
+	sample_lp_config_default(&c);
+	c.start = start;
+	return sample_ws_new_config(w, &c);
 }
 
 struct sample_ws *sample_ws_new_auto_large(const struct wall *w)
 {
-	return ws_new(w, SAMPLE_START_AUTO, 1);
+	struct sample_lp_config c;
+	sample_lp_config_default(&c);
+	c.start = SAMPLE_START_AUTO;
+	return ws_new(w, &c, 1);
 }
+
+/* Memory errors of the workspaces freed so far (sample_memory_errors):
+ * the one process-wide tally, a sum of the solvers' own counts. */
+static atomic_long memory_errors;
 
 void sample_ws_free(struct sample_ws *ws)
 {
@@ -542,7 +576,43 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->basic);
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
+	struct lp_counters lc;
+	lp_solver_counters(ws->solver, &lc);
+	atomic_fetch_add(&memory_errors, lc.memory_errors);
+	lp_solver_free(ws->solver);
 	free(ws);
+}
+
+void sample_ws_counters(const struct sample_ws *ws,
+			struct sample_lp_counters *c)
+{
+	struct lp_counters lc;
+	lp_solver_counters(ws->solver, &lc);
+	c->solves = lc.solves;
+	c->iterations = lc.iterations;
+	c->held = lc.held;
+	c->memory_errors = lc.memory_errors;
+	c->seconds = lc.seconds;
+}
+
+int sample_ws_interrupted(const struct sample_ws *ws)
+{
+	return lp_solver_interrupted(ws->solver);
+}
+
+struct lp_solver *sample_ws_solver(struct sample_ws *ws)
+{
+	return ws->solver;
+}
+
+void sample_thread_done(void)
+{
+	lp_thread_done();
+}
+
+long sample_memory_errors(void)
+{
+	return atomic_load(&memory_errors);
 }
 
 /* Fresh problems, built at the current contact points (after a GLPK
@@ -584,18 +654,17 @@ static void refill(struct sample_ws *ws)
 static enum lp_status counted(struct sample_ws *ws, int role, enum lp_method m,
 			      const double *c2, struct sample_result *r)
 {
-	long s0, it0, h0, s1, it1, h1;
-	double t0 = lp_thread_seconds();
-	lp_thread_counters(&s0, &it0, &h0);
+	struct lp_counters c0, c1;
+	lp_solver_counters(ws->solver, &c0);
 	int solved = 1;
 	struct lp *p = ws->lp[role % ROLES];
 	enum lp_status s = c2 ? lp_tiebreak(p, c2, TOL_TIE, &solved)
 			      : lp_solve(p, m);
-	lp_thread_counters(&s1, &it1, &h1);
+	lp_solver_counters(ws->solver, &c1);
 	struct sample_lp_stats *st = &ws->stats[role];
-	st->lps += s1 - s0;
-	st->iterations += it1 - it0;
-	st->seconds += lp_thread_seconds() - t0;
+	st->lps += c1.solves - c0.solves;
+	st->iterations += c1.iterations - c0.iterations;
+	st->seconds += c1.seconds - c0.seconds;
 	r->lps += solved;
 	if (s == LP_ERROR)
 		rebuild(ws);
@@ -655,24 +724,58 @@ int sample_start_parse(const char *name)
 	return -1;
 }
 
-/* SLIPWALL_LP_START, read once (every workspace of the process uses the
- * same start); an unknown value is the default (main.c refuses it
- * before anything runs). */
-static pthread_once_t start_once = PTHREAD_ONCE_INIT;
-static enum sample_start start_env = SAMPLE_START_DEFAULT;
-
-static void start_from_env(void)
+void sample_lp_config_default(struct sample_lp_config *c)
 {
-	const char *e = getenv("SLIPWALL_LP_START");
-	int s = e && *e ? sample_start_parse(e) : -1;
-	if (s >= 0)
-		start_env = (enum sample_start)s;
+	memset(c, 0, sizeof *c);
+	c->start = SAMPLE_START_DEFAULT;
 }
 
-enum sample_start sample_start(void)
+int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
+			   const char *fault, const char *mem_mb, char *err)
 {
-	pthread_once(&start_once, start_from_env);
-	return start_env;
+	int rc = 0;
+	if (start && *start) {
+		int st = sample_start_parse(start);
+		if (st >= 0)
+			c->start = (enum sample_start)st;
+		else
+			rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_LP_START='%s': "
+				     "not a start; use auto, slack-primal, "
+				     "slack-dual, crash, canonical, previous "
+				     "or support", start);
+	}
+	if (fault && *fault) {	/* failed:N or error:N (or N: failed) */
+		int error = 0;
+		char *end;
+		if (!strncmp(fault, "failed:", 7)) {
+			fault += 7;
+		} else if (!strncmp(fault, "error:", 6)) {
+			error = 1;
+			fault += 6;
+		}
+		long n = strtol(fault, &end, 10);
+		if (*end || n <= 0) {
+			if (!rc)
+				rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_LP_FAULT "
+					     "must be failed:N or error:N, "
+					     "N >= 1");
+		} else {
+			c->fault_every = n;
+			c->fault_error = error;
+		}
+	}
+	if (mem_mb && *mem_mb) {
+		char *end;
+		long n = strtol(mem_mb, &end, 10);
+		if (*end || n <= 0 || n > INT_MAX) {
+			if (!rc)
+				rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_GLPK_MEM_MB "
+					     "must be a number of megabytes >= 1");
+		} else {
+			c->mem_limit_mb = (int)n;
+		}
+	}
+	return rc ? -1 : 0;
 }
 
 /* A 64-bit mix of the bits of x and a salt (splitmix64's finaliser). */

@@ -244,8 +244,11 @@ static void tui_finish(struct tui *t)
 	wall_free(t->w);
 }
 
-int tui_main(const char *path)
+struct sample_lp_config tui_lp = { .start = SAMPLE_START_DEFAULT };
+
+int tui_main(const char *path, const struct sample_lp_config *lp)
 {
+	tui_lp = *lp;
 	struct tui tt, *t = &tt;
 	char err[SW_ERRLEN];
 	struct wall *w;

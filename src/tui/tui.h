@@ -41,6 +41,7 @@
 #include "slipwall/mc.h"
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
+#include "slipwall/sample.h"
 #include "slipwall/sys.h"
 #include "slipwall/tally.h"
 #include "slipwall/undo.h"
@@ -354,5 +355,9 @@ void tui_history_draw(struct tui *t);
 void tui_help_init(struct tui *t);
 enum tui_screen_id tui_help_key(struct tui *t, int ch);
 void tui_help_draw(struct tui *t);
+
+/* The LP solvers' settings (tui_main's lp): every pool and solve of the
+ * workbench copies them into its options. */
+extern struct sample_lp_config tui_lp;
 
 #endif

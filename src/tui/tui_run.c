@@ -117,6 +117,7 @@ void tui_run_start(struct tui *t)
 	r->latest_vel = calloc(3 * (size_t)w->nblocks + 1, sizeof(double));
 	tally_init(&r->tally, w);
 	mc_config_default(&r->cfg, w);
+	r->cfg.opts.lp = tui_lp;
 	t->runno++;
 	snprintf(r->what, sizeof r->what, "%s", t->next_what[0] ? t->next_what : "reset");
 	t->next_what[0] = 0;

@@ -53,6 +53,7 @@ static int tui_solve_one(struct tui_solve *s, enum solve_method m,
 
 	memset(&r, 0, sizeof r);
 	solve_opts_default(&o, m);
+	o.sample.lp = tui_lp;
 	o.stop = &s->stop;
 	ok = solve_run(s->w, &o, &r, err) == SW_OK &&
 	     r.status == SAMPLE_ACCEPTED;

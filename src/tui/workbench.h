@@ -10,6 +10,9 @@
  * SIGHUP, SIGINT, SIGTERM).  Needs a terminal on stdin and stdout.
  * Returns the process exit status: 0, 2 for a wall that does not load or
  * no terminal, 1 for a failure of the terminal. */
-int tui_main(const char *path);
+struct sample_lp_config;
+/* lp: the LP solvers' settings the command line read from the
+ * environment (src/cli/main.c), for every workspace of the workbench. */
+int tui_main(const char *path, const struct sample_lp_config *lp);
 
 #endif

@@ -2,7 +2,7 @@
  * test_faults.c - faults cost what they must and nothing more
  * (docs/reliability.md).
  *
- * GLPK: with lp_fault_set() the n-th LP of a sample fails, for every n
+ * LP solver: with lp_solver_fault() the n-th LP of a sample fails, for every n
  * (every LP role of the five steps), both as LP_FAILED and as a real GLPK
  * error (glp_error, the hook, the longjmp): the sample is a `numerical`
  * rejection, the workspace recovers, and the same sample solved again
@@ -35,6 +35,7 @@
 #include <unistd.h>
 
 #include "lp.h"
+#include "sample_lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/sample.h"
 #include "slipwall/wallfile.h"
@@ -43,10 +44,13 @@
 
 /* ---- GLPK faults ------------------------------------------------------- */
 
+/* the solver of the LPs made here (the samples' are their workspaces') */
+static struct lp_solver *S;
+
 static void test_lp_error(void)
 {
 	/* max x + y, x + y <= 1 */
-	struct lp *p = lp_new(1, 2);
+	struct lp *p = lp_new(S, 1, 2);
 	int cols[2] = {0, 1};
 	double one[2] = {1, 1};
 	lp_set_row(p, 0, 2, cols, one);
@@ -57,19 +61,19 @@ static void test_lp_error(void)
 	lp_set_obj(p, 1, 1);
 	lp_set_maximize(p, 1);
 
-	lp_fault_set(1, LP_ERROR);
+	lp_solver_fault(S, 1, LP_ERROR);
 	enum lp_status s = lp_solve(p, LP_PRIMAL);
 	tap_ok(s == LP_ERROR, "an injected GLPK error returns LP_ERROR (got %d)",
 	       s);
-	tap_ok(strstr(lp_last_message(), "Error detected") != NULL,
+	tap_ok(strstr(lp_solver_message(S), "Error detected") != NULL,
 	       "GLPK's own error text is kept, not printed: '%s'",
-	       lp_last_message());
+	       lp_solver_message(S));
 	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
 	       "a problem of the dead environment stays dead");
 	lp_free(p);	/* safe after LP_ERROR */
-	lp_fault_set(0, LP_FAILED);
+	lp_solver_fault(S, 0, LP_FAILED);
 
-	p = lp_new(1, 2);
+	p = lp_new(S, 1, 2);
 	lp_set_row(p, 0, 2, cols, one);
 	lp_set_row_bounds(p, 0, -HUGE_VAL, 1);
 	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
@@ -81,12 +85,12 @@ static void test_lp_error(void)
 	tap_ok(s == LP_OPTIMAL && lp_obj(p) == 1,
 	       "a new problem after the error solves (status %d, obj %g)", s,
 	       lp_obj(p));
-	lp_fault_set(2, LP_FAILED);
+	lp_solver_fault(S, 2, LP_FAILED);
 	tap_ok(lp_solve(p, LP_PRIMAL) == LP_OPTIMAL &&
 	       lp_solve(p, LP_PRIMAL) == LP_FAILED &&
 	       lp_solve(p, LP_PRIMAL) == LP_OPTIMAL,
 	       "failed:2 fails every second solve, and the problem lives on");
-	lp_fault_set(0, LP_FAILED);
+	lp_solver_fault(S, 0, LP_FAILED);
 	lp_free(p);
 }
 
@@ -98,7 +102,7 @@ static void test_lp_error(void)
 static void test_lp_singular(void)
 {
 	/* max x + y, x + y <= 1, 2x + 2y <= 3: columns x and y are equal */
-	struct lp *p = lp_new(2, 2);
+	struct lp *p = lp_new(S, 2, 2);
 	int cols[2] = {0, 1};
 	double one[2] = {1, 1}, two[2] = {2, 2};
 	lp_set_row(p, 0, 2, cols, one);
@@ -206,10 +210,10 @@ static void test_sample_faults(const struct wall *w, enum lp_status as)
 		   "%s: the clean sample is accepted (%d LPs)", kind, lps)) {
 		int numerical = 0, recovered = 0;
 		for (int n = 1; n <= lps; n++) {
-			lp_fault_set(n, as);
+			lp_solver_fault(sample_ws_solver(x.ws), n, as);
 			sample_run(x.ws, &x.dr, &x.o, &x.r);
 			numerical += x.r.status == SAMPLE_NUMERICAL;
-			lp_fault_set(0, LP_FAILED);
+			lp_solver_fault(sample_ws_solver(x.ws), 0, LP_FAILED);
 			recovered += one_sample_clean(&x);
 		}
 		tap_ok(numerical == lps,
@@ -223,7 +227,7 @@ static void test_sample_faults(const struct wall *w, enum lp_status as)
 	one_sample_free(&x);
 }
 
-/* GLPK's iteration limit, reached for real (lp_thread_iteration_limit):
+/* GLPK's iteration limit, reached for real (lp_solver_iteration_limit):
  * an LP that needs more pivots than the limit is LP_FAILED (after the
  * retry), the same problem then solves with the default limit; a sample
  * whose LPs hit it is a `numerical` rejection, and the same workspace
@@ -233,7 +237,7 @@ static void test_iteration_limit(const struct wall *w)
 	/* max sum x_j, x_j + x_{j+1} <= 1 (a path of 12 columns): the
 	 * primal simplex from the slack basis needs several pivots */
 	enum { N = 12 };
-	struct lp *p = lp_new(N - 1, N);
+	struct lp *p = lp_new(S, N - 1, N);
 	for (int i = 0; i < N - 1; i++) {
 		int cols[2] = {i, i + 1};
 		double one[2] = {1, 1};
@@ -245,9 +249,9 @@ static void test_iteration_limit(const struct wall *w)
 		lp_set_obj(p, j, 1);
 	}
 	lp_set_maximize(p, 1);
-	lp_thread_iteration_limit(1);
+	lp_solver_iteration_limit(S, 1);
 	enum lp_status s1 = lp_solve(p, LP_PRIMAL);
-	lp_thread_iteration_limit(0);
+	lp_solver_iteration_limit(S, 0);
 	lp_reset_basis(p);
 	enum lp_status s2 = lp_solve(p, LP_PRIMAL);
 	tap_ok(s1 == LP_FAILED && s2 == LP_OPTIMAL && lp_obj(p) == N / 2 &&
@@ -259,10 +263,10 @@ static void test_iteration_limit(const struct wall *w)
 
 	struct one_sample x;
 	one_sample_init(&x, w, 3);
-	lp_thread_iteration_limit(2);
+	lp_solver_iteration_limit(sample_ws_solver(x.ws), 2);
 	sample_run(x.ws, &x.dr, &x.o, &x.r);
 	enum sample_status limited = x.r.status;
-	lp_thread_iteration_limit(0);
+	lp_solver_iteration_limit(sample_ws_solver(x.ws), 0);
 	int clean = one_sample_clean(&x);
 	tap_ok(x.r0.status == SAMPLE_ACCEPTED && limited == SAMPLE_NUMERICAL &&
 	       clean,
@@ -487,6 +491,7 @@ int main(void)
 	struct wall *demo = tw_load_file(SRCDIR "/walls/demo.yaml");
 	struct wall *ft = tw_load_file(SRCDIR "/walls/ferris-tinloi-1.yaml");
 
+	S = lp_solver_new(NULL);
 	test_lp_error();
 	test_lp_singular();
 	test_sample_faults(ft, LP_ERROR);
@@ -497,6 +502,7 @@ int main(void)
 
 	wall_free(demo);
 	wall_free(ft);
+	lp_solver_free(S);
 	lp_thread_done();
 	return tap_done();
 }

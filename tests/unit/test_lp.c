@@ -1,7 +1,8 @@
 /*
- * test_lp.c - the GLPK layer's held bases (src/lib/lp.c): after bound
+ * test_lp.c - the LP layer's held bases (src/lib/lp_glpk.c): after bound
  * changes, a dual simplex solve takes the basis GLPK holds as it is when
- * it is still optimal, and only then.  On a 2 x 2 LP whose every answer
+ * it is still optimal, and only then; and a solver instance's state (its
+ * counters, its stop flag) is its own.  On a 2 x 2 LP whose every answer
  * is known in closed form:
  *
  *   max x + y   s.t.   x + 2y <= b1,   3x + y <= b2,   x, y >= 0
@@ -16,16 +17,18 @@
 #include "lp.h"
 #include "tap.h"
 
+static struct lp_solver *S;
+
 static long held_count(void)
 {
-	long s, it, h;
-	lp_thread_counters(&s, &it, &h);
-	return h;
+	struct lp_counters c;
+	lp_solver_counters(S, &c);
+	return c.held;
 }
 
 static struct lp *two_by_two(double b1, double b2)
 {
-	struct lp *p = lp_new(2, 2);
+	struct lp *p = lp_new(S, 2, 2);
 	int cols[2] = {0, 1};
 	double r1[2] = {1, 2}, r2[2] = {3, 1};
 	lp_set_row(p, 0, 2, cols, r1);
@@ -42,6 +45,7 @@ static struct lp *two_by_two(double b1, double b2)
 
 int main(void)
 {
+	S = lp_solver_new(NULL);
 	struct lp *p = two_by_two(4, 6);
 	long h0 = held_count();
 	enum lp_status st = lp_solve(p, LP_DUAL);
@@ -102,32 +106,52 @@ int main(void)
 	 * dead at once, not half-written: once the stop is withdrawn its
 	 * solve fails (LP_ERROR), where a whole problem would solve */
 	atomic_int stop = 0;
-	lp_thread_stop_flag(&stop);
+	lp_solver_stop_flag(S, &stop);
 	int col_rows[1] = {0};
 	double col_vals[1] = {1};
-	p = lp_new(1, 2);
+	p = lp_new(S, 1, 2);
 	lp_set_col(p, 0, 1, col_rows, col_vals);
 	lp_set_col(p, 1, 1, col_rows, col_vals);
 	tap_ok(lp_solve(p, LP_PRIMAL) == LP_OPTIMAL,
 	       "written whole before any stop: solved");
 	lp_free(p);
-	p = lp_new(1, 2);
+	p = lp_new(S, 1, 2);
 	lp_set_col(p, 0, 1, col_rows, col_vals);
 	atomic_store(&stop, 1);
 	lp_set_col(p, 1, 1, col_rows, col_vals);
-	tap_ok(lp_solve(p, LP_PRIMAL) == LP_STOPPED && lp_thread_interrupted(),
+	tap_ok(lp_solve(p, LP_PRIMAL) == LP_STOPPED && lp_solver_interrupted(S),
 	       "stopped while its columns were written: the solve says so");
 	atomic_store(&stop, 0);
 	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
 	       "... and the problem is dead, not half-written");
 	lp_free(p);
 	atomic_store(&stop, 1);
-	p = lp_new(1, 2);
+	p = lp_new(S, 1, 2);
 	atomic_store(&stop, 0);
 	tap_ok(lp_solve(p, LP_PRIMAL) == LP_ERROR,
 	       "made after the stop: dead");
 	lp_free(p);
-	lp_thread_stop_flag(NULL);
+
+	/* two solvers on one thread: the stop flag and the counters are
+	 * each one's own */
+	struct lp_solver *S2 = lp_solver_new(NULL);
+	atomic_store(&stop, 1);
+	struct lp_counters c0, c1, d1;
+	lp_solver_counters(S2, &c0);
+	struct lp *q = lp_new(S2, 1, 2);
+	lp_set_col(q, 0, 1, col_rows, col_vals);
+	lp_set_col(q, 1, 1, col_rows, col_vals);
+	tap_ok(lp_solve(q, LP_PRIMAL) == LP_OPTIMAL && !lp_solver_interrupted(S2),
+	       "a second solver: the first one's stop flag is not its own");
+	lp_solver_counters(S2, &c1);
+	lp_solver_counters(S, &d1);
+	tap_ok(c1.solves == c0.solves + 1 && d1.solves > c1.solves,
+	       "... and its counters neither (%ld solves, the first %ld)",
+	       c1.solves, d1.solves);
+	lp_free(q);
+	lp_solver_free(S2);
+	lp_solver_stop_flag(S, NULL);
+	lp_solver_free(S);
 
 	lp_thread_done();
 	return tap_done();

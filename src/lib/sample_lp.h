@@ -1,0 +1,14 @@
+/*
+ * sample_lp.h - the LP solver a sample workspace owns (sample.c), for
+ * the library's other LP users on the same workspace: the global
+ * method's mixed-integer program (global.c).  Private to src/lib/.
+ */
+#ifndef SLIPWALL_SAMPLE_LP_H
+#define SLIPWALL_SAMPLE_LP_H
+
+#include "lp.h"
+#include "slipwall/sample.h"
+
+struct lp_solver *sample_ws_solver(struct sample_ws *ws);
+
+#endif
