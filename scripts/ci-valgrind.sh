@@ -77,7 +77,7 @@ vg 0 "compare --samples (the demo run's file)" compare walls/demo.yaml \
 vg 0 "report of the demo run (figures with cairo)" report walls/demo.yaml \
 	--samples "$tmp/demo.csv" --tests "$tmp/tests.txt" --out "$tmp/report"
 vg 1 "run -n 5 --samples /dev/full" run walls/demo.yaml -n 5 --samples /dev/full
-# GLPK errors inside the solves (src/lib/lp.c): the recovery frees everything
+# GLPK errors inside the solves (src/lib/lp_glpk.c): the recovery frees everything
 # (every 400th LP: a demo sample solves 60-80 LPs, so some samples fail
 # and the others are accepted)
 export SLIPWALL_LP_FAULT=error:400

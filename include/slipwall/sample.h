@@ -246,7 +246,8 @@ int sample_ws_interrupted(const struct sample_ws *ws);
  * per-thread environment goes (call it before the thread exits). */
 void sample_thread_done(void);
 /* Internal errors of workspaces' LP solvers that were running out of
- * memory, over the process, counted as each workspace is freed. */
+ * memory, over the process: those of a sample are counted before
+ * sample_run (or the other sample functions) returns. */
 long sample_memory_errors(void);
 
 /* The statics of the workspace (scales, operator), for the global

@@ -236,7 +236,25 @@ struct sample_ws {
 	/* LPs by role, since the workspace was made (sample_ws_stats) */
 	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];
 	struct lp_basis canon[ROLES];	/* see set_points() */
+	long memory_noted;	/* of the solver's memory errors */
 };
+
+/* The LP solvers' memory errors (sample_memory_errors): the one
+ * process-wide tally, each workspace's added as its solver counts them
+ * (note_memory), so that a front end that has a sample's result has
+ * its errors too. */
+static atomic_long memory_errors;
+
+static void note_memory(struct sample_ws *ws)
+{
+	struct lp_counters c;
+	lp_solver_counters(ws->solver, &c);
+	if (c.memory_errors > ws->memory_noted) {
+		atomic_fetch_add(&memory_errors,
+				 c.memory_errors - ws->memory_noted);
+		ws->memory_noted = c.memory_errors;
+	}
+}
 
 /* Column indices. */
 #define COL_LAMBDA(ws) (3 * (ws)->m)
@@ -546,10 +564,6 @@ struct sample_ws *sample_ws_new_auto_large(const struct wall *w)
 	return ws_new(w, &c, 1);
 }
 
-/* Memory errors of the workspaces freed so far (sample_memory_errors):
- * the one process-wide tally, a sum of the solvers' own counts. */
-static atomic_long memory_errors;
-
 void sample_ws_free(struct sample_ws *ws)
 {
 	if (!ws)
@@ -576,9 +590,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->basic);
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
-	struct lp_counters lc;
-	lp_solver_counters(ws->solver, &lc);
-	atomic_fetch_add(&memory_errors, lc.memory_errors);
+	note_memory(ws);
 	lp_solver_free(ws->solver);
 	free(ws);
 }
@@ -668,6 +680,7 @@ static enum lp_status counted(struct sample_ws *ws, int role, enum lp_method m,
 	r->lps += solved;
 	if (s == LP_ERROR)
 		rebuild(ws);
+	note_memory(ws);
 	return s;
 }
 

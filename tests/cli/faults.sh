@@ -3,7 +3,7 @@
 # (docs/reliability.md).
 #
 # Usage (from the source root): bash tests/cli/faults.sh /path/to/slipwall
-# Proves: GLPK failures and GLPK errors (SLIPWALL_LP_FAULT, src/lib/lp.c) are
+# Proves: GLPK failures and GLPK errors (SLIPWALL_LP_FAULT, src/lib/lp_glpk.c) are
 # `numerical` rejections, counted in the JSON, the run goes on, and every
 # accepted sample is the one a clean run computes; `solve` reports a
 # numerical failure with exit 1; a samples file that cannot be created,

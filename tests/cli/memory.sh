@@ -1,6 +1,6 @@
 #!/bin/bash
 # cli/memory.sh - the LP solver running out of memory fails samples, not
-# the run (docs/reliability.md, "Limits"; src/lib/lp.c, "Out of memory").
+# the run (docs/reliability.md, "Limits"; src/lib/lp_glpk.c, "Out of memory").
 #
 # Usage (from the source root): bash tests/cli/memory.sh /path/to/slipwall
 # Proves, with GLPK's allocator limited for real (SLIPWALL_GLPK_MEM_MB, a

@@ -86,7 +86,7 @@ fi
 # size (docs/reliability.md), too long for CI.  Sample it for a minute,
 # watching the memory (the high-water mark of /proc/PID/status), then
 # stop it with one SIGINT: the solve running inside GLPK must notice
-# (src/lib/lp.c, "Interruption") and the program end by itself within 10 s,
+# (src/lib/lp_glpk.c, "Interruption") and the program end by itself within 10 s,
 # exit 1 ("interrupted"), with valid JSON and a samples file of its
 # header and complete rows only.
 secs_run=${SLIPWALL_SIZE_SECONDS:-60}
