@@ -51,6 +51,7 @@ rules=(
 	"getenv in the library (allowed: ${getenv_allowed[*]:-none})|src/lib/* include/*|$getenv_ok|(^|[^[:alnum:]_])(secure_)?getenv[[:space:]]*\("
 	"the LP layer in the pool (mc.c) or solve.c|src/lib/mc.c src/lib/solve.c|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(lp|lp_backend|sample_lp)\.h\""
 	"the LP backend table (lp_backend.h) outside the LP layer (lp.c, lp_glpk.c)|src/* include/*|^src/lib/lp(_glpk)?\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp_backend\.h\""
+	"the engine reading friction from the wall, not from the sample's draw (docs/method.md)|src/lib/sample*.c src/lib/sample*.h src/lib/statics.* src/lib/support.* src/lib/global.* src/lib/solve.c src/lib/piece.* src/lib/lp*.c src/lib/lp*.h src/lib/mc.c src/lib/record.c|-|(wall_iface_mu|mu_bed|mu_head|mu_cov)"
 )
 
 # crossings TREE RULE: print the crossings of RULE in TREE (empty: none)
@@ -120,6 +121,7 @@ plant() {	# RULE-INDEX: the file and line that cross rule i
 	12) echo "src/lib/sample.c|	const char *e = getenv(\"SLIPWALL_LP_START\");" ;;
 	13) echo "src/lib/solve.c|#include \"lp.h\"" ;;
 	14) echo "src/lib/sample.c|#include \"lp_backend.h\"" ;;
+	15) echo "src/lib/statics.c|static double planted(const struct wall *w) { return w->mu_bed; }" ;;
 	esac
 }
 for i in "${!rules[@]}"; do

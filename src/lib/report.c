@@ -1183,7 +1183,16 @@ static double h_four(const struct rctx *c)
 	return plot_height(4);
 }
 
-const struct figdef report_figures[] = {
+/* A figure: its file name, its title, how to draw it and how high. */
+struct figdef {
+	const char *name;	/* file name without extension */
+	const char *title;	/* for report.md and the PDF metadata */
+	void (*draw)(struct fig *, const struct rctx *);
+	double (*height)(const struct rctx *);
+};
+
+/* The figures in the order of report.md; report_nfigures of them. */
+static const struct figdef report_figures[] = {
 	{"frequencies", "Relative frequencies (the paper's Fig. 8, left)",
 	 draw_frequencies, h_freq},
 	{"densities", "Model KDE against the tests' normal, and both normals "
@@ -1199,7 +1208,7 @@ const struct figdef report_figures[] = {
 	{"fragility", "Fragility: the probability of collapse at a load, with "
 	 "its 99 % simultaneous band", draw_fragility, h_three},
 };
-const int report_nfigures = sizeof report_figures / sizeof report_figures[0];
+static const int report_nfigures = sizeof report_figures / sizeof report_figures[0];
 
 const char *const *report_files(int sweep)
 {
@@ -1224,7 +1233,8 @@ const char *const *report_files(int sweep)
 	return files;
 }
 
-int report_figure_wanted(const struct rctx *c, int i)
+/* Is figure i drawn for c (the mechanisms need some)? */
+static int report_figure_wanted(const struct rctx *c, int i)
 {
 	return strcmp(report_figures[i].name, "mechanisms") || c->ntop > 0;
 }
@@ -1544,7 +1554,13 @@ enum sw_status report_write(const struct report_input *in, const char *dir,
 	if (st == SW_OK && cancelled(o))
 		st = sw_fail(err, SW_EINTR, "%s: interrupted: nothing written",
 			     dir);
-	if (st == SW_OK && (st = report_md_write(&c, s.dir, o, err)) == SW_OK)
+	struct md_figure fig[sizeof report_figures / sizeof report_figures[0]];
+	for (int i = 0; i < report_nfigures; i++)
+		fig[i] = (struct md_figure){report_figures[i].name,
+					    report_figures[i].title,
+					    report_figure_wanted(&c, i)};
+	if (st == SW_OK && (st = report_md_write(&c, fig, report_nfigures,
+						 s.dir, o, err)) == SW_OK)
 		stage_add(&s, "report.md");
 	if (st == SW_OK)
 		st = stage_publish(&s, err);

@@ -52,23 +52,18 @@ struct rctx {
 	const struct report_sweep *sweep;
 };
 
-/* A figure: its file name, its title, how to draw it and how high. */
-struct figdef {
-	const char *name;	/* file name without extension */
-	const char *title;	/* for report.md and the PDF metadata */
-	void (*draw)(struct fig *, const struct rctx *);
-	double (*height)(const struct rctx *);
+/* A figure as report.md lists it: report.c's table says which exist and
+ * which were drawn, so that report_md.c needs nothing of report.c. */
+struct md_figure {
+	const char *name, *title;
+	int drawn;
 };
 
-/* The figures in the order of report.md; report_nfigures of them. */
-extern const struct figdef report_figures[];
-extern const int report_nfigures;
-/* Is figure i drawn for c (the mechanisms need some)? */
-int report_figure_wanted(const struct rctx *c, int i);
-
-/* Write DIR/report.md for c, whole or not at all (outfile).  SW_OK or
- * SW_EIO with a message in err. */
-enum sw_status report_md_write(const struct rctx *c, const char *dir,
-			       const struct report_opts *o, char *err);
+/* Write DIR/report.md for c and its nfig figures, whole or not at all
+ * (outfile).  SW_OK or SW_EIO with a message in err. */
+enum sw_status report_md_write(const struct rctx *c,
+			       const struct md_figure *fig, int nfig,
+			       const char *dir, const struct report_opts *o,
+			       char *err);
 
 #endif

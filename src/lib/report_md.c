@@ -203,34 +203,36 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 		fprintf(f, "\n%s\n", t->note);
 }
 
-static void md_figures(FILE *f, const struct rctx *c,
+static void md_figures(FILE *f, const struct md_figure *fig, int nfig,
 		       const struct report_opts *o)
 {
 	fprintf(f, "\n## Figures\n\n");
-	for (int i = 0; i < report_nfigures; i++) {
-		if (!report_figure_wanted(c, i)) {
+	for (int i = 0; i < nfig; i++) {
+		if (!fig[i].drawn) {
 			fprintf(f, "### %s\n\nNot drawn: no mechanisms were "
-				"recorded for these loads.\n\n", report_figures[i].title);
+				"recorded for these loads.\n\n", fig[i].title);
 			continue;
 		}
-		fprintf(f, "### %s\n\n", report_figures[i].title);
+		fprintf(f, "### %s\n\n", fig[i].title);
 		if (o->formats & REPORT_PNG)
-			fprintf(f, "![%s](%s.png)\n\n", report_figures[i].name,
-				report_figures[i].name);
+			fprintf(f, "![%s](%s.png)\n\n", fig[i].name,
+				fig[i].name);
 		int any = 0;
 		if (o->formats & REPORT_SVG)
 			fprintf(f, "%s[SVG](%s.svg)", any++ ? " · " : "",
-				report_figures[i].name);
+				fig[i].name);
 		if (o->formats & REPORT_PDF)
 			fprintf(f, "%s[PDF](%s.pdf)", any++ ? " · " : "",
-				report_figures[i].name);
+				fig[i].name);
 		if (any)
 			fprintf(f, "\n\n");
 	}
 }
 
-enum sw_status report_md_write(const struct rctx *c, const char *dir,
-			       const struct report_opts *o, char *err)
+enum sw_status report_md_write(const struct rctx *c,
+			       const struct md_figure *fig, int nfig,
+			       const char *dir, const struct report_opts *o,
+			       char *err)
 {
 	const struct report_run *r = &c->in->run;
 	char path[4096];
@@ -259,7 +261,7 @@ enum sw_status report_md_write(const struct rctx *c, const char *dir,
 	md_ks(f, c);
 	md_single(f, c);
 	md_run(f, c, &t);
-	md_figures(f, c, o);
+	md_figures(f, fig, nfig, o);
 	free(t.name);
 	free(t.wall_path);
 	free(t.command);

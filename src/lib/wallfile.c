@@ -1238,8 +1238,9 @@ static int reader_load(struct reader *r, const char *buf, size_t len,
 	return rc;
 }
 
-int wallfile_yaml_load(const char *buf, size_t len, const char *name,
-		       yaml_document_t *doc, char *err)
+/* The parser wallkeep_patch takes (wallkeep.h, wallkeep_yaml_fn). */
+static int wallfile_yaml_load(const char *buf, size_t len, const char *name,
+			      yaml_document_t *doc, char *err)
 {
 	struct reader r;
 	memset(&r, 0, sizeof r);
@@ -1705,7 +1706,7 @@ static char *save_keeping(const struct wall *w, char *new, size_t *len)
 	} else if (old) {
 		size_t plen;
 		char *p = wallkeep_patch(orig, olen, old, xlen, new, *len,
-					 &plen);
+					 &plen, wallfile_yaml_load);
 		if (p && save_loads_as(p, plen, new)) {
 			out = p;
 			*len = plen;

@@ -62,12 +62,13 @@ static size_t wallkeep_bom(const char *s, size_t len)
 	return len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3) ? 3 : 0;
 }
 
-static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len)
+static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len,
+			  wallkeep_yaml_fn parse)
 {
 	char err[SW_ERRLEN];
 	t->s = s;
 	t->len = len;
-	if (wallfile_yaml_load(s, len, "", &t->doc, err))
+	if (parse(s, len, "", &t->doc, err))
 		return -1;
 	t->off = sw_xmalloc(sizeof *t->off * (len + 1));
 	t->n = 0;
@@ -468,14 +469,14 @@ static char *apply(struct wallkeep *k, size_t *len)
 
 char *wallkeep_patch(const char *orig, size_t olen, const char *old,
 		     size_t oldlen, const char *new, size_t newlen,
-		     size_t *len)
+		     size_t *len, wallkeep_yaml_fn parse)
 {
 	struct wallkeep k;
 	char *out = NULL;
 	memset(&k, 0, sizeof k);
-	if (!wallkeep_parse(&k.o, orig, olen) &&
-	    !wallkeep_parse(&k.x, old, oldlen) &&
-	    !wallkeep_parse(&k.y, new, newlen) &&
+	if (!wallkeep_parse(&k.o, orig, olen, parse) &&
+	    !wallkeep_parse(&k.x, old, oldlen, parse) &&
+	    !wallkeep_parse(&k.y, new, newlen, parse) &&
 	    yaml_document_get_root_node(&k.o.doc) &&
 	    yaml_document_get_root_node(&k.x.doc) &&
 	    yaml_document_get_root_node(&k.y.doc) && !walk(&k, 1, 1, 1))
