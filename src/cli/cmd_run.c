@@ -63,7 +63,7 @@ static void usage(FILE *f)
 {
 	fprintf(f,
 		"usage: slipwall run WALL.yaml [-n N] [--seed S] [--threads T]\n"
-		"                    [--samples FILE.csv] [--positions FILE.csv]\n"
+		"                    [--samples FILE.csv] [--replay FILE.csv]\n"
 		"                    [--depth D] [--until-ci W] [--at LOAD] [--json]\n"
 		"                    [--friction MU|BED,HEAD] [--load-at X,Y]\n"
 		"                    [--load-direction DX,DY] [--set KEY=VALUE]...\n"
@@ -77,8 +77,9 @@ static void usage(FILE *f)
 		"  --threads T          worker threads (default: the number of CPUs);\n"
 		"                       the results do not depend on it\n"
 		"  --samples FILE.csv   write one row per sample, as it is computed\n"
-		"  --positions FILE.csv replay the draws (contact positions, and\n"
+		"  --replay FILE.csv    replay the draws (contact positions, and\n"
 		"                       friction when random) of a samples file\n"
+		"  --positions FILE.csv the same (its first name)\n"
 		"  --depth D            imperfection depth, 0..0.5 (default: the wall's)\n"
 		"  --friction MU | --friction BED,HEAD     friction of every joint, or\n"
 		"                       of the bed and head joints\n"
@@ -139,6 +140,8 @@ static int parse_args(int argc, char **argv, struct run_args *a)
 		OVERRIDE_OPTIONS(&a->ov),
 		CLI_OPT_FILE("--samples", a->samples),
 		CLI_OPT_FILE("--positions", a->positions),
+		/* the same: it replays the whole draw (draw.h) */
+		CLI_OPT_FILE("--replay", a->positions),
 		{ .name = "--slp", .kind = CLI_OPT_CALL, .dst = &a->slp,
 		  .call = parse_slp },
 		{ .name = "--at", .kind = CLI_OPT_DOUBLE, .dst = &a->at,

@@ -177,6 +177,10 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 	if (r->threads > 0)
 		fprintf(f, "| threads | %d (the results do not depend on it) |\n",
 			r->threads);
+	if (c->w->mu_cov > 0)	/* random friction (fixed: the wall file's) */
+		fprintf(f, "| friction | random per joint and sample: lognormal, "
+			"mean bed %g, head %g, coefficient of variation %g |\n",
+			c->w->mu_bed, c->w->mu_head, c->w->mu_cov);
 	if (r->anywhere)
 		fprintf(f, "| contact points | anywhere (sorted pair of U(0, 1)) |\n");
 	else if (isfinite(r->depth))

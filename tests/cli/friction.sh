@@ -91,7 +91,7 @@ def same(x, y):
     return abs(p - q) <= 1e-9 * max(1, abs(p))
 sys.exit(not (len(a) == 40 and len(a) == len(b) and all(map(same, a, b))))
 PY
-"$bin" run walls/demo.yaml --cov 0.2 --positions "$tmp/t1.csv" \
+"$bin" run walls/demo.yaml --cov 0.2 --replay "$tmp/t1.csv" \
 	--threads 2 --samples "$tmp/r.csv" >/dev/null 2>&1
 check "a replay of the samples file (positions and friction) recomputes it" \
 	cmp -s "$tmp/t1.csv" "$tmp/r.csv"
