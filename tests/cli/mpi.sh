@@ -9,6 +9,7 @@
 # N odd and N smaller than the rank count, and 20001 fast samples on 3
 # ranks (rank 0's flow control at work); the default threads per rank;
 # --until-ci stops at the same sample; --positions replays under mpirun;
+# random friction's draws cross the wire and replay;
 # rank 0 alone prints the summary; a usage error and an error in the wall
 # file are printed once, a rank's own set-up error by that rank; ranks
 # that set up different runs (or --help on one only) are refused (exit
@@ -208,6 +209,18 @@ fi
 rc=$?
 check "--positions under mpirun: the replay is the same file again" \
 	eval '[ $rc -eq 0 ] && cmp -s "$tmp/ft1.1.csv" "$tmp/rp.csv"'
+
+# random friction (docs/method.md): the draw crosses the wire whole
+"$bin" run $ft -n 30 --seed 4 --cov 0.2 --threads 2 --samples "$tmp/mu1.csv" \
+	>/dev/null 2>&1
+"${mpi[@]}" -n 2 "$bin" run $ft -n 30 --seed 4 --cov 0.2 --threads 1 \
+	--samples "$tmp/mu2.csv" >/dev/null 2>"$tmp/mu2.err"
+rc=$?
+"${mpi[@]}" -n 2 "$bin" run $ft --cov 0.2 --replay "$tmp/mu1.csv" --threads 1 \
+	--samples "$tmp/mu3.csv" >/dev/null 2>>"$tmp/mu2.err"
+rc3=$?
+check "random friction, cov 0.2: 2 ranks write one process's file (mu_k columns), and replay it" \
+	eval '[ $rc -eq 0 ] && [ $rc3 -eq 0 ] && head -1 "$tmp/mu1.csv" | grep -q ",mu_1," && cmp -s "$tmp/mu1.csv" "$tmp/mu2.csv" && cmp -s "$tmp/mu1.csv" "$tmp/mu3.csv"'
 
 # ---- set-up errors -----------------------------------------------------------
 "${mpi[@]}" -n 2 "$bin" run $demo -n 0 >"$tmp/bad.out" 2>"$tmp/bad.err"
