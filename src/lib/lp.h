@@ -197,16 +197,17 @@ int lp_solve_square(struct lp_solver *s, int n, int nnz, const int *ri,
 /* 1 if the optimum is unique as far as the reduced costs tell: no
  * non-basic variable (except fixed ones) has a zero reduced cost. */
 int lp_unique(const struct lp *p, double tol);
-/* The tie-break of docs/method.md, "One answer per sample" (lp.c),
- * right after an LP_OPTIMAL solve of p: if some non-basic variable has a reduced cost
- * |d| <= tol, the optimum may not be unique, and p is solved again over
- * its optimal face (every non-basic variable with |d| > tol held where it
- * is) with the objective "minimise c2 . x" (c2: one coefficient per
- * column), by the primal simplex from the optimal basis.  The problem's
- * bounds, objective and sense are then restored; the values lp_col and
- * lp_row read are the tie-break's.  *solved: 1 if that LP was solved (it
- * counts as a solve), 0 if the optimum was unique.  Returns LP_OPTIMAL,
- * or the failed tie-break's status (LP_ERROR, LP_STOPPED: as lp_solve). */
+/* The tie-break of "one answer per sample" (docs/method.md; lp.c), right
+ * after an LP_OPTIMAL solve of p: if some non-basic variable has a
+ * reduced cost |d| <= tol, the optimum may not be unique, and p is
+ * solved again over its optimal face (every non-basic variable with
+ * |d| > tol held where it is) with the objective "minimise c2 . x" (c2:
+ * one coefficient per column), by the primal simplex from the optimal
+ * basis.  The problem's bounds, objective and sense are then restored;
+ * the values lp_col and lp_row read are the tie-break's.  *solved: 1 if
+ * that LP was solved (it counts as a solve), 0 if the optimum was
+ * unique.  Returns LP_OPTIMAL, or the failed tie-break's status
+ * (LP_ERROR, LP_STOPPED: as lp_solve). */
 enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 			   int *solved);
 /* Simplex iterations of the last solve. */

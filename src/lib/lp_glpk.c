@@ -634,8 +634,7 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	}
 	if (!alive(p))
 		return LP_ERROR;
-	/* read after setjmp below: volatile, so a longjmp cannot clobber it */
-	volatile int fault = fault_now(s);
+	volatile int fault = fault_now(s);	/* read after setjmp */
 	if (fault && s->cfg.fault_as == LP_FAILED) {
 		s->count.solves++;
 		p->last_iters = 0;

@@ -2,10 +2,11 @@
  * sample.c - one Monte Carlo sample (docs/method.md), the hot loop.
  *
  * Six LP problems per wall and thread, one per LP role, built once per
- * workspace, on the workspace's own LP solver (lp.h).  Each sample rewrites what its contact points change
- * (the moment coefficients of the normal-force columns and of the
- * opening-rate rows) and resets every bound and objective (refill; the
- * `previous` start keeps the bases) and starts every role from the
+ * workspace on the workspace's own LP solver (lp.h).  Each sample
+ * rewrites what its contact points change (the moment coefficients of
+ * the normal-force columns and of the opening-rate rows) and resets
+ * every bound and objective (refill; the `previous` start keeps the
+ * bases) and starts every role from the
  * basis SLIPWALL_LP_START names (set_points); within a sample
  * only bounds change between two solves of a role, so each is a warm
  * start (presolve off).  Wherever an LP's optimum is not unique, the
