@@ -40,7 +40,7 @@ rules=(
 	"MPI outside src/cli/|src/* include/*|^src/cli/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<mpi\.h>"
 	"GLPK outside the LP layer's backend (src/lib/lp_glpk.c)|src/* include/*|^src/lib/lp_glpk\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*<glpk\.h>"
 	"the LP layer's header outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp\.h\""
-	"the library's private headers (statics.h, support.h, piece.h, global.h, sample_lp.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support|piece|global|sample_lp)\.h\""
+	"the library's private headers (statics.h, support.h, piece.h, global.h, sample_lp.h, sample_ws.h) outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?(statics|support|piece|global|sample_lp|sample_ws)\.h\""
 	"GSL, libyaml, cairo outside src/lib/|src/* include/*|^src/lib/|^[[:space:]]*#[[:space:]]*include[[:space:]]*<(gsl/|yaml\.h|cairo|fontconfig/)"
 	"src/tui/ including src/cli/|src/tui/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(cli/)?(cli|override|summary|cluster)\.h\""
 	"the library including a front end|src/lib/* include/*|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*((cli|tui)/)?(cli|override|summary|cluster|tui|workbench)\.h\""
@@ -49,9 +49,10 @@ rules=(
 	"source files outside the three rooms|src/*|-|@loose"
 	"thread-local state outside the LP backend (src/lib/lp_glpk.c)|src/* include/*|^src/lib/lp_glpk\.c$|(_Thread_local|__thread|thread_local)"
 	"getenv in the library (allowed: ${getenv_allowed[*]:-none})|src/lib/* include/*|$getenv_ok|(^|[^[:alnum:]_])(secure_)?getenv[[:space:]]*\("
-	"the LP layer in the pool (mc.c) or solve.c|src/lib/mc.c src/lib/solve.c|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(lp|lp_backend|sample_lp)\.h\""
+	"the LP layer in the pool (mc.c) or solve.c|src/lib/mc.c src/lib/solve.c|-|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(lp|lp_backend|sample_lp|sample_ws)\.h\""
 	"the LP backend table (lp_backend.h) outside the LP layer (lp.c, lp_glpk.c)|src/* include/*|^src/lib/lp(_glpk)?\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?lp_backend\.h\""
 	"the engine reading friction from the wall, not from the sample's draw (docs/method.md)|src/lib/sample*.c src/lib/sample*.h src/lib/statics.* src/lib/support.* src/lib/global.* src/lib/solve.c src/lib/piece.* src/lib/lp*.c src/lib/lp*.h src/lib/mc.c src/lib/record.c|-|(wall_iface_mu|mu_bed|mu_head|mu_cov)"
+	"a sample workspace's inside (sample_ws.h) outside the sample's files (src/lib/sample*.c)|src/* include/*|^src/lib/sample(_[a-z]+)?\.c$|^[[:space:]]*#[[:space:]]*include[[:space:]]*\"(\.\./)*(lib/)?sample_ws\.h\""
 )
 
 # crossings TREE RULE: print the crossings of RULE in TREE (empty: none)
@@ -122,6 +123,7 @@ plant() {	# RULE-INDEX: the file and line that cross rule i
 	13) echo "src/lib/solve.c|#include \"lp.h\"" ;;
 	14) echo "src/lib/sample.c|#include \"lp_backend.h\"" ;;
 	15) echo "src/lib/statics.c|static double planted(const struct wall *w) { return w->mu_bed; }" ;;
+	16) echo "src/lib/global.c|#include \"sample_ws.h\"" ;;
 	esac
 }
 for i in "${!rules[@]}"; do

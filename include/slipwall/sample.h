@@ -3,7 +3,7 @@
  * the pieces the single-solution methods reuse.
  *
  * A `struct sample_ws` holds six LPs of one wall, one per role (src/lib/
- * sample.c): LP-max, the standing check and LP-min (the associative
+ * sample_ws.h): LP-max, the standing check and LP-min (the associative
  * problem), LP1 and LP2 (the SLP's fixed-capacity problem and its
  * stabilisation), and the kinematic LP of the onset check.  Each sample
  * starts every role from the basis its start option names (`previous`

@@ -13,7 +13,7 @@
  * backend, lp_glpk.c, the only file that names the LP solver library);
  * statics.h, the equilibrium operator; and
  * support.h, the support basis (a starting basis built from how the
- * wall stands, for sample.c).
+ * wall stands, for sample_start.c).
  */
 #ifndef SLIPWALL_SLIPWALL_H
 #define SLIPWALL_SLIPWALL_H

@@ -126,7 +126,7 @@ int lp_alive(const struct lp *p);
  * every column free, objective 0 and minimised, the standard basis and
  * no factorization (one reached by updates differs in the last bits
  * from one computed afresh).  For a caller that writes the problem
- * again and wants no trace of past solves (src/lib/sample.c, refill). */
+ * again and wants no trace of past solves (src/lib/sample_lp.c, sws_refill). */
 void lp_clear(struct lp *p);
 
 void lp_set_maximize(struct lp *p, int maximize);

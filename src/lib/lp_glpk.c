@@ -22,7 +22,7 @@
  * set_binary) sets one too (GUARD below) and recovers the same way: the
  * thread's problems are dead, the setters on a dead problem do nothing,
  * and its next solve returns LP_ERROR - the sample is "numerical", and
- * sample.c's rebuild either succeeds or leaves dead problems again (each
+ * sample_lp.c's rebuild either succeeds or leaves dead problems again (each
  * sample then fails the same way; the run goes on and says why: the
  * solver's memory_errors).  The thread's GLPK environment gets the limit
  * of the solver's lp_config (mem_limit_mb), again after every recovery,

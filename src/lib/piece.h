@@ -24,7 +24,7 @@
 
 #include "lp.h"
 
-/* The SLP problem X (LP1 or LP2, as sample.c builds them: columns
+/* The SLP problem X (LP1 or LP2, as sample_lp.c builds them: columns
  * N_a,k = 3k, N_b,k = 3k + 1, T_k = 3k + 2, lambda = 3m; LP2 also p_k =
  * 3m + 1 + k, q_k = 3m + 1 + m + k and the closeness rows R + k), just
  * solved at the capacities c, m interfaces, R equilibrium rows, mu the

@@ -1,7 +1,8 @@
 /*
- * sample_lp.h - the LP solver a sample workspace owns (sample.c), for
+ * sample_lp.h - the LP solver a sample workspace owns (sample_lp.c), for
  * the library's other LP users on the same workspace: the global
- * method's mixed-integer program (global.c).  Private to src/lib/.
+ * method's mixed-integer program (global.c).  Private to src/lib/; the
+ * workspace's inside is sample_ws.h's, private to the sample's files.
  */
 #ifndef SLIPWALL_SAMPLE_LP_H
 #define SLIPWALL_SAMPLE_LP_H

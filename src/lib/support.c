@@ -3,7 +3,7 @@
  *
  * A dry wall stands by passing each block's weight, and what rests on
  * it, down through its bed joints.  This builds that as a simplex basis
- * of LP-max's problem (sample.c: rows = the equilibrium of the free
+ * of LP-max's problem (sample_lp.c: rows = the equilibrium of the free
  * blocks, 3 each; columns = the two edges n + mu t, n - mu t of the
  * friction cone at each contact point, and lambda):
  *

@@ -248,8 +248,8 @@ static int same_bits(const struct sample_result *a,
  * positions give bit-identical results whatever the workspace solved
  * before, and on a fresh workspace (so thread counts and replays cannot
  * change results).  The problems are built once per workspace and
- * what the points change is written again at every sample (sample.c,
- * refill): n samples solved in order by one workspace and in reverse
+ * what the points change is written again at every sample (sample_lp.c,
+ * sws_refill): n samples solved in order by one workspace and in reverse
  * order by another must agree to the last bit. */
 static void history_free_wall(const char *path, unsigned long seed, int n)
 {

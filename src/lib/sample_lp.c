@@ -1,0 +1,294 @@
+/*
+ * sample_lp.c - the LPs of a sample workspace (docs/method.md, "One
+ * sample"): their formulation (the roles and the column layout are in
+ * sample_ws.h), built once per workspace on its own LP solver (lp.h),
+ * written again at each sample (sws_refill; docs/method.md, "One answer
+ * per sample" says why every sample must see the same problems), and
+ * every solve of them, counted by role in the workspace's statistics
+ * and re-checked where a warm start's verdict is not believed.  The
+ * contact points' part of the matrix is written by sws_put_column, also
+ * from sample_start.c's sws_set_points; the tie-breaks (sample_tie.c)
+ * solve through sws_counted.  sample_lp.h gives the solver to the
+ * library's other LP users (global.c).
+ */
+#include <math.h>
+#include <string.h>
+
+#include "sample_lp.h"
+#include "sample_ws.h"
+
+/* a reduced cost at or below this may be zero: the optimum may not be
+ * unique, and the tie-break LP runs (docs/method.md) */
+#define TOL_TIE 1e-9
+
+/* Write column j of A into the associative and SLP problems (with the extra
+ * rows each has) and row j into the kinematic problem. */
+void sws_put_column(struct sample_ws *ws, int j)
+{
+	int rows[8], n;
+	double vals[8];
+	int k = j / 3, kind = j % 3;
+
+	n = statics_column(&ws->st, j, rows, vals);
+	/* kin: row j over the velocity columns, plus the slip split */
+	int kn = n;
+	int kcols[8];
+	double kvals[8];
+	memcpy(kcols, rows, sizeof(int) * (size_t)n);
+	memcpy(kvals, vals, sizeof(double) * (size_t)n);
+	if (kind == 2) {
+		kcols[kn] = KCOL_SP(ws, k);
+		kvals[kn++] = -1;
+		kcols[kn] = KCOL_SM(ws, k);
+		kvals[kn++] = 1;
+	}
+	lp_set_row(ws->lp[KIN], j, kn, kcols, kvals);
+
+	/* AMAX, STAND, AMIN: the cone edges n +- mu t at this point */
+	if (kind != 2) {
+		for (int sgn = 0; sgn < 2; sgn++) {
+			int er[6];
+			double ev[6];
+			int en = statics_edge_column(&ws->st, k, kind, sgn, er, ev);
+			int col = sgn ? ACOL_BETA(k, kind) : ACOL_ALPHA(k, kind);
+			for (int p = AMAX; p <= AMIN; p++)
+				lp_set_col(ws->lp[p], col, en, er, ev);
+		}
+	}
+
+	/* slp: closeness row for normal forces */
+	int sn = n;
+	if (kind != 2) {
+		rows[sn] = ws->R + k;
+		vals[sn++] = 1;
+	}
+	lp_set_col(ws->lp[LP1], j, n, rows, vals);	/* no closeness row */
+	lp_set_col(ws->lp[LP2], j, sn, rows, vals);
+}
+
+/* The objective of the kinematic LP on the velocities: the sum of the
+ * opening rates, i.e. the sum of the normal-force columns of A. */
+void sws_put_kin_objective(struct sample_ws *ws)
+{
+	double *g = ws->val;
+	memset(g, 0, sizeof(double) * (size_t)ws->R);
+	for (int j = 0; j < 3 * ws->m; j++) {
+		if (j % 3 == 2)
+			continue;
+		int rows[6];
+		double vals[6];
+		int n = statics_column(&ws->st, j, rows, vals);
+		for (int i = 0; i < n; i++)
+			g[rows[i]] += vals[i];
+	}
+	for (int i = 0; i < ws->R; i++)
+		lp_set_obj(ws->lp[KIN], i, g[i]);
+}
+
+/* The rows, bounds and fixed columns of an associative problem (amax,
+ * amin) or an SLP problem (lp1, lp2); the point-dependent columns are
+ * written by sws_put_column(). */
+static void build_assoc(struct sample_ws *ws, struct lp *P)
+{
+	for (int i = 0; i < ws->R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int j = 0; j < 4 * ws->m; j++)
+		lp_set_col_bounds(P, j, 0, HUGE_VAL);
+}
+
+/* LP1 needs no closeness rows: without their free p, q columns its
+ * optimum can be recognised as unique, and LP2 skipped. */
+static void build_lp1(struct sample_ws *ws, struct lp *P)
+{
+	for (int i = 0; i < ws->R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int j = 0; j < 3 * ws->m; j++)
+		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+}
+
+static void build_slp(struct sample_ws *ws, struct lp *P)
+{
+	int m = ws->m, R = ws->R;
+	for (int i = 0; i < R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	for (int j = 0; j < 3 * m; j++)
+		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
+	for (int k = 0; k < m; k++) {
+		lp_set_col_bounds(P, COL_P(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(P, COL_Q(ws, k), 0, HUGE_VAL);
+	}
+}
+
+/* The part of the matrix that no contact point changes, written once
+ * when the problems are built: LP2's closeness columns p and q, the
+ * shears' columns and slip rows (a shear's moment does not depend on
+ * where along the joint it acts), the live load's column and the
+ * kinematic normalisation row f_L . v = 1. */
+static void write_fixed(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	for (int k = 0; k < m; k++) {
+		int row = R + k;
+		double one = 1, mone = -1;
+		lp_set_col(ws->lp[LP2], COL_P(ws, k), 1, &row, &mone);
+		lp_set_col(ws->lp[LP2], COL_Q(ws, k), 1, &row, &one);
+	}
+	for (int k = 0; k < m; k++)
+		sws_put_column(ws, 3 * k + 2);
+	int nl = 0;
+	for (int i = 0; i < R; i++)
+		if (ws->st.fL[i] != 0) {
+			ws->ind[nl] = i;
+			ws->val[nl++] = ws->st.fL[i];
+		}
+	for (int p = AMAX; p <= LP2; p++)
+		lp_set_col(ws->lp[p], p <= AMIN ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws),
+			   nl, ws->ind, ws->val);
+	lp_set_row(ws->lp[KIN], 3 * m, nl, ws->ind, ws->val);
+}
+
+/* Everything else, at the current contact points: every bound,
+ * objective and sense, the normal-force columns and the opening-rate
+ * rows (sws_refill() writes them at every sample). */
+static void write_points(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	for (int p = AMAX; p <= AMIN; p++)
+		build_assoc(ws, ws->lp[p]);
+	build_lp1(ws, ws->lp[LP1]);
+	build_slp(ws, ws->lp[LP2]);
+	for (int j = 0; j < 3 * m; j++)
+		if (j % 3 != 2)
+			sws_put_column(ws, j);
+
+	/* the objectives never change: max lambda (free) for LP-max and
+	 * LP1, min lambda >= 0 for LP-min, min sum (p + q) for LP2 */
+	lp_set_col_bounds(ws->lp[AMAX], ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->lp[AMAX], ACOL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[AMAX], 1);
+	lp_set_col_bounds(ws->lp[AMIN], ACOL_LAMBDA(ws), 0, HUGE_VAL);
+	lp_set_obj(ws->lp[AMIN], ACOL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[AMIN], 0);
+	/* standing: is there an admissible field at lambda = 0?  No
+	 * objective: the simplex stops at the first feasible basis (a
+	 * minimum over the degenerate face costs hundreds of pivots) */
+	lp_set_col_bounds(ws->lp[STAND], ACOL_LAMBDA(ws), 0, 0);
+	lp_set_col_bounds(ws->lp[LP1], COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_obj(ws->lp[LP1], COL_LAMBDA(ws), 1);
+	lp_set_maximize(ws->lp[LP1], 1);
+	for (int k = 0; k < m; k++) {
+		lp_set_obj(ws->lp[LP2], COL_P(ws, k), 1);
+		lp_set_obj(ws->lp[LP2], COL_Q(ws, k), 1);
+	}
+	lp_set_maximize(ws->lp[LP2], 0);
+
+	/* kin: the normalisation row = 1, velocities free, slips >= 0,
+	 * slip rows = 0 */
+	lp_set_row_bounds(ws->lp[KIN], 3 * m, 1, 1);
+	for (int i = 0; i < R; i++)
+		lp_set_col_bounds(ws->lp[KIN], i, -HUGE_VAL, HUGE_VAL);
+	for (int k = 0; k < m; k++) {
+		lp_set_col_bounds(ws->lp[KIN], KCOL_SP(ws, k), 0, HUGE_VAL);
+		lp_set_col_bounds(ws->lp[KIN], KCOL_SM(ws, k), 0, HUGE_VAL);
+		lp_set_obj(ws->lp[KIN], KCOL_SP(ws, k), 1);
+		lp_set_obj(ws->lp[KIN], KCOL_SM(ws, k), 1);
+		lp_set_row_bounds(ws->lp[KIN], 3 * k + 2, 0, 0);
+	}
+	lp_set_maximize(ws->lp[KIN], 0);
+	sws_put_kin_objective(ws);
+}
+
+/* The six problems, new.  The fixed part of the matrix is written first
+ * and the points' part after it, as sws_refill() will write it again: GLPK
+ * puts the newest writes first in its row lists, so a problem rebuilt
+ * after a GLPK error holds its matrix in the order of every other
+ * sample's. */
+void sws_build(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R;
+	for (int p = AMAX; p <= AMIN; p++)
+		ws->lp[p] = lp_new(ws->solver, R, 4 * m + 1);
+	ws->lp[LP1] = lp_new(ws->solver, R, 3 * m + 1);
+	ws->lp[LP2] = lp_new(ws->solver, R + m, 3 * m + 1 + 2 * m);
+	ws->lp[KIN] = lp_new(ws->solver, 3 * m + 1, R + 2 * m);
+	write_fixed(ws);
+	write_points(ws);
+}
+
+struct lp_solver *sample_ws_solver(struct sample_ws *ws)
+{
+	return ws->solver;
+}
+
+/* Fresh problems, built at the current contact points (after a GLPK
+ * error the old ones are dead). */
+static void rebuild(struct sample_ws *ws)
+{
+	for (int p = 0; p < ROLES; p++)
+		lp_free(ws->lp[p]);
+	sws_build(ws);
+}
+
+/* The same problems, written again at the current contact points: the
+ * problems are built once per workspace (thread and wall).  lp_clear()
+ * takes each back to what lp_new() left, the matrix kept (bounds,
+ * objective, the standard basis, no factorization), and write_points()
+ * writes every bound and objective again and of the matrix only what
+ * the points change.  GLPK's row lists put the newest writes first, so
+ * they are in the same order at every sample, and as sws_build() left them:
+ * a sample gives the same bits whatever the thread solved before
+ * (test_sample solves samples in order and in reverse order on two
+ * workspaces; the CSV is byte-identical whatever the thread count,
+ * tests/cli/run.sh). */
+void sws_refill(struct sample_ws *ws)
+{
+	for (int p = 0; p < ROLES; p++)
+		if (!lp_alive(ws->lp[p])) {
+			rebuild(ws);
+			return;
+		}
+	for (int p = 0; p < ROLES; p++)
+		lp_clear(ws->lp[p]);
+	write_points(ws);
+}
+
+/* One LP of role `role` (or of its tie-break: role + ROLES), counted in
+ * r and in the workspace's statistics; the problem is rebuilt after a
+ * GLPK error. */
+enum lp_status sws_counted(struct sample_ws *ws, int role, enum lp_method m,
+			      const double *c2, struct sample_result *r)
+{
+	struct lp_counters c0, c1;
+	lp_solver_counters(ws->solver, &c0);
+	int solved = 1;
+	struct lp *p = ws->lp[role % ROLES];
+	enum lp_status s = c2 ? lp_tiebreak(p, c2, TOL_TIE, &solved)
+			      : lp_solve(p, m);
+	lp_solver_counters(ws->solver, &c1);
+	struct sample_lp_stats *st = &ws->stats[role];
+	st->lps += c1.solves - c0.solves;
+	st->iterations += c1.iterations - c0.iterations;
+	st->seconds += c1.seconds - c0.seconds;
+	r->lps += solved;
+	if (s == LP_ERROR)
+		rebuild(ws);
+	sws_note_memory(ws);
+	return s;
+}
+
+/* Count the LP and handle a dead environment.  A verdict of "infeasible"
+ * or "unbounded" is not believed from a warm start: it is re-checked by the
+ * primal simplex from the slack basis, a fixed path, whose verdict
+ * stands.  (Measured on Ferris & Tin-Loi wall 2: LP-min, borderline
+ * feasible where a dying normal force is held at 0, was "infeasible" by
+ * the dual simplex from one start and optimal from the others.) */
+enum lp_status sws_solve(struct sample_ws *ws, enum role role,
+			    enum lp_method m, struct sample_result *r)
+{
+	enum lp_status s = sws_counted(ws, role, m, NULL, r);
+	if (s == LP_INFEASIBLE || s == LP_UNBOUNDED) {
+		lp_reset_basis(ws->lp[role]);
+		s = sws_counted(ws, role, LP_PRIMAL, NULL, r);
+	}
+	return s;
+}

@@ -1,0 +1,298 @@
+/*
+ * sample_onset.c - the associative and kinematic steps of a sample
+ * (docs/method.md, "One sample"): step 2a, LP-max (the SLP's start and
+ * the standard method's answer) and the standing check; step 3, the
+ * mechanism complementary to the SLP's stress field (onset) or to a
+ * given pattern (sws_mechanism, sample_pattern); step 5, LP-min with the
+ * mechanism's yield conditions at their limits, and the virtual-work
+ * check; and the export of the scaled results into real units.  The
+ * problems are sample_lp.c's, the tie-breaks sample_tie.c's, the
+ * capacities the SLP's (sample_slp.c); sample.c's sample_run, finish
+ * and entry points call these in order.
+ *
+ * Tolerances (scaled units, mean block weight = 1): a normal force counts
+ * as positive above TOL_FORCE; a joint rate counts as motion above
+ * TOL_MOTION times the largest rate of the mechanism, and above the
+ * kinematic LP's precision (motion_threshold).  docs/method.md says why.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "sample_ws.h"
+
+#define TOL_FORCE 1e-7
+#define TOL_MOTION 1e-9
+#define TOL_LIMIT 1e-5
+
+/* Release LP-min's fixings in amin: back to the plain associative
+ * yield conditions. */
+static void amin_reset(struct sample_ws *ws)
+{
+	for (int j = 0; j < 4 * ws->m; j++)
+		lp_set_col_bounds(ws->lp[AMIN], j, 0, HUGE_VAL);
+}
+
+/* The stress field (N_a, N_b, T per interface, ws->x's layout) of the
+ * cone-edge solution of an associative problem. */
+static void assoc_field(const struct sample_ws *ws, const struct lp *P,
+			double *x)
+{
+	for (int k = 0; k < ws->m; k++) {
+		double mu = ws->st.mu[k], t = 0;
+		for (int e = 0; e < 2; e++) {
+			double a = lp_col(P, ACOL_ALPHA(k, e));
+			double b = lp_col(P, ACOL_BETA(k, e));
+			x[3 * k + e] = a + b;
+			t += mu * (a - b);
+		}
+		x[3 * k + 2] = t;
+	}
+}
+
+static enum sample_status lp_to_sample(enum lp_status s)
+{
+	switch (s) {
+	case LP_OPTIMAL: return SAMPLE_ACCEPTED;
+	case LP_INFEASIBLE: return SAMPLE_NO_EQUILIBRIUM;
+	case LP_UNBOUNDED: return SAMPLE_UNBOUNDED;
+	default: return SAMPLE_NUMERICAL;
+	}
+}
+
+/* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
+ * starting capacities in ws->c, and, if v is not NULL, the duals of its
+ * equilibrium rows in v (the associative mechanism, before the
+ * tie-break replaces them). */
+enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
+				 double *v)
+{
+	/* LP-max is degenerate: its optimal stress fields form a face, and
+	 * the tie-break takes the one with the least sum r_j N_j, whatever
+	 * vertex the simplex reached (the SLP's start).  The dual simplex
+	 * from the start's basis, except for `slack-primal` and large walls
+	 * under `auto` (sws_role_start). */
+	struct lp *P = ws->lp[AMAX];
+	enum sample_start st = sws_role_start(ws, AMAX);
+	enum lp_method m = st == SAMPLE_START_SLACK_PRIMAL ||
+			   st == SAMPLE_START_SUPPORT || sws_auto_large(ws) ?
+			   LP_PRIMAL : LP_DUAL;
+	enum lp_status s = sws_solve(ws, AMAX, m, r);
+	/* A load factor <= 0 is re-checked by the primal simplex from the
+	 * slack basis, as sws_solve() re-checks a "no": the dual simplex has
+	 * returned "optimal" at lambda = 0 where the LP's optimum is
+	 * positive (5 of 1,000 LP-max problems of Ferris & Tin-Loi wall 1
+	 * from the slack basis). */
+	if (s == LP_OPTIMAL && !(lp_obj(P) > TOL_FORCE)) {
+		lp_reset_basis(P);
+		s = sws_solve(ws, AMAX, LP_PRIMAL, r);
+	}
+	if (s != LP_OPTIMAL)
+		return lp_to_sample(s);
+	double lam = lp_obj(P);
+	r->lambda_lpmax = lam;
+	if (!(lam > TOL_FORCE))
+		return SAMPLE_NONPOSITIVE;
+	for (int i = 0; v && i < ws->R; i++)
+		v[i] = lp_row_dual(P, i);
+	s = sws_assoc_tiebreak(ws, AMAX, r);
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	assoc_field(ws, P, ws->x);
+	for (int k = 0; k < ws->m; k++)
+		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+	return SAMPLE_ACCEPTED;
+}
+
+/* Step 2a, after LP-max: can the wall stand under its own weight on
+ * these contact points, is there an admissible field at lambda = 0?  The
+ * admissible load factors form an interval that ends at LP-max's, so
+ * this is a question of feasibility alone: the primal simplex's first
+ * phase, from the canonical basis.  (LP-max's problem with lambda fixed
+ * at 0, by the dual simplex from LP-max's optimum, gives the same answer
+ * but walks lambda down through twice as many instructions.) */
+enum sample_status sws_standing(struct sample_ws *ws,
+				   struct sample_result *r)
+{
+	enum lp_status s = sws_solve(ws, STAND, LP_PRIMAL, r);
+	if (s == LP_OPTIMAL)
+		return SAMPLE_ACCEPTED;
+	return s == LP_INFEASIBLE ? SAMPLE_UNSTABLE : SAMPLE_NUMERICAL;
+}
+
+/* Step 3's LP: of the mechanisms whose motions the bounds of KIN allow
+ * (its opening rows, its slip columns), the one with the least joint
+ * motion for unit work of the live load.  Fills ws->v, ws->dn, ws->dt. */
+enum sample_status sws_mechanism(struct sample_ws *ws,
+				    struct sample_result *r)
+{
+	struct lp *K = ws->lp[KIN];
+	enum lp_status s = sws_solve(ws, KIN, LP_DUAL, r);
+	if (s == LP_INFEASIBLE)
+		return SAMPLE_NO_MECHANISM;
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	s = sws_kin_tiebreak(ws, r);
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	for (int i = 0; i < ws->R; i++)
+		ws->v[i] = lp_col(K, i);
+	for (int k = 0; k < ws->m; k++) {
+		ws->dn[2 * k] = lp_row(K, 3 * k);
+		ws->dn[2 * k + 1] = lp_row(K, 3 * k + 1);
+		ws->dt[k] = lp_col(K, KCOL_SP(ws, k)) - lp_col(K, KCOL_SM(ws, k));
+	}
+	return SAMPLE_ACCEPTED;
+}
+
+/* Step 3: a mechanism complementary to the stress field ws->x with
+ * capacities mu c.  Fills ws->v, ws->dn, ws->dt. */
+enum sample_status sws_onset(struct sample_ws *ws,
+			       const struct sample_opts *o,
+			       struct sample_result *r)
+{
+	/* a force below this is zero: an interface whose capacity is dying
+	 * away decays geometrically (by omega per iteration) and still
+	 * carries ~ tol when the SLP stops */
+	double fzero = fmax(TOL_FORCE, 100 * o->tol);
+	int m = ws->m;
+	struct lp *K = ws->lp[KIN];
+	for (int k = 0; k < m; k++) {
+		for (int e = 0; e < 2; e++) {
+			double nj = ws->x[3 * k + e];
+			if (nj > fzero)
+				lp_set_row_bounds(K, 3 * k + e, 0, 0);
+			else
+				lp_set_row_bounds(K, 3 * k + e, 0, HUGE_VAL);
+		}
+		double cap = sws_capacity(ws, k);
+		/* at the limit: GLPK leaves a basic shear up to ~1e-6
+		 * (relative) inside its bound */
+		double t = ws->x[3 * k + 2], tol = fzero + TOL_LIMIT * cap;
+		double sp = 0, sm = 0;	/* upper bounds of s+, s- */
+		if (cap <= fzero) {
+			sp = sm = HUGE_VAL;	/* no contact: free to slide */
+		} else if (t >= cap - tol) {
+			sm = HUGE_VAL;	/* T > 0 opposes slip < 0 */
+		} else if (t <= -cap + tol) {
+			sp = HUGE_VAL;
+		}
+		lp_set_col_bounds(K, KCOL_SP(ws, k), 0, sp);
+		lp_set_col_bounds(K, KCOL_SM(ws, k), 0, sm);
+	}
+	return sws_mechanism(ws, r);
+}
+
+/* A joint rate of the mechanism counts as motion above this: TOL_MOTION
+ * times the largest rate, but never below the kinematic LP's precision
+ * (it is solved by the dual simplex: lp_feasibility_tol), for a rate
+ * the LP holds only to its feasibility tolerance is not told from 0.
+ * On a wall whose mechanism's rates are small (a body load over many
+ * blocks, normalised to f_L . v = 1: largest rate 0.02 on a 195-block
+ * wall) TOL_MOTION alone put the threshold at 2e-11, rates of 1e-10 at
+ * GLPK's precision counted as motion, and LP-min, holding N = 0 and
+ * T = -+mu N there, was infeasible (`numerical`; docs/method.md,
+ * "Tolerances"). */
+static double motion_threshold(const struct sample_ws *ws)
+{
+	double s = 0;
+	for (int k = 0; k < ws->m; k++)
+		s = fmax(s, fmax(fabs(ws->dt[k]),
+				 fmax(fabs(ws->dn[2 * k]), fabs(ws->dn[2 * k + 1]))));
+	return fmax(TOL_MOTION * s, lp_feasibility_tol(LP_DUAL));
+}
+
+/* Step 5: LP-min with the yield conditions that the mechanism uses held
+ * at their limits, by the simplex method m from the basis AMIN holds.
+ * Leaves the stress field in ws->x. */
+enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
+				 struct sample_result *r)
+{
+	int m = ws->m;
+	double thr = motion_threshold(ws);
+	struct lp *P = ws->lp[AMIN];
+	amin_reset(ws);
+	for (int k = 0; k < m; k++) {
+		for (int e = 0; e < 2; e++) {
+			if (ws->dn[2 * k + e] > thr) {	/* N = 0 */
+				lp_set_col_bounds(P, ACOL_ALPHA(k, e), 0, 0);
+				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
+			}
+			if (ws->dt[k] > thr)	/* T = -mu (Na + Nb) */
+				lp_set_col_bounds(P, ACOL_ALPHA(k, e), 0, 0);
+			else if (ws->dt[k] < -thr)	/* T = +mu (Na + Nb) */
+				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
+		}
+	}
+	enum lp_status s = sws_solve(ws, AMIN, method, r);
+	if (s != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	r->lambda_min = lp_obj(P);
+	/* the reported stress field: of LP-min's optima, the tie-break's.
+	 * Unreported (sample_opts.forces), any optimum will do: lambda_min
+	 * is the optimum's value, and the virtual-work identity holds for
+	 * every field LP-min admits (its bounds hold N = 0 where the
+	 * mechanism opens and T = -+mu N where it slides), so neither
+	 * depends on the vertex.  The tie-break is LP-min's second LP and,
+	 * on the 1,020-block wall, a sample's costliest (9,300 pivots,
+	 * docs/performance.md). */
+	if (ws->forces && sws_assoc_tiebreak(ws, AMIN, r) != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	assoc_field(ws, P, ws->x);
+	return SAMPLE_ACCEPTED;
+}
+
+/* lambda (f_L . v) = sum mu (Na + Nb) |dt| - f_D . v, relative residual. */
+double sws_virtual_work(const struct sample_ws *ws, double lam)
+{
+	double fl = 0, fd = 0, diss = 0;
+	for (int i = 0; i < ws->R; i++) {
+		fl += ws->st.fL[i] * ws->v[i];
+		fd += ws->st.fD[i] * ws->v[i];
+	}
+	for (int k = 0; k < ws->m; k++)
+		diss += ws->st.mu[k] * (ws->x[3 * k] + ws->x[3 * k + 1]) *
+			fabs(ws->dt[k]);
+	double lhs = lam * fl, rhs = diss - fd;
+	double scale = fmax(fabs(lhs), fmax(fabs(rhs), fabs(fd)));
+	return fabs(lhs - rhs) / fmax(scale, 1e-300);
+}
+
+/* Scaled results of the workspace into real units in r. */
+void sws_export(struct sample_ws *ws, struct sample_result *r)
+{
+	const struct wall *w = ws->w;
+	double F = ws->st.F, L = ws->st.L, vmax = 0;
+	memset(r->vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
+	for (int b = 0; b < w->nblocks; b++) {
+		int e = w->blocks[b].eq;
+		if (e < 0)
+			continue;
+		r->vel[3 * b] = ws->v[3 * e];
+		r->vel[3 * b + 1] = ws->v[3 * e + 1];
+		r->vel[3 * b + 2] = ws->v[3 * e + 2] / L;
+		vmax = fmax(vmax, hypot(ws->v[3 * e], ws->v[3 * e + 1]));
+		vmax = fmax(vmax, fabs(ws->v[3 * e + 2]));
+	}
+	double thr = motion_threshold(ws);
+	for (int i = 0; i < 3 * w->nblocks && vmax > 0; i++)
+		r->vel[i] /= vmax;
+	for (int k = 0; k < ws->m; k++) {
+		int oa = ws->dn[2 * k] > thr, ob = ws->dn[2 * k + 1] > thr;
+		int sl = fabs(ws->dt[k]) > thr;
+		char c = JOINT_CLOSED;
+		if (oa && ob)
+			c = JOINT_OPENS;
+		else if (oa || ob)
+			c = sl ? JOINT_HINGE_SLIDES : JOINT_HINGES;
+		else if (sl)
+			c = JOINT_SLIDES;
+		r->joint[k] = c;
+		r->dn[2 * k] = vmax > 0 ? ws->dn[2 * k] / vmax : 0;
+		r->dn[2 * k + 1] = vmax > 0 ? ws->dn[2 * k + 1] / vmax : 0;
+		r->dt[k] = vmax > 0 ? ws->dt[k] / vmax : 0;
+		r->N[2 * k] = ws->forces ? ws->x[3 * k] * F : NAN;
+		r->N[2 * k + 1] = ws->forces ? ws->x[3 * k + 1] * F : NAN;
+		r->T[k] = ws->forces ? ws->x[3 * k + 2] * F : NAN;
+	}
+	r->joint[ws->m] = 0;
+}

@@ -1,0 +1,222 @@
+/*
+ * sample_start.c - where a sample's LPs start (docs/method.md, "One
+ * answer per sample"; docs/performance.md has the measured pivots): the
+ * names of the starts and the parser of the LP configuration
+ * (SLIPWALL_LP_START, the fault and memory test variables), `auto`'s
+ * choice per role and wall size (sws_role_start), the canonical bases a
+ * workspace solves once when it is made (sws_canonical_bases, through
+ * sample_run), and sws_set_points, which places a sample's contact
+ * points (the matrix: sample_lp.c; the tie-break weights: sample_tie.c)
+ * and loads every role's starting basis (the support basis:
+ * support.c).  LP-max (sample_onset.c) also asks sws_role_start which
+ * simplex method to use.
+ */
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sample_ws.h"
+#include "support.h"
+
+/* The names of the starts, in enum sample_start's order. */
+static const char *const start_names[SAMPLE_START_COUNT] = {
+	"slack-primal", "slack-dual", "crash", "canonical", "previous",
+	"support", "auto",
+};
+
+const char *sample_start_name(enum sample_start s)
+{
+	return (unsigned)s < SAMPLE_START_COUNT ? start_names[s] : "?";
+}
+
+int sample_start_parse(const char *name)
+{
+	for (int s = 0; s < SAMPLE_START_COUNT; s++)
+		if (!strcmp(name, start_names[s]))
+			return s;
+	return -1;
+}
+
+void sample_lp_config_default(struct sample_lp_config *c)
+{
+	memset(c, 0, sizeof *c);
+	c->start = SAMPLE_START_DEFAULT;
+}
+
+int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
+			   const char *fault, const char *mem_mb, char *err)
+{
+	int rc = 0;
+	if (start && *start) {
+		int st = sample_start_parse(start);
+		if (st >= 0)
+			c->start = (enum sample_start)st;
+		else
+			rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_LP_START='%s': "
+				     "not a start; use auto, slack-primal, "
+				     "slack-dual, crash, canonical, previous "
+				     "or support", start);
+	}
+	if (fault && *fault) {	/* failed:N or error:N (or N: failed) */
+		int error = 0;
+		char *end;
+		if (!strncmp(fault, "failed:", 7)) {
+			fault += 7;
+		} else if (!strncmp(fault, "error:", 6)) {
+			error = 1;
+			fault += 6;
+		}
+		long n = strtol(fault, &end, 10);
+		if (*end || n <= 0) {
+			if (!rc)
+				rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_LP_FAULT "
+					     "must be failed:N or error:N, "
+					     "N >= 1");
+		} else {
+			c->fault_every = n;
+			c->fault_error = error;
+		}
+	}
+	if (mem_mb && *mem_mb) {
+		char *end;
+		long n = strtol(mem_mb, &end, 10);
+		if (*end || n <= 0 || n > INT_MAX) {
+			if (!rc)
+				rc = sw_fail(err, SW_EUSAGE, "SLIPWALL_GLPK_MEM_MB "
+					     "must be a number of megabytes >= 1");
+		} else {
+			c->mem_limit_mb = (int)n;
+		}
+	}
+	return rc ? -1 : 0;
+}
+
+/* `auto`: walls with more interfaces than this start LP2 from the slack
+ * basis and solve LP-max by the primal simplex (from the canonical
+ * basis, like every other role); smaller walls start every role from the
+ * canonical bases, LP-max by the dual simplex.  Measured pivots per
+ * sample (docs/performance.md): Ferris & Tin-Loi wall 2 (141
+ * interfaces), LP-max 29 from the canonical basis by the dual simplex,
+ * 59.5 by the primal, 407 from the slack basis by the primal; LP2 20.5
+ * and 24.5 per solve (canonical, slack); the 1,020-block wall (2,956
+ * interfaces), LP-max 20,744 (canonical, dual), 2,308 (canonical,
+ * primal), 13,751 (slack, primal), the first LP2 of a sample 12,254 and
+ * 3,884 (canonical, slack; the other roles: canonical fewer on both).
+ * Large walls also start the standing check from the support basis
+ * (support.c): 35.5 pivots, 2,092 from the canonical basis; and so the
+ * associative problems of the canonical sample, solved when the
+ * workspace is made (LP-max 3,322 pivots from the support basis, 13,751
+ * from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c. */
+
+/* Is this an `auto` workspace of a large wall (AUTO_LARGE_IFACES, or
+ * sample_ws_new_auto_large)? */
+int sws_auto_large(const struct sample_ws *ws)
+{
+	return ws->start == SAMPLE_START_AUTO && ws->large;
+}
+
+/* The start of role p's LPs in this workspace. */
+enum sample_start sws_role_start(const struct sample_ws *ws, int p)
+{
+	/* The mechanism and LP-min take `auto`'s starts whatever the
+	 * start asked for: one fixed path, a function of the wall alone,
+	 * so that neither the mechanism nor a `numerical` verdict depends
+	 * on the start.  Their optima are unique only to GLPK's tolerances
+	 * on a few samples (a slip rate at the motion threshold, a
+	 * virtual-work residual between 1e-8 and GLPK's 1e-7): measured on
+	 * Ferris & Tin-Loi wall 2, seed 1, where 7 of 1,000 samples had
+	 * another mechanism or status from another start (docs/method.md,
+	 * "The SLP's answer").  The start option still drives LP-max, the
+	 * standing check and the SLP's LP1 and LP2. */
+	int fixed = p == KIN || p == AMIN;
+	if (ws->start != SAMPLE_START_AUTO && !fixed)
+		return ws->start;
+	if (ws->large && p == LP2)
+		return SAMPLE_START_SLACK_PRIMAL;
+	/* the standing check from the support basis; so are the
+	 * associative problems of the workspace's canonical sample, which
+	 * has no canonical basis yet (they would start from the slack
+	 * basis) */
+	if (ws->large && (p == STAND || (ws->setup && p <= AMIN)))
+		return SAMPLE_START_SUPPORT;
+	return SAMPLE_START_CANONICAL;
+}
+
+/* Place the contact points and the tie-break weights, and choose every
+ * problem's starting basis (SLIPWALL_LP_START).  With the tie-breaks a
+ * sample is a function of its contact points alone, whatever the start
+ * (tests/unit/test_start.c checks it); the start only decides how many
+ * pivots it takes.  The default, `auto` (sws_role_start), is a function of
+ * the wall alone, so that the CSV is byte-identical whatever the thread
+ * count, which `previous` (the basis the thread's last sample left)
+ * cannot promise to the last bit.  For the same reason every start but
+ * `previous` takes the problems back to a fresh state before it writes
+ * the points (sws_refill: no basis, no factorization kept from the last
+ * sample). */
+void sws_set_points(struct sample_ws *ws, const struct sample_draw *d)
+{
+	statics_set_draw(&ws->st, d);
+	sws_tie_weights(ws, d->xi);
+	if (ws->start == SAMPLE_START_PREVIOUS) {
+		for (int j = 0; j < 3 * ws->m; j++)
+			sws_put_column(ws, j);
+		sws_put_kin_objective(ws);
+	} else {
+		sws_refill(ws);
+	}
+	sws_put_lp2_objective(ws);
+	int support = -1;	/* support_basis's verdict, once computed */
+	for (int p = 0; p < ROLES; p++) {
+		switch (sws_role_start(ws, p)) {
+		case SAMPLE_START_SUPPORT:
+			if (p == LP1 || p == LP2 || p == KIN) {
+				lp_reset_basis(ws->lp[p]);
+				break;
+			}
+			if (support == -1)
+				support = support_basis(&ws->st, ws->basic) >= 0;
+			if (support)
+				lp_set_basis(ws->lp[p], ws->basic);
+			else
+				lp_reset_basis(ws->lp[p]);
+			break;
+		case SAMPLE_START_SLACK_PRIMAL:
+		case SAMPLE_START_SLACK_DUAL:
+			lp_reset_basis(ws->lp[p]);
+			break;
+		case SAMPLE_START_CRASH:
+			lp_crash_basis(ws->lp[p]);
+			break;
+		case SAMPLE_START_CANONICAL:
+			lp_basis_load(ws->lp[p], &ws->canon[p]);
+			break;
+		default:
+			break;
+		}
+	}
+}
+
+/* Solve one sample at the classical contact (xi = 0, 1) from the freshly
+ * built problems and keep the basis each role ended at: the start of
+ * every later sample.  Deterministic: it depends on the wall only.  On
+ * a large wall it skips the tie-breaks (sample_tie.c's tiebreak()): nothing of it is
+ * reported. */
+void sws_canonical_bases(struct sample_ws *ws)
+{
+	struct sample_opts o;
+	struct sample_result r;
+	sample_opts_default(&o);
+	sample_result_init(&r, ws->w);
+	struct sample_draw d;
+	draw_init(&d, ws->w);
+	draw_mean(&d, ws->w);	/* the classical contact, mean friction */
+	ws->setup = 1;
+	sample_run(ws, &d, &o, &r);
+	ws->setup = 0;
+	/* interrupted (sample_lp_config.stop): the problems are dead and the
+	 * workspace is only fit to be freed; lp_basis_save skips them */
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_save(ws->lp[p], &ws->canon[p]);
+	draw_free(&d);
+	sample_result_free(&r);
+}

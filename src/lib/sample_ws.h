@@ -1,0 +1,159 @@
+/*
+ * sample_ws.h - the inside of a sample workspace (struct sample_ws), for
+ * the files that do one sample's jobs: sample.c (the workspace, begin,
+ * finish, the entry points), sample_lp.c (the LPs' formulation),
+ * sample_start.c (the starts), sample_tie.c (the tie-breaks),
+ * sample_slp.c (the SLP) and sample_onset.c (LP-max, standing, the
+ * mechanism, LP-min, the export); docs/method.md, "One sample".  Private
+ * to those files (tests/boundary.sh); the rest of the library reaches a
+ * workspace through slipwall/sample.h and sample_lp.h.  It holds what
+ * they share: the roles, the column layout, the workspace, and the
+ * functions one of them calls in another (prefix sws_).
+ *
+ * The roles (enum role), one LP problem each:
+ *
+ *   AMAX, STAND, AMIN  rows: equilibrium (3 per free block) only
+ *               cols: the force at each contact point in the edge
+ *               directions of its friction cone, F = alpha (n + mu t) +
+ *               beta (n - mu t), alpha, beta >= 0 (so N = alpha + beta,
+ *               T = mu (alpha - beta) summed over the two points):
+ *               alpha_a, beta_a, alpha_b, beta_b per interface | lambda.
+ *               No friction rows (they were two thirds of the rows), and
+ *               every yield condition LP-min holds at its limit is a
+ *               column bound: N_j = 0 is alpha_j = beta_j = 0, T = +mu N
+ *               is beta = 0, T = -mu N is alpha = 0.
+ *               AMAX: LP-max (max lambda).  STAND: lambda = 0 and no
+ *               objective: can the wall stand under its own weight?
+ *               AMIN: min lambda >= 0 with the mechanism's yield
+ *               conditions held at their limits (LP-min).
+ *   LP1, LP2    rows: equilibrium | LP2 only: 1 closeness row per
+ *               interface, Na + Nb - p + q = c
+ *               cols: Na, Nb, T | lambda | LP2 only: p, q per interface
+ *               LP1: max lambda with |T| <= mu c (column bounds: a fixed
+ *               capacity, no dilatancy).  LP2: min sum (p + q) over LP1's
+ *               optimal face (LP1's columns with a non-zero reduced cost
+ *               fixed where LP1 left them) - the optimal stress field
+ *               closest in L1 to c.
+ *   KIN         rows: one per column of A (opening rates at q_a, q_b,
+ *               slip rate) | f_L . v = 1
+ *               cols: block velocities | s+, s- per interface (slip =
+ *               s+ - s-); min sum of opening rates + sum |slip|: the
+ *               least joint motion.
+ */
+#ifndef SLIPWALL_SAMPLE_WS_H
+#define SLIPWALL_SAMPLE_WS_H
+
+#include "lp.h"
+#include "slipwall/sample.h"
+#include "statics.h"
+
+/* the SLP's acceleration (sws_slp()): the memory of Anderson's steps,
+ * iterates of one affine piece (the iterations before them: SLP_SETTLE,
+ * sample_slp.c) */
+#define SLP_MEMORY 4
+
+/* The LP roles of a sample, one GLPK problem each (see the top). */
+enum role { AMAX, STAND, AMIN, LP1, LP2, KIN, ROLES };
+/* sample.h's roles are these, then each one's tie-break */
+_Static_assert(SAMPLE_ROLE_COUNT == 2 * ROLES, "roles");
+
+/* Anderson mixing of the SLP (sws_slp()): the last few iterates of one
+ * affine piece, and the least-squares step they give. */
+struct slp_history {
+	int len;		/* iterates held, <= SLP_MEMORY + 1 */
+	double *c[SLP_MEMORY + 1], *f[SLP_MEMORY + 1];	/* c_i, N(c_i) - c_i */
+};
+
+struct sample_ws {
+	const struct wall *w;
+	struct statics st;
+	int m, R;		/* interfaces, equilibrium rows */
+	/* the workspace's LP solver, and one problem per LP role (see the
+	 * top), so that between two solves of a role only bounds change and
+	 * the solver keeps its basis */
+	struct lp_solver *solver;
+	struct lp *lp[ROLES];
+	double *c;		/* m: SLP capacities (sum of normal forces) */
+	double *cstar;		/* m: a piece's fixed point (sws_slp) */
+	double *fallback;	/* m: where a failed jump goes on (sws_slp) */
+	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
+	struct slp_history hist;	/* sws_slp()'s Anderson memory */
+	double *c0;		/* m: the SLP's start, for its restarts */
+	double *x;		/* 3m: stress field of the last SLP LP */
+	double *v;		/* R: velocities */
+	double *dn, *dt;	/* 2m, m: joint rates */
+	int *ind;		/* scratch */
+	double *val;
+	/* the tie-break weights of this sample ("One answer per sample"):
+	 * r[2k + e] for contact point e of interface k, r[2m + k] for the
+	 * slip of interface k; all in [1, 2), from the positions alone */
+	double *r;
+	double *c2;		/* a tie-break objective (scratch) */
+	unsigned char *basic;	/* the support basis's columns (scratch) */
+	enum sample_start start;	/* SLIPWALL_LP_START */
+	int large;		/* `auto` takes its large-wall starts */
+	int setup;		/* solving the canonical sample */
+	int forces;		/* this sample reports its stress field */
+	/* LPs by role, since the workspace was made (sample_ws_stats) */
+	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];
+	struct lp_basis canon[ROLES];	/* see sws_set_points() */
+	long memory_noted;	/* of the solver's memory errors */
+};
+
+/* Column indices. */
+#define COL_LAMBDA(ws) (3 * (ws)->m)
+/* associative problems: cone edges of point e (0: q_a, 1: q_b) */
+#define ACOL_ALPHA(k, e) (4 * (k) + 2 * (e))
+#define ACOL_BETA(k, e) (4 * (k) + 2 * (e) + 1)
+#define ACOL_LAMBDA(ws) (4 * (ws)->m)
+#define COL_P(ws, k) (3 * (ws)->m + 1 + (k))
+#define COL_Q(ws, k) (3 * (ws)->m + 1 + (ws)->m + (k))
+#define KCOL_SP(ws, k) ((ws)->R + (k))
+#define KCOL_SM(ws, k) ((ws)->R + (ws)->m + (k))
+
+/* sample.c */
+void sws_note_memory(struct sample_ws *ws);
+
+/* sample_lp.c: the LPs' formulation, and every solve */
+void sws_put_column(struct sample_ws *ws, int j);
+void sws_put_kin_objective(struct sample_ws *ws);
+void sws_build(struct sample_ws *ws);
+void sws_refill(struct sample_ws *ws);
+enum lp_status sws_counted(struct sample_ws *ws, int role, enum lp_method m,
+			   const double *c2, struct sample_result *r);
+enum lp_status sws_solve(struct sample_ws *ws, enum role role,
+			 enum lp_method m, struct sample_result *r);
+
+/* sample_start.c: the starts */
+int sws_auto_large(const struct sample_ws *ws);
+enum sample_start sws_role_start(const struct sample_ws *ws, int p);
+void sws_set_points(struct sample_ws *ws, const struct sample_draw *d);
+void sws_canonical_bases(struct sample_ws *ws);
+
+/* sample_tie.c: the tie-break weights and the tie-breaks */
+void sws_tie_weights(struct sample_ws *ws, const double *xi);
+void sws_put_lp2_objective(struct sample_ws *ws);
+enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
+				  struct sample_result *r);
+enum lp_status sws_lp2_tiebreak(struct sample_ws *ws, struct sample_result *r);
+enum lp_status sws_kin_tiebreak(struct sample_ws *ws, struct sample_result *r);
+
+/* sample_slp.c: step 2b, the SLP */
+double sws_capacity(const struct sample_ws *ws, int k);
+enum sample_status sws_slp(struct sample_ws *ws, const struct sample_opts *o,
+			   struct sample_result *r);
+
+/* sample_onset.c: LP-max, standing, the mechanism, onset, LP-min, the
+ * virtual work, the export */
+enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
+			      double *v);
+enum sample_status sws_standing(struct sample_ws *ws, struct sample_result *r);
+enum sample_status sws_mechanism(struct sample_ws *ws, struct sample_result *r);
+enum sample_status sws_onset(struct sample_ws *ws, const struct sample_opts *o,
+			     struct sample_result *r);
+enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
+			      struct sample_result *r);
+double sws_virtual_work(const struct sample_ws *ws, double lam);
+void sws_export(struct sample_ws *ws, struct sample_result *r);
+
+#endif
