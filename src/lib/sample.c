@@ -7,7 +7,7 @@
  * the normal-force columns and of the opening-rate rows) and resets
  * every bound and objective (sws_refill; the `previous` start keeps the
  * bases) and starts every role from the basis its start option names
- * (sws_set_points); within a sample only bounds change between two
+ * (set_points); within a sample only bounds change between two
  * solves of a role, so each is a warm start (presolve off).  Wherever an LP's optimum is not unique, the
  * sample takes the optimal solution with the least weighted sum of its
  * normal forces (or, for the kinematic LP, joint rates), the weights
@@ -18,16 +18,16 @@
  *
  * The work is split by job, a file each.  This file holds the workspace
  * (new, free, counters), the statuses, options and results, a sample's
- * begin and finish and the public entry points (sample_run,
- * sample_pattern, sample_standard, sample_export), and the roles' names;
- * the others:
+ * begin (set_points writes its draw into the problems) and finish, the
+ * canonical bases, the public entry points (sample_run, sample_pattern,
+ * sample_standard, sample_export), and the roles' names; the others, each
+ * below the ones that call it (none calls up into this file):
  *
  *   sample_ws.h      the workspace (struct sample_ws), the roles, the
  *                    column layout: what the files below share
  *   sample_lp.c      the LPs' formulation: build, write, refill, and
- *                    every solve, counted by role
- *   sample_start.c   the starts (SLIPWALL_LP_START), the canonical bases
- *                    and sws_set_points
+ *                    every solve, counted by role (and its memory errors)
+ *   sample_start.c   the starts (the start option): each role's basis
  *   sample_tie.c     the tie-break weights and the tie-breaks ("One
  *                    answer per sample")
  *   sample_slp.c     step 2b: the SLP (plain, Anderson, piece path)
@@ -35,7 +35,6 @@
  *                    onset, LP-min, virtual work, the export
  */
 #include <math.h>
-#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -119,21 +118,56 @@ void sample_result_free(struct sample_result *r)
 	memset(r, 0, sizeof *r);
 }
 
-/* The LP solvers' memory errors (sample_memory_errors): the one
- * process-wide tally, each workspace's added as its solver counts them
- * (sws_note_memory), so that a front end that has a sample's result has
- * its errors too. */
-static atomic_long memory_errors;
-
-void sws_note_memory(struct sample_ws *ws)
+/* Write a sample's draw into its problems: the contact points and the
+ * frictions (statics_set_draw), the tie-break weights, then every
+ * problem's starting basis (sws_start_bases, the start option).  With the tie-breaks a
+ * sample is a function of its contact points alone, whatever the start
+ * (tests/unit/test_start.c checks it); the start only decides how many
+ * pivots it takes.  The default, `auto` (sws_role_start), is a function of
+ * the wall alone, so that the CSV is byte-identical whatever the thread
+ * count, which `previous` (the basis the thread's last sample left)
+ * cannot promise to the last bit.  For the same reason every start but
+ * `previous` takes the problems back to a fresh state before it writes
+ * the points (sws_refill: no basis, no factorization kept from the last
+ * sample). */
+static void set_points(struct sample_ws *ws, const struct sample_draw *d)
 {
-	struct lp_counters c;
-	lp_solver_counters(ws->solver, &c);
-	if (c.memory_errors > ws->memory_noted) {
-		atomic_fetch_add(&memory_errors,
-				 c.memory_errors - ws->memory_noted);
-		ws->memory_noted = c.memory_errors;
+	statics_set_draw(&ws->st, d);
+	sws_tie_weights(ws, d->xi);
+	if (ws->start == SAMPLE_START_PREVIOUS) {
+		for (int j = 0; j < 3 * ws->m; j++)
+			sws_put_column(ws, j);
+		sws_put_kin_objective(ws);
+	} else {
+		sws_refill(ws);
 	}
+	sws_put_lp2_objective(ws);
+	sws_start_bases(ws);
+}
+
+/* Solve one sample at the classical contact (xi = 0, 1) from the freshly
+ * built problems and keep the basis each role ended at: the start of
+ * every later sample.  Deterministic: it depends on the wall only.  On
+ * a large wall it skips the tie-breaks (sample_tie.c's tiebreak()): nothing of it is
+ * reported. */
+static void canonical_bases(struct sample_ws *ws)
+{
+	struct sample_opts o;
+	struct sample_result r;
+	sample_opts_default(&o);
+	sample_result_init(&r, ws->w);
+	struct sample_draw d;
+	draw_init(&d, ws->w);
+	draw_mean(&d, ws->w);	/* the classical contact, mean friction */
+	ws->setup = 1;
+	sample_run(ws, &d, &o, &r);
+	ws->setup = 0;
+	/* interrupted (sample_lp_config.stop): the problems are dead and the
+	 * workspace is only fit to be freed; lp_basis_save skips them */
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_save(ws->lp[p], &ws->canon[p]);
+	draw_free(&d);
+	sample_result_free(&r);
 }
 
 static struct sample_ws *ws_new(const struct wall *w,
@@ -175,7 +209,7 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->basic = sw_xcalloc(4 * m + 1, 1);
 	ws->start = c->start;
 	sws_build(ws);
-	sws_canonical_bases(ws);
+	canonical_bases(ws);
 	return ws;
 }
 
@@ -265,11 +299,6 @@ void sample_thread_done(void)
 	lp_thread_done();
 }
 
-long sample_memory_errors(void)
-{
-	return atomic_load(&memory_errors);
-}
-
 /* A sample's result, reset, and its problems built for its draw d;
  * forces: it reports its stress field. */
 static void begin(struct sample_ws *ws, const struct sample_draw *d,
@@ -282,7 +311,7 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 	r->converged = 0;
 	r->lps = 0;
 	r->vw_residual = NAN;
-	sws_set_points(ws, d);
+	set_points(ws, d);
 }
 
 /* After step 3 found a mechanism (st accepted): LP-min, the virtual work
@@ -385,7 +414,7 @@ enum sample_status sample_standard(struct sample_ws *ws,
 {
 	r->lps = 0;
 	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
-	sws_set_points(ws, d);
+	set_points(ws, d);
 	/* the mechanism: the duals of LP-max's equilibrium rows, scaled so
 	 * that f_L . v = 1; the stress field: LP-max's, by the tie-break */
 	double *v = sw_xmalloc(sizeof(double) * ((size_t)ws->R + 1));

@@ -12,6 +12,7 @@
  * library's other LP users (global.c).
  */
 #include <math.h>
+#include <stdatomic.h>
 #include <string.h>
 
 #include "sample_lp.h"
@@ -291,4 +292,26 @@ enum lp_status sws_solve(struct sample_ws *ws, enum role role,
 		s = sws_counted(ws, role, LP_PRIMAL, NULL, r);
 	}
 	return s;
+}
+
+/* The LP solvers' memory errors (sample_memory_errors): the one
+ * process-wide tally, each workspace's added as its solver counts them
+ * (sws_note_memory), so that a front end that has a sample's result has
+ * its errors too. */
+static atomic_long memory_errors;
+
+void sws_note_memory(struct sample_ws *ws)
+{
+	struct lp_counters c;
+	lp_solver_counters(ws->solver, &c);
+	if (c.memory_errors > ws->memory_noted) {
+		atomic_fetch_add(&memory_errors,
+				 c.memory_errors - ws->memory_noted);
+		ws->memory_noted = c.memory_errors;
+	}
+}
+
+long sample_memory_errors(void)
+{
+	return atomic_load(&memory_errors);
 }

@@ -56,12 +56,6 @@
  * 101) */
 #define SLP_WANDERING 1e-3
 
-/* The shear capacity mu_k c_k of interface k in the SLP. */
-double sws_capacity(const struct sample_ws *ws, int k)
-{
-	return ws->st.mu[k] * fmax(ws->c[k], 0);
-}
-
 /* LP2's feasible set: LP1's optimal face.  A column that is non-basic in
  * LP1's optimum with a non-zero reduced cost stays where LP1 left it, the
  * others keep LP1's bounds (complementary slackness: every optimal field

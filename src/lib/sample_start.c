@@ -3,13 +3,12 @@
  * answer per sample"; docs/performance.md has the measured pivots): the
  * names of the starts and the parser of the LP configuration
  * (SLIPWALL_LP_START, the fault and memory test variables), `auto`'s
- * choice per role and wall size (sws_role_start), the canonical bases a
- * workspace solves once when it is made (sws_canonical_bases, through
- * sample_run), and sws_set_points, which places a sample's contact
- * points (the matrix: sample_lp.c; the tie-break weights: sample_tie.c)
- * and loads every role's starting basis (the support basis:
- * support.c).  LP-max (sample_onset.c) also asks sws_role_start which
- * simplex method to use.
+ * choice per role and wall size (sws_role_start), and sws_start_bases,
+ * which loads every role's starting basis once sample.c has written a
+ * sample's draw into the problems (the support basis: support.c; the
+ * canonical bases, which a workspace solves once when it is made:
+ * sample.c).  LP-max (sample_onset.c) also asks sws_role_start which
+ * simplex method to use.  Nothing here calls up into sample.c.
  */
 #include <limits.h>
 #include <stdlib.h>
@@ -142,29 +141,14 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	return SAMPLE_START_CANONICAL;
 }
 
-/* Place the contact points and the tie-break weights, and choose every
- * problem's starting basis (SLIPWALL_LP_START).  With the tie-breaks a
- * sample is a function of its contact points alone, whatever the start
- * (tests/unit/test_start.c checks it); the start only decides how many
- * pivots it takes.  The default, `auto` (sws_role_start), is a function of
- * the wall alone, so that the CSV is byte-identical whatever the thread
- * count, which `previous` (the basis the thread's last sample left)
- * cannot promise to the last bit.  For the same reason every start but
- * `previous` takes the problems back to a fresh state before it writes
- * the points (sws_refill: no basis, no factorization kept from the last
- * sample). */
-void sws_set_points(struct sample_ws *ws, const struct sample_draw *d)
+/* Choose every problem's starting basis (the start option): with the
+ * tie-breaks a sample is a function of its draw alone, whatever the
+ * start (tests/unit/test_start.c checks it); the start only decides how
+ * many pivots it takes.  The default, `auto` (sws_role_start), is a
+ * function of the wall alone.  Called after the sample's draw was
+ * written into the problems (sample.c, set_points). */
+void sws_start_bases(struct sample_ws *ws)
 {
-	statics_set_draw(&ws->st, d);
-	sws_tie_weights(ws, d->xi);
-	if (ws->start == SAMPLE_START_PREVIOUS) {
-		for (int j = 0; j < 3 * ws->m; j++)
-			sws_put_column(ws, j);
-		sws_put_kin_objective(ws);
-	} else {
-		sws_refill(ws);
-	}
-	sws_put_lp2_objective(ws);
 	int support = -1;	/* support_basis's verdict, once computed */
 	for (int p = 0; p < ROLES; p++) {
 		switch (sws_role_start(ws, p)) {
@@ -194,29 +178,4 @@ void sws_set_points(struct sample_ws *ws, const struct sample_draw *d)
 			break;
 		}
 	}
-}
-
-/* Solve one sample at the classical contact (xi = 0, 1) from the freshly
- * built problems and keep the basis each role ended at: the start of
- * every later sample.  Deterministic: it depends on the wall only.  On
- * a large wall it skips the tie-breaks (sample_tie.c's tiebreak()): nothing of it is
- * reported. */
-void sws_canonical_bases(struct sample_ws *ws)
-{
-	struct sample_opts o;
-	struct sample_result r;
-	sample_opts_default(&o);
-	sample_result_init(&r, ws->w);
-	struct sample_draw d;
-	draw_init(&d, ws->w);
-	draw_mean(&d, ws->w);	/* the classical contact, mean friction */
-	ws->setup = 1;
-	sample_run(ws, &d, &o, &r);
-	ws->setup = 0;
-	/* interrupted (sample_lp_config.stop): the problems are dead and the
-	 * workspace is only fit to be freed; lp_basis_save skips them */
-	for (int p = 0; p < ROLES; p++)
-		lp_basis_save(ws->lp[p], &ws->canon[p]);
-	draw_free(&d);
-	sample_result_free(&r);
 }

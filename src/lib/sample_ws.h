@@ -43,6 +43,8 @@
 #ifndef SLIPWALL_SAMPLE_WS_H
 #define SLIPWALL_SAMPLE_WS_H
 
+#include <math.h>
+
 #include "lp.h"
 #include "slipwall/sample.h"
 #include "statics.h"
@@ -96,7 +98,7 @@ struct sample_ws {
 	int forces;		/* this sample reports its stress field */
 	/* LPs by role, since the workspace was made (sample_ws_stats) */
 	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];
-	struct lp_basis canon[ROLES];	/* see sws_set_points() */
+	struct lp_basis canon[ROLES];	/* see sws_start_bases() */
 	long memory_noted;	/* of the solver's memory errors */
 };
 
@@ -111,10 +113,15 @@ struct sample_ws {
 #define KCOL_SP(ws, k) ((ws)->R + (k))
 #define KCOL_SM(ws, k) ((ws)->R + (ws)->m + (k))
 
-/* sample.c */
-void sws_note_memory(struct sample_ws *ws);
+/* The shear capacity mu_k c_k of interface k in the SLP. */
+static inline double sws_capacity(const struct sample_ws *ws, int k)
+{
+	return ws->st.mu[k] * fmax(ws->c[k], 0);
+}
 
-/* sample_lp.c: the LPs' formulation, and every solve */
+/* sample_lp.c: the LPs' formulation, every solve, and the memory errors
+ * they meet */
+void sws_note_memory(struct sample_ws *ws);
 void sws_put_column(struct sample_ws *ws, int j);
 void sws_put_kin_objective(struct sample_ws *ws);
 void sws_build(struct sample_ws *ws);
@@ -127,8 +134,7 @@ enum lp_status sws_solve(struct sample_ws *ws, enum role role,
 /* sample_start.c: the starts */
 int sws_auto_large(const struct sample_ws *ws);
 enum sample_start sws_role_start(const struct sample_ws *ws, int p);
-void sws_set_points(struct sample_ws *ws, const struct sample_draw *d);
-void sws_canonical_bases(struct sample_ws *ws);
+void sws_start_bases(struct sample_ws *ws);
 
 /* sample_tie.c: the tie-break weights and the tie-breaks */
 void sws_tie_weights(struct sample_ws *ws, const double *xi);
@@ -139,7 +145,6 @@ enum lp_status sws_lp2_tiebreak(struct sample_ws *ws, struct sample_result *r);
 enum lp_status sws_kin_tiebreak(struct sample_ws *ws, struct sample_result *r);
 
 /* sample_slp.c: step 2b, the SLP */
-double sws_capacity(const struct sample_ws *ws, int k);
 enum sample_status sws_slp(struct sample_ws *ws, const struct sample_opts *o,
 			   struct sample_result *r);
 
