@@ -134,7 +134,7 @@ static int bench_roles(const struct wall *w, long n, unsigned long seed)
 		lp_total += after[k].seconds - before[k].seconds;
 	printf("start %s: %.2f samples/s (%.3f ms a sample), %ld of %ld "
 	       "accepted, %.1f SLP iterations a sample, %.1f %% of the time "
-	       "inside GLPK\n", sample_start_name(lpc.start),
+	       "inside the LP solver\n", sample_start_name(lpc.start),
 	       (double)n / elapsed, 1e3 * elapsed / (double)n, accepted, n,
 	       (double)iters / (double)n, 100 * lp_total / elapsed);
 	printf("%-14s %9s %10s %10s %8s\n", "role", "LPs/smp", "iters/LP",

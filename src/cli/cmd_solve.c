@@ -148,7 +148,7 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 			       !r->bounds_derived ? "big-M bounds are a fallback"
 			       : !r->mip_optimal ? "time limit"
 			       : "the program's optimum is below the exact load:"
-				 " GLPK's tolerances", r->gap);
+				 " the LP solver's tolerances", r->gap);
 	}
 	printf("time:        %.3f s\n", r->seconds);
 	if (!r->has_mechanism)
