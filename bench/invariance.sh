@@ -10,7 +10,9 @@
 # Usage: bash bench/invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]
 #   N samples (default 2000), SEEDS comma-separated (default 1,2,3),
 #   WALLS (default the demo and both Ferris & Tin-Loi walls);
-#   INVARIANCE_SLPS (default "piece plain"): the SLPs, the outer loop.
+#   INVARIANCE_SLPS (default "piece plain"): the SLPs, the outer loop;
+#   INVARIANCE_ARGS: more options for every run (e.g. "--cov 0.2": random
+#   friction, docs/method.md).
 # Prints one line per comparison and every differing sample; exits 1 if
 # any differ.
 bin=${1:?usage: invariance.sh SLIPWALL [N] [SEEDS] [WALLS...]}
@@ -27,16 +29,16 @@ for slp in ${INVARIANCE_SLPS:-piece plain}; do
 	for w in "${walls[@]}"; do
 		for seed in ${seeds//,/ }; do
 			SLIPWALL_LP_START=auto "$bin" run "$w" -n "$n" --seed "$seed" \
-				--threads 2 --slp $slp --samples "$tmp/ref.csv" >/dev/null 2>&1
+				--threads 2 --slp $slp $INVARIANCE_ARGS --samples "$tmp/ref.csv" >/dev/null 2>&1
 			for st in slack-primal slack-dual crash canonical previous support threads-1; do
 				# previous: on 1 thread, its history fixed
 				if [ $st = threads-1 ] || [ $st = previous ]; then
 					SLIPWALL_LP_START=${st/threads-1/auto} \
 					"$bin" run "$w" -n "$n" --seed "$seed" --threads 1 \
-						--slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
+						--slp $slp $INVARIANCE_ARGS --samples "$tmp/o.csv" >/dev/null 2>&1
 				else
 					SLIPWALL_LP_START=$st "$bin" run "$w" -n "$n" --seed "$seed" \
-						--threads 2 --slp $slp --samples "$tmp/o.csv" >/dev/null 2>&1
+						--threads 2 --slp $slp $INVARIANCE_ARGS --samples "$tmp/o.csv" >/dev/null 2>&1
 				fi
 				d=$(awk -F, -f tests/differ.awk "$tmp/ref.csv" "$tmp/o.csv" 2>"$tmp/d")
 				echo "$(basename "$w") seed $seed --slp $slp $st: $d of $n differ"
