@@ -15,11 +15,11 @@ meson test -C "$dir" --print-errorlogs --num-processes 2 > "$dir/test-output.txt
 rc=$?
 set -e
 grep -E '^ *[0-9]+/[0-9]+ ' "$dir/test-output.txt"
-if ! grep -qE '^ *[0-9]+/[0-9]+ nompi_cli +OK' "$dir/test-output.txt"; then
+if ! grep -qE '^ *[0-9]+/[0-9]+ ([^ ]+ / )?nompi_cli +OK' "$dir/test-output.txt"; then
 	echo "ci-nompi: the nompi_cli test did not run and pass: is this build without MPI?"
 	rc=1
 fi
-if grep -qE '^ *[0-9]+/[0-9]+ mpi_cli ' "$dir/test-output.txt"; then
+if grep -qE '^ *[0-9]+/[0-9]+ ([^ ]+ / )?mpi_cli ' "$dir/test-output.txt"; then
 	echo "ci-nompi: mpi_cli ran: the build has MPI"
 	rc=1
 fi
