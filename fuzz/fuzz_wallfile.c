@@ -25,8 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "lp.h"
-#include "slipwall/mc.h"
+#include "slipwall/draw.h"
 #include "slipwall/sample.h"
 #include "statics.h"
 #include "slipwall/wallfile.h"
@@ -49,11 +48,15 @@ static void check_message(const char *err)
 static void touch_statics(const struct wall *w)
 {
 	struct statics s;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_draw d;	/* sample 0's: its points and friction */
+	draw_init(&d, w);
+	draw_make(&d, w, 1, 0, -1);
 	double *v = calloc((size_t)3 * (size_t)w->nfree + 1, sizeof(double));
-	mc_positions(w, 1, 0, -1, xi);
 	statics_init(&s, w);
-	statics_set_points(&s, xi);
+	statics_set_draw(&s, &d);
+	for (int k = 0; k < w->nifaces; k++)	/* a drawn friction is finite */
+		if (!(s.mu[k] >= 0) || !(s.mu[k] <= WALL_FRICTION_MAX))
+			abort();
 	/* a finished wall gives a finite operator: GLPK refuses (aborts on)
 	 * non-finite coefficients outside a solve */
 	if (!(s.F > 0) || !isfinite(s.F) || !(s.L > 0) || !isfinite(s.L) ||
@@ -78,25 +81,26 @@ static void touch_statics(const struct wall *w)
 	}
 	statics_free(&s);
 	free(v);
-	free(xi);
+	draw_free(&d);
 }
 
 static void touch_sample(const struct wall *w)
 {
 	struct sample_result r;
-	double *xi = malloc(sizeof(double) * (2 * (size_t)w->nifaces + 1));
+	struct sample_draw d;
+	draw_init(&d, w);
 	/* sample_ws_new solves one sample at the classical contact */
 	struct sample_ws *ws = sample_ws_new(w);
 	sample_result_init(&r, w);
-	mc_positions(w, 7, 3, -1, xi);
-	enum sample_status st = sample_standard(ws, xi, &r);
+	draw_make(&d, w, 7, 3, -1);
+	enum sample_status st = sample_standard(ws, &d, &r);
 	if ((unsigned)st >= SAMPLE_STATUS_COUNT)
 		abort();
 	if (st == SAMPLE_ACCEPTED && !(r.lambda_min > 0))
 		abort();
 	sample_result_free(&r);
 	sample_ws_free(ws);
-	free(xi);
+	draw_free(&d);
 }
 
 int LLVMFuzzerTestOneInput(const unsigned char *data, size_t size)

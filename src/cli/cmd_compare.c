@@ -11,7 +11,7 @@
  *
  * --fit-depth calibrates the one free parameter of the contact model,
  * the imperfection depth d: a run per d on a grid over [0, 0.5], then a
- * finer grid around the best, all with the same seed.  mc_positions
+ * finer grid around the best, all with the same seed.  draw_make
  * draws the same uniforms for every d and scales them by d (common
  * random numbers), so the profile of the KS distance against d is
  * smooth rather than noisy.  The best d has the least KS distance (ties:
