@@ -382,7 +382,7 @@ static int same_wall(const struct wall *a, const struct wall *b)
 		if (a->tests[t] != b->tests[t])
 			return 0;
 	return a->mu_bed == b->mu_bed && a->mu_head == b->mu_head &&
-	       a->unit_weight == b->unit_weight &&
+	       a->mu_cov == b->mu_cov && a->unit_weight == b->unit_weight &&
 	       a->thickness == b->thickness && a->depth == b->depth &&
 	       a->anywhere == b->anywhere && a->samples == b->samples &&
 	       a->seed == b->seed && a->has_ground == b->has_ground &&
@@ -443,6 +443,12 @@ static void test_save(void)
 		   "loads: [{point: {at: [0, 0.5], direction: [1, 0]}}]\n"
 		   "analysis: {seed: 18446744073709551615}\n",
 		   "seed 2^64 - 1");
+	/* random friction: its cov saves and loads exactly */
+	round_trip("material: {friction: {bed: 0.65, head: 0.5, cov: 0.215}}\n"
+		   "blocks: [{vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}]\n"
+		   "supports: [{ground: {y: 0}}]\n"
+		   "loads: [{point: {at: [0, 0.5], direction: [1, 0]}}]\n",
+		   "random friction (cov)");
 
 	char err[SW_ERRLEN];
 	struct wall *w = parse(small, err);
