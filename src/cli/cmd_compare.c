@@ -17,6 +17,9 @@
  * smooth rather than noisy.  The best d has the least KS distance (ties:
  * the larger two-sided p-value, then the smaller d).
  *
+ * --against B.csv compares two runs instead, the --samples file (A) and
+ * B: compare_runs.c.
+ *
  * The model's runs are the library's (run_all, run.h).  SIGINT, SIGTERM
  * and SIGHUP stop them: the samples done (with --fit-depth, the depths
  * done) are compared and printed, and the exit status is 1.
@@ -29,6 +32,7 @@
 
 #include "cli.h"
 #include "cli_opts.h"
+#include "compare_runs.h"
 #include "slipwall/collapse.h"
 #include "override.h"
 #include "slipwall/json.h"
@@ -43,7 +47,7 @@
 #define FINE_HALF 4
 
 struct compare_args {
-	const char *wall, *tests, *samples;
+	const char *wall, *tests, *samples, *against;
 	long n;
 	int n_set;
 	unsigned long seed;
@@ -73,10 +77,12 @@ static void usage(FILE *f)
 		"                        [--fit-depth] [--json] [--friction MU|BED,HEAD]\n"
 		"                        [--load-at X,Y] [--load-direction DX,DY]\n"
 		"                        [--set KEY=VALUE]...\n"
+		"       slipwall compare WALL.yaml --samples A.csv --against B.csv [--json]\n"
 		"\n"
 		"The model's collapse loads against experimental ones: two-sample\n"
 		"Kolmogorov-Smirnov test (exact p-values) and the characteristic\n"
-		"values (p05) with their 99 %% intervals, side by side.\n"
+		"values (p05) with their 99 %% intervals, side by side.  With\n"
+		"--against, two runs of the wall side by side instead.\n"
 		"\n"
 		"  --tests FILE        experimental loads, one per line, '#' comments\n"
 		"                      (default: the wall's tests: key)\n"
@@ -87,6 +93,9 @@ static void usage(FILE *f)
 		"                      change the wall as for 'run'\n"
 		"  --fit-depth         find the depth d in [0, 0.5] whose loads match\n"
 		"                      the tests best (least KS distance)\n"
+		"  --against B.csv     compare the --samples run (A) with the run of\n"
+		"                      this samples file (B): p05, p50, p95, B - A,\n"
+		"                      and the KS test (one-sided: B < A)\n"
 		"  --json              print the result as JSON\n");
 }
 
@@ -102,6 +111,7 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 		OVERRIDE_OPTIONS(&a->ov),
 		CLI_OPT_FILE("--tests", a->tests),
 		CLI_OPT_FILE("--samples", a->samples),
+		CLI_OPT_FILE("--against", a->against),
 	};
 	static const struct cli_cmd cmd = {
 		.name = CMD, .usage = usage,
@@ -111,6 +121,14 @@ static int parse_args(int argc, char **argv, struct compare_args *a)
 				argv, &a->wall);
 	if (rc)
 		return rc;
+	if (a->against && !a->samples)
+		return cli_usage_error(CMD, "--against B.csv compares two "
+				       "runs: give the first with --samples "
+				       "A.csv");
+	if (a->against && a->tests)
+		return cli_usage_error(CMD, "--against compares two runs, "
+				       "--tests a run with experimental "
+				       "loads: give one of them");
 	if (a->samples && (a->fit_depth || a->n_set || a->seed_set ||
 			   a->threads || a->depth >= 0))
 		return cli_usage_error(CMD, "--samples takes the model's loads "
@@ -580,6 +598,16 @@ int cmd_compare(int argc, char **argv)
 	int status = parse_args(argc, argv, &a);
 	if (!override_begin(CMD, status, a.wall, &a.ov, &w, &status))
 		return status;
+	if (a.against) {
+		const struct compare_runs_args ra = {
+			.wall = a.wall, .a = a.samples, .b = a.against,
+			.ov = &a.ov, .json = a.json,
+		};
+		status = compare_runs(&ra, w);
+		wall_free(w);
+		override_free(&a.ov);
+		return status;
+	}
 	struct compare_data d;
 	memset(&d, 0, sizeof d);
 	d.best = -1;

@@ -7,7 +7,11 @@
 # arithmetic (python3 fractions, all C(9,4) splits of the pooled data);
 # the wall's tests: key and a tests file give the same result; bad input
 # and missing tests exit 2 with FILE:LINE:COL; --fit-depth finds the depth
-# that made the "tests" (model loads at d = 0.3 with another seed).
+# that made the "tests" (model loads at d = 0.3 with another seed);
+# --against: two demo runs (friction 0.6, 0.8) give Δp05, Δp50, Δp95 and
+# the KS D that python computes from the CSVs (type 7 percentiles), and
+# the run's own p05 of `run --json`; a run against itself D = 0, p = 1;
+# --against without --samples, with --tests, or of another wall exit 2.
 # TAP output.
 
 bin=${1:?usage: cli/compare.sh SLIPWALL}
@@ -102,6 +106,78 @@ done
 check "Table 1 for people: p05 side by side, 'no interval' under 90 values, the KS p-values" \
 	[ $ok_txt = 1 ]
 
+# ---- --against: two runs of the demo wall, friction 0.6 (A) and 0.8 (B) ----
+"$bin" run $demo -n 200 --seed 5 --friction 0.6 --samples "$tmp/fa.csv" --json \
+	>"$tmp/fa.json" 2>/dev/null
+"$bin" run $demo -n 200 --seed 5 --friction 0.8 --samples "$tmp/fb.csv" --json \
+	>"$tmp/fb.json" 2>/dev/null
+"$bin" compare $demo --samples "$tmp/fa.csv" --against "$tmp/fb.csv" --json \
+	>"$tmp/ab.json" 2>"$tmp/ab.err"
+rc=$?
+check "compare --samples A --against B --json: exit 0" [ $rc -eq 0 ]
+res=$(python3 - "$tmp/ab.json" "$tmp/fa.csv" "$tmp/fb.csv" "$tmp/fa.json" \
+	"$tmp/fb.json" <<'EOF'
+import csv, json, math, sys
+d = json.load(open(sys.argv[1]))
+scale = d["load"]["scale"]
+def loads(path):
+    with open(path) as f:
+        return sorted(scale * float(r["lambda_min"]) for r in csv.DictReader(f)
+                      if r["status"] == "accepted")
+def q7(x, p):	# Hyndman & Fan type 7 (docs/statistics.md)
+    h = (len(x) - 1) * p
+    lo = math.floor(h)
+    return x[lo] + (h - lo) * (x[min(lo + 1, len(x) - 1)] - x[lo])
+def ks(x, y):	# two-sample D = sup |F_x - F_y| over the pooled values
+    import bisect
+    return max(abs(bisect.bisect_right(x, t) / len(x) -
+                   bisect.bisect_right(y, t) / len(y)) for t in x + y)
+a, b = loads(sys.argv[2]), loads(sys.argv[3])
+ra, rb = json.load(open(sys.argv[4])), json.load(open(sys.argv[5]))
+errs = []
+def near(what, got, want, tol=1e-12):
+    if got is None or abs(got - want) > tol * max(1, abs(want)):
+        errs.append(f"{what}: got {got!r}, want {want!r}")
+near("a.accepted", d["a"]["accepted"], len(a))
+near("b.accepted", d["b"]["accepted"], len(b))
+for k, p in (("p05", .05), ("p50", .5), ("p95", .95)):
+    want = q7(b, p) - q7(a, p)
+    near(f"difference.{k}.absolute (python)", d["difference"][k]["absolute"], want)
+    near(f"difference.{k}.relative_percent", d["difference"][k]["relative_percent"],
+         100 * want / q7(a, p))
+    near(f"difference.{k} (run --json)", d["difference"][k]["absolute"],
+         rb["lambda"][k] - ra["lambda"][k])
+near("a.p05_ci99 (run --json)", d["a"]["p05_ci99"][0], ra["p05_ci99"][0])
+near("b.p05_ci99 (run --json)", d["b"]["p05_ci99"][1], rb["p05_ci99"][1])
+near("ks.statistic", d["ks"]["statistic"], ks(a, b))
+if not d["ks"]["exact"]: errs.append("ks not exact")
+if not d["difference"]["p05"]["absolute"] > 0: errs.append("more friction, no larger p05?")
+if not d["ks"]["p_b_greater"] < 1e-6: errs.append("p(B > A) not small")
+print("; ".join(errs) or "ok %.6g %.6g %.4f" % (d["difference"]["p05"]["absolute"],
+      q7(b, .05) - q7(a, .05), ks(a, b)))
+EOF
+)
+if [ "${res%% *}" = ok ]; then
+	set -- $res
+	ok "--against: Δp05 = $2 = p05(B) - p05(A) from the CSVs ($3) and from run --json; Δp50, Δp95, % too; KS D = $4 as python computes it"
+else
+	not_ok "--against: the differences and KS D equal python's on the CSVs" "$res"
+fi
+"$bin" compare $demo --samples "$tmp/fa.csv" --against "$tmp/fa.csv" --json \
+	>"$tmp/aa.json" 2>/dev/null
+check "a run against itself: D = 0, p = 1 (two-sided and both one-sided), differences 0" \
+	python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); k=d["ks"]
+sys.exit(not (k["statistic"]==0 and k["p_two_sided"]==1 and k["p_b_less"]==1 and k["p_b_greater"]==1 and d["difference"]["p05"]["absolute"]==0))' "$tmp/aa.json"
+"$bin" compare $demo --samples "$tmp/fa.csv" --against "$tmp/fb.csv" \
+	>"$tmp/ab.txt" 2>&1
+ok_txt=1
+for s in "p05 (characteristic)" "99 % interval" "B - A" " N (+" \
+	"x = B, y = A" "p B < A" "p B > A" "p two-sided"; do
+	grep -qF "$s" "$tmp/ab.txt" || ok_txt=0
+done
+check "--against for people: A, B and B - A side by side, the unit, the KS direction" \
+	[ $ok_txt = 1 ]
+
 # ---- bad input --------------------------------------------------------------------
 bad() {	# bad DESCRIPTION SUBSTRING ARGS...
 	local what=$1 sub=$2
@@ -132,6 +208,14 @@ bad "unknown option" "unknown option" $demo --frobnicate
 printf 'sample,status\n' >"$tmp/bad.csv"
 bad "a --samples file that is not one" "bad.csv:1:" $demo --tests "$tmp/tests.txt" \
 	--samples "$tmp/bad.csv"
+
+bad "--against without --samples" "give the first with --samples" $demo \
+	--against "$tmp/fa.csv"
+bad "--against with --tests" "give one of them" $demo --samples "$tmp/fa.csv" \
+	--against "$tmp/fb.csv" --tests "$tmp/tests.txt"
+bad "--against a samples file of another wall (FILE:LINE:COL)" \
+	"model.csv:1:48: the file has the contact positions of 1 interfaces" \
+	$demo --samples "$tmp/fa.csv" --against "$tmp/model.csv"
 
 # ---- --fit-depth recovers the depth of the "tests" ------------------------------
 # tests: 60 model loads of the single block at d = 0.3, seed 99
