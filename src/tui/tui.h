@@ -16,9 +16,10 @@
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
  *   tui_stats.c  the statistics pane
  *   tui_hist.c   the histogram pane
- *   tui_browse.c the sample browser: the run's samples kept, one shown
  *   tui_solve.c  the one solve thread: standard and gilbert of the wall
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
+ *   tui_browse.c the sample browser: the run's samples kept (tui_run.c
+ *                pushes them), the one on show, its keys
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
  *   tui_signal.c SIGINT, SIGTERM, SIGHUP
