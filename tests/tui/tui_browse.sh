@@ -8,7 +8,8 @@
 # and ] step to samples 1 and 2, each with its own row's load; = shows
 # the pair of its mechanism, the least and the largest load, the two
 # samples with the same mechanism number and their rows' loads; Esc
-# closes the browser.
+# closes the browser.  With random friction (v 0.2: run 2) the legend
+# gives the shown sample's least and largest mu.
 #
 # Usage (from the source root): bash tests/tui/tui_browse.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -119,6 +120,18 @@ if wait_for b '^latest mechanism \(sample 200\)' 5 &&
 	ok "Esc closes the browser"
 else
 	not_ok "Esc closes the browser" "$(screen b)"
+fi
+# random friction: the legend has the shown sample's least and largest mu
+prompt b v 'friction cov \(0\.\.1, 0: fixed\)' 0.2
+if wait_run b 2 done 120; then
+	T send-keys -t t:b S
+	wait_for b '^sample 200: ' 5
+fi
+if screen b | sed -n '28p' |
+   grep -qE '^x contact  mu [0-9.]+\.\.[0-9.]+  joints [.shHo]+'; then
+	ok "random friction: the sample's mu range in the legend"
+else
+	not_ok "random friction: the sample's mu range in the legend" "$(screen b)"
 fi
 T send-keys -t t:b q
 tap_end
