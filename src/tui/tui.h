@@ -18,6 +18,8 @@
  *   tui_hist.c   the histogram pane
  *   tui_solve.c  the one solve thread: standard and gilbert of the wall
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
+ *   tui_browse.c the sample browser: the run's samples kept (tui_run.c
+ *                pushes them), the one on show, its keys
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
  *   tui_signal.c SIGINT, SIGTERM, SIGHUP
@@ -39,6 +41,7 @@
 
 #include "slipwall/history.h"
 #include "slipwall/mc.h"
+#include "slipwall/record.h"
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sample.h"
@@ -74,6 +77,32 @@ struct tui_run {
 	char what[96];		/* what this run changed (the history) */
 	double active;		/* seconds spent sampling before t_start */
 	double t_start;		/* when the current pool started */
+};
+
+/* The sample browser (tui_browse.c): the run's latest samples, kept in
+ * a ring (sample i in slot i % cap), and the one on show. */
+struct tui_browse {
+	int open;
+	long at;		/* the sample shown (its index) */
+	long cap;		/* slots; 0: none could be kept */
+	long next;		/* the index of the next sample pushed */
+	int nifaces, nblocks, has_mu;
+	double *lam;		/* cap: lambda_min (not scaled) */
+	signed char *status;	/* cap: enum sample_status */
+	char *joint;		/* cap * (nifaces + 1) */
+	double *xi;		/* cap * 2 * nifaces */
+	double *mu;		/* cap * nifaces, or NULL (fixed friction) */
+	double *vel;		/* cap * 3 * nblocks */
+};
+
+/* A kept sample, as tui_browse_shown gives it (pointers into the ring,
+ * valid until the next sample is pushed). */
+struct tui_browse_sample {
+	long index;
+	int status;
+	double lam;		/* lambda_min, not scaled (tui_load scales) */
+	const char *joint;
+	const double *xi, *mu, *vel;	/* mu NULL: fixed friction */
 };
 
 struct tui;
@@ -163,6 +192,7 @@ struct tui {
 	char hist_rerr[SW_ERRLEN + 64];	/* H: why they could not be read */
 	struct tui_wall_view wall_view;	/* the wall pane's last drawing */
 
+	struct tui_browse browse;	/* the sample browser (S) */
 	int mech_sel;		/* 0: latest accepted; k: k-th most frequent */
 	int cursor_mode;	/* arrows move the block cursor, not the load */
 	double cur_x, cur_y;	/* block cursor, wall coordinates */
@@ -282,6 +312,25 @@ int tui_wall_point(const struct tui *t, int y, int x, double *wx,
 /* tui_hist.c */
 void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w);
 
+/* tui_browse.c */
+/* A new run on t->w: the ring made anew (the browser stays open). */
+void tui_browse_reset(struct tui *t);
+void tui_browse_free(struct tui *t);
+/* After each sample of the run (tui_run.c), in index order. */
+void tui_browse_push(struct tui *t, const struct record *rec);
+/* The sample on show: 1 with it, 0 when the browser is closed or keeps
+ * no sample yet. */
+int tui_browse_shown(const struct tui *t, struct tui_browse_sample *s);
+/* The mechanism's place among the most frequent ones (m/M's number),
+ * 1 .. *n (the tally's count), or 0 when the tally does not have it. */
+int tui_browse_mech_rank(const struct tui *t, const char *joint, int *n);
+/* The oldest kept sample's index (-1: none). */
+long tui_browse_first(const struct tui *t);
+/* The browser's keys (tui_keys.c's table): */
+void tui_browse_key_toggle(struct tui *t, int ch);	/* S, Esc */
+void tui_browse_key_step(struct tui *t, int ch);	/* [ ] Home End */
+void tui_browse_key_pair(struct tui *t, int ch);	/* = */
+
 /* tui_stats.c */
 /* Returns the rows it used. */
 int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w);
@@ -313,6 +362,7 @@ enum tui_keys_mode {
 	TUI_KEYS_MAIN,		/* the main screen */
 	TUI_KEYS_CURSOR,	/* the main screen in block cursor mode */
 	TUI_KEYS_PROMPT,	/* the prompt line */
+	TUI_KEYS_BROWSE,	/* the main screen with the sample browser */
 	TUI_KEYS_MODES
 };
 #define TUI_KEYS_NAME_W 12	/* the help's column of names */

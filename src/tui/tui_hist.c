@@ -15,6 +15,9 @@
  * outline under the bars: the top of each of its bins, on the same axis
  * (which spans both runs) and the same scale of relative frequency, so
  * that a what-if is read at a glance.
+ *
+ * With the sample browser open (tui_browse.c), the bin of the shown
+ * sample's load is lit (the load's colour, or reverse video).
  */
 #include <math.h>
 #include <stdio.h>
@@ -138,10 +141,10 @@ static size_t tui_hist_bin(const double *x, size_t n, double lo, double width,
 }
 
 /* The previous run's outline, then this run's bars, in rows rows above
- * y0 + rows + 1; nb bins of cpb columns each. */
+ * y0 + rows + 1; nb bins of cpb columns each, bin `lit` (-1: none) lit. */
 static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 			   int cpb, const size_t *count, const size_t *pcount,
-			   size_t maxc)
+			   size_t maxc, int lit)
 {
 	size_t n = t->run.tally.lam.n, pn = t->prev_n;
 	int cols = nb * cpb;
@@ -160,20 +163,22 @@ static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 		mvaddstr(y0 + rows - top, x0 + c, t->utf8 ? "─" : "_");
 	}
 	attroff(pattr);
-	int attr = t->colors ? COLOR_PAIR(3) : 0;
-	if (attr)
-		attron(attr);
+	int battr = t->colors ? COLOR_PAIR(3) : 0;
+	int lattr = (t->colors ? COLOR_PAIR(2) : A_REVERSE) | A_BOLD;
 	for (int c = 0; c < cols && maxc; c++) {
 		size_t cnt = count[c / cpb];
 		int e = (int)ceil((double)cnt / (double)n / maxf * rows * 8);
+		int attr = c / cpb == lit ? lattr : battr;
+		if (attr)
+			attron(attr);
 		for (int r = 0; r < rows; r++) {
 			const char *g = tui_hist_level(t, e - 8 * r);
 			if (g)
 				mvaddstr(y0 + rows - r, x0 + c, g);
 		}
+		if (attr)
+			attroff(attr);
 	}
-	if (attr)
-		attroff(attr);
 }
 
 /* The bins (Freedman-Diaconis, whole columns each) and the bars;
@@ -207,7 +212,11 @@ static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
 	size_t maxc = tui_hist_bin(s->x, n, a->lo, width, count, nb);
 	if (n)
 		tui_hist_bin(t->prev_lam, t->prev_n, a->lo, width, pcount, nb);
-	tui_hist_paint(t, y0, x0, rows, nb, cpb, count, pcount, maxc);
+	struct tui_browse_sample bs;
+	int lit = -1;
+	if (tui_browse_shown(t, &bs) && bs.status == SAMPLE_ACCEPTED)
+		lit = stats_bin(tui_load(t, bs.lam), a->lo, width, nb);
+	tui_hist_paint(t, y0, x0, rows, nb, cpb, count, pcount, maxc, lit);
 	free(count);
 	free(pcount);
 	return nb * cpb;

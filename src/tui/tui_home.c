@@ -105,7 +105,8 @@ static void tui_home_keybar(struct tui *t)
 {
 	char buf[512];
 	tui_keys_bar(t->prompting ? TUI_KEYS_PROMPT :
-		     t->cursor_mode ? TUI_KEYS_CURSOR : TUI_KEYS_MAIN,
+		     t->cursor_mode ? TUI_KEYS_CURSOR :
+		     t->browse.open ? TUI_KEYS_BROWSE : TUI_KEYS_MAIN,
 		     t->cols, buf, sizeof buf);
 	tui_bar(t, t->rows - 1, buf);
 }

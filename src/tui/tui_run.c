@@ -43,7 +43,8 @@ static void tui_run_free_pool(struct tui *t)
 	r->active += sys_now() - r->t_start;
 }
 
-/* After each sample the run counted: the latest mechanism, the count. */
+/* After each sample the run counted: the latest mechanism, the sample
+ * browser's copy (tui_browse.c), the count. */
 static void tui_run_each(void *ctx, const struct record *rec)
 {
 	struct tui *t = ctx;
@@ -55,6 +56,7 @@ static void tui_run_each(void *ctx, const struct record *rec)
 		       sizeof(double) * 3 * (size_t)w->nblocks);
 		r->latest_index = rec->index;
 	}
+	tui_browse_push(t, rec);
 	r->done++;
 }
 
@@ -116,6 +118,7 @@ void tui_run_start(struct tui *t)
 	r->latest_joint = calloc((size_t)w->nifaces + 1, 1);
 	r->latest_vel = calloc(3 * (size_t)w->nblocks + 1, sizeof(double));
 	tally_init(&r->tally, w);
+	tui_browse_reset(t);
 	mc_config_default(&r->cfg, w);
 	r->cfg.opts.lp = tui_lp;
 	t->runno++;
@@ -154,6 +157,7 @@ void tui_run_end(struct tui *t)
 		t->run_ended(t);	/* the history's row (tui_main) */
 	run_free(&r->core);
 	tally_free(&r->tally);
+	tui_browse_free(t);
 	free(r->latest_joint);
 	free(r->latest_vel);
 	r->latest_joint = NULL;

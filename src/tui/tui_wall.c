@@ -11,7 +11,10 @@
  * polygon holds the cell centre: moving blocks are filled, supports
  * hatched.  Overlays come last: joint states on the interface lines,
  * one motion arrow per moving block (from u, v of its velocity), the
- * load arrow, the block cursor.  Cells are about twice as tall as wide,
+ * load arrow, the block cursor.  With the sample browser open
+ * (tui_browse.c) the mechanism is the shown sample's, and its draw's
+ * contact points are marked `x` on each interface: q = p1 + xi (p2 - p1)
+ * for its xi_a and xi_b (draw.h).  Cells are about twice as tall as wide,
  * so x is scaled twice as much as y.
  *
  * The load moves between "stations" of the wall's outline: the library
@@ -393,6 +396,73 @@ static void tui_wall_mech(const struct tui *t, struct tui_canvas *cv,
 	}
 }
 
+/* The shown sample's contact points, two on each interface. */
+static void tui_wall_contacts(const struct tui *t, struct tui_canvas *cv,
+			      const struct tui_map *m,
+			      const struct tui_browse_sample *s)
+{
+	const struct wall *w = t->w;
+	int attr = (t->colors ? COLOR_PAIR(2) : 0) | A_BOLD;
+	for (int i = 0; i < w->nifaces; i++) {
+		const struct wall_interface *f = &w->ifaces[i];
+		for (int e = 0; e < 2; e++) {
+			double xi = s->xi[2 * i + e];
+			double qx = f->p1[0] + xi * (f->p2[0] - f->p1[0]);
+			double qy = f->p1[1] + xi * (f->p2[1] - f->p1[1]);
+			tui_wall_glyph(cv, (int)lround(tui_wall_col(m, qx)),
+				       (int)lround(tui_wall_row(m, qy)), "x", attr);
+		}
+	}
+}
+
+/* The browser's label: the sample, its status, its load, its
+ * mechanism's number (m/M's), in the longest form that fits. */
+static void tui_wall_browse_label(const struct tui *t,
+				  const struct tui_browse_sample *s,
+				  char *label, size_t len, int w)
+{
+	char lam[48] = "", mech[48] = "";
+	const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
+	int n, k = 0;
+	if (s->status == SAMPLE_ACCEPTED)
+		k = tui_browse_mech_rank(t, s->joint, &n);
+	for (int form = 0; form < 3; form++) {
+		if (s->status == SAMPLE_ACCEPTED || isfinite(s->lam))
+			snprintf(lam, sizeof lam, " %s%s %.*g%s", tui_lam(t),
+				 form < 2 ? "_min" : "", form == 2 ? 3 : 4,
+				 tui_load(t, s->lam), unit);
+		if (k > 0)
+			snprintf(mech, sizeof mech, form == 0 ? ", mechanism %d/%d"
+				 : " mech %d/%d", k, n);
+		snprintf(label, len, "sample %ld: %s%s%s", s->index + 1,
+			 sample_status_name(s->status), lam, mech);
+		if (tui_cols(label) <= w)
+			break;
+	}
+}
+
+/* The browser's legend: the joints' friction (random friction), the
+ * contact marker, the joint states of the sample. */
+static void tui_wall_browse_legend(const struct tui *t,
+				   const struct tui_browse_sample *s,
+				   char *buf, size_t len)
+{
+	const struct wall *w = t->w;
+	int n = 0;
+	n += snprintf(buf, len, "x contact");
+	if (s->mu && w->nifaces > 0) {
+		double lo = INFINITY, hi = -INFINITY;
+		for (int i = 0; i < w->nifaces; i++) {
+			lo = fmin(lo, s->mu[i]);
+			hi = fmax(hi, s->mu[i]);
+		}
+		n += snprintf(buf + n, len - (size_t)n, "  %s %.3g..%.3g",
+			      tui_mu(t), lo, hi);
+	}
+	if (s->status == SAMPLE_ACCEPTED && (size_t)n < len)
+		snprintf(buf + n, len - (size_t)n, "  joints %s", s->joint);
+}
+
 static void tui_wall_loads(const struct tui *t, struct tui_canvas *cv,
 			   const struct tui_map *m)
 {
@@ -440,7 +510,18 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 	const char *joint = NULL;
 	const double *vel = NULL;
 
+	struct tui_browse_sample bs;
+	int browse = tui_browse_shown(t, &bs);
 	int has = tui_wall_mechanism(t, &joint, &vel, label, sizeof label, w);
+	if (browse) {
+		tui_wall_browse_label(t, &bs, label, sizeof label, w);
+		has = bs.status == SAMPLE_ACCEPTED;
+		joint = bs.joint;
+		vel = bs.vel;
+	} else if (t->browse.open) {
+		snprintf(label, sizeof label, "sample browser: no sample yet");
+		has = 0;
+	}
 	if (t->cursor_mode) {
 		int k = wedit_block_at(wall, t->cur_x, t->cur_y);
 		snprintf(label, sizeof label, "cursor (%.3g, %.3g): %s  a add  x remove",
@@ -518,6 +599,8 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 	}
 	if (has && !t->cursor_mode)
 		tui_wall_mech(t, &cv, &m, joint, vel, moving);
+	if (browse)
+		tui_wall_contacts(t, &cv, &m, &bs);
 	tui_wall_loads(t, &cv, &m);
 	if (t->cursor_mode)
 		tui_wall_glyph(&cv, (int)lround(tui_wall_col(&m, t->cur_x)),
@@ -538,9 +621,15 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 			if (cv.attr[i])
 				attroff(cv.attr[i]);
 		}
-	tui_text(y0 + h - 1, x0, w,
-		 t->utf8 ? "▒ moving  = slides  * hinge  : opens  ● load"
-			 : "# moving  = slides  * hinge  : opens  o load");
+	if (browse) {
+		char legend[512];
+		tui_wall_browse_legend(t, &bs, legend, sizeof legend);
+		tui_text(y0 + h - 1, x0, w, legend);
+	} else {
+		tui_text(y0 + h - 1, x0, w,
+			 t->utf8 ? "▒ moving  = slides  * hinge  : opens  ● load"
+				 : "# moving  = slides  * hinge  : opens  o load");
+	}
 out:
 	free(cv.conn);
 	free(cv.owner);
