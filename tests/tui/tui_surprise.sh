@@ -1,0 +1,42 @@
+#!/bin/bash
+# tui/tui_surprise.sh - the workbench's surprises removed (issue 27,
+# "Surprises to remove"), driven in tmux as a person would:
+#   - a key that does nothing says so on the message line.
+#
+# Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
+# TAP output; skips when tmux is missing.
+
+bin=${1:?usage: tui/tui_surprise.sh SLIPWALL}
+bin=$(realpath "$bin")
+cd "$(dirname "$0")/../.." || exit 1
+
+. tests/tap.sh
+. tests/tui/tui_lib.sh
+tui_setup "slipwall-surprise-$$" 100 30
+
+# the message line (the row above the status line)
+message() {
+	screen "$1" | tail -n 2 | head -n 1
+}
+
+# A key of no use: a word on the message line, the wall unchanged.
+start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+wait_samples w 1 30
+T send-keys -t t:w z
+if wait_for w 'key z does nothing here: \? lists the keys' 5 &&
+   title w | grep -q '| run 1 running'; then
+	ok "z: 'key z does nothing here: ? lists the keys', no new run"
+else
+	not_ok "z: 'key z does nothing here: ? lists the keys', no new run" "$(screen w)"
+fi
+T send-keys -t t:w C-e
+if wait_for w 'key \^E does nothing here' 5; then
+	ok "Ctrl-E: named ^E"
+else
+	not_ok "Ctrl-E: named ^E" "$(message w)"
+fi
+
+# w ends (its files written before the server and $tmp go)
+T send-keys -t t:w q
+wait_for w "^run history" 10
+tap_end
