@@ -104,9 +104,10 @@ static SCREEN *tui_terminal(struct tui *t)
 	curs_set(0);
 	set_escdelay(25);
 	tui_colors(t);
-	/* a left click selects a block, a right click moves the load */
+	/* a left click selects a block, a right click moves the load; the
+	 * wheel scrolls the help and the history */
 	mousemask(BUTTON1_PRESSED | BUTTON1_CLICKED | BUTTON3_PRESSED |
-		  BUTTON3_CLICKED, NULL);
+		  BUTTON3_CLICKED | BUTTON4_PRESSED | BUTTON5_PRESSED, NULL);
 	mouseinterval(0);
 	getmaxyx(stdscr, t->rows, t->cols);
 	return scr;

@@ -212,6 +212,10 @@ int tui_fatal_begin(void);
 void tui_fatal_arm(int mouse);
 void tui_fatal_end(void);
 
+/* The mouse wheel as KEY_UP / KEY_DOWN, another mouse event as 0, any
+ * other key as itself (tui_history.c; the help and H scroll with it). */
+int tui_wheel(int ch);
+
 /* tui_signal.c */
 int tui_signal_install(void);	/* before curses starts; -1 on failure */
 /* The pool a signal handler should stop (NULL: none). */

@@ -55,6 +55,9 @@ void tui_help_init(struct tui *t)
 enum tui_screen_id tui_help_key(struct tui *t, int ch)
 {
 	int page = t->rows - 2;
+	ch = tui_wheel(ch);	/* the mouse scrolls, never closes */
+	if (ch == 0)
+		return TUI_SCREEN_HELP;
 	if (ch == 'j' || ch == KEY_DOWN) {
 		if (t->help_top + page < tui_help_count())
 			t->help_top++;

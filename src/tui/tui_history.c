@@ -182,8 +182,27 @@ void tui_history_free(struct tui *t)
 	t->hist_nold = 0;
 }
 
+/* The mouse wheel as a key: KEY_DOWN (wheel down), KEY_UP (up), 0 for
+ * another mouse event, which leaves the screen open. */
+int tui_wheel(int ch)
+{
+	MEVENT ev;
+	if (ch != KEY_MOUSE)
+		return ch;
+	if (getmouse(&ev) != OK)
+		return 0;
+	if (ev.bstate & BUTTON4_PRESSED)
+		return KEY_UP;
+	if (ev.bstate & BUTTON5_PRESSED)
+		return KEY_DOWN;
+	return 0;
+}
+
 enum tui_screen_id tui_history_key(struct tui *t, int ch)
 {
+	ch = tui_wheel(ch);	/* the mouse scrolls, never closes */
+	if (ch == 0)
+		return TUI_SCREEN_HISTORY;
 	if (ch == 'j' || ch == KEY_DOWN) {
 		t->hist_top++;
 		return TUI_SCREEN_HISTORY;

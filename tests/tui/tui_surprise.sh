@@ -1,7 +1,8 @@
 #!/bin/bash
 # tui/tui_surprise.sh - the workbench's surprises removed (issue 27,
 # "Surprises to remove"), driven in tmux as a person would:
-#   - a key that does nothing says so on the message line.
+#   - a key that does nothing says so on the message line;
+#   - the mouse wheel scrolls the history screen H and does not close it.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -34,6 +35,26 @@ if wait_for w 'key \^E does nothing here' 5; then
 	ok "Ctrl-E: named ^E"
 else
 	not_ok "Ctrl-E: named ^E" "$(message w)"
+fi
+
+# The wheel in H: X10 mouse sequences (button 64 up, 65 down at column
+# 10, row 10) scroll; the screen stays open.  Before, any mouse event
+# closed it.
+T send-keys -t t:w H
+wait_for w '^ run history:' 5
+T send-keys -t t:w -l $'\e[Ma++'
+T send-keys -t t:w -l $'\e[M`++'
+sleep 0.5
+if screen_has w '^ run history:'; then
+	ok "the mouse wheel leaves H open"
+else
+	not_ok "the mouse wheel leaves H open" "$(screen w)"
+fi
+T send-keys -t t:w q
+if wait_for w '^ slipwall \|' 5; then
+	ok "a key leaves H"
+else
+	not_ok "a key leaves H" "$(screen w)"
 fi
 
 # w ends (its files written before the server and $tmp go)
