@@ -172,7 +172,7 @@ static void tui_keys_report(struct tui *t, int ch)
  * heading.  Names are key names separated by ", " (the same action) or
  * " / " (the opposite one): tests/keys_doc.sh reads them from here. */
 static const struct tui_key tui_keys[] = {
-	{.ch = {'?'}, .name = "?", .next = TUI_SCREEN_HELP,
+	{.ch = {'?', KEY_F(1)}, .name = "?, F1", .next = TUI_SCREEN_HELP,
 	 .help = "this help (any key returns)",
 	 BAR(MAIN, "? help", 2), BAR(CURSOR, "? help", 6)},
 	{.ch = {'q', 'Q'}, .name = "q, Q", .fn = tui_keys_quit,

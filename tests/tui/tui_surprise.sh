@@ -2,7 +2,8 @@
 # tui/tui_surprise.sh - the workbench's surprises removed (issue 27,
 # "Surprises to remove"), driven in tmux as a person would:
 #   - a key that does nothing says so on the message line;
-#   - the mouse wheel scrolls the history screen H and does not close it.
+#   - the mouse wheel scrolls the history screen H and does not close it;
+#   - F1 opens the help, as ? does.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -55,6 +56,20 @@ if wait_for w '^ slipwall \|' 5; then
 	ok "a key leaves H"
 else
 	not_ok "a key leaves H" "$(screen w)"
+fi
+
+# F1 is help, as ? is; any key returns.
+T send-keys -t t:w F1
+if wait_for w '^ slipwall workbench: keys' 5 && screen_has w '\?, F1 +this help'; then
+	ok "F1 opens the help (which names F1)"
+else
+	not_ok "F1 opens the help (which names F1)" "$(screen w)"
+fi
+T send-keys -t t:w Escape
+if wait_for w '^ slipwall \|' 5; then
+	ok "a key leaves the help"
+else
+	not_ok "a key leaves the help" "$(screen w)"
 fi
 
 # w ends (its files written before the server and $tmp go)
