@@ -11,7 +11,7 @@
  * answered within 100 ms.
  *
  * Signals (tui_signal.c): SIGINT, SIGTERM and SIGHUP end the loop the
- * way q does.  Quitting never waits for a computation: the pool is
+ * way q does; Ctrl-Z suspends (tui_suspend).  Quitting never waits for a computation: the pool is
  * stopped and drained (tui_run_end), the solve thread stopped and
  * joined (tui_solve_free); their LPs see the stop within a second.
  */
@@ -186,6 +186,22 @@ static int tui_tick(struct tui *t, int *more)
 	return dirty;
 }
 
+/* Ctrl-Z: the terminal back to the shell, the process stopped
+ * (tui_signal_stop); after fg the screen drawn again from scratch. */
+static void tui_suspend(struct tui *t)
+{
+	double t0 = sys_now();
+	endwin();
+	tui_signal_stop();
+	/* the clocks of the speed and of the solve leave out the stop */
+	t->run.t_start += sys_now() - t0;
+	t->solve_t0 += sys_now() - t0;
+	refresh();		/* back in curses mode */
+	tui_size_check(t);	/* resized while stopped */
+	clearok(curscr, TRUE);
+	tui_message(t, 0, "back after Ctrl-Z (the sampling stopped with the program)");
+}
+
 static void tui_loop(struct tui *t)
 {
 	double last_draw = -1;
@@ -207,6 +223,11 @@ static void tui_loop(struct tui *t)
 			break;
 		if (tui_signal_pending())
 			break;
+		if (tui_signal_suspend_pending()) {
+			tui_suspend(t);
+			dirty = 1;
+			last_draw = -1;
+		}
 		if (tui_tick(t, &more))
 			dirty = 1;
 		/* the clocks of slow samples and of the solve thread tick */

@@ -20,7 +20,7 @@
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
- *   tui_signal.c SIGINT, SIGTERM, SIGHUP
+ *   tui_signal.c SIGINT, SIGTERM, SIGHUP; Ctrl-Z (SIGTSTP)
  *   tui_fatal.c  any other end (abort, a fault, exit): the terminal back,
  *                the reason on stderr
  *   tui_draw.c   text helpers, the message line, the clock
@@ -222,6 +222,10 @@ int tui_signal_install(void);	/* before curses starts; -1 on failure */
 void tui_signal_watch(struct mc *m);
 /* A terminating signal has arrived: start nothing new. */
 int tui_signal_pending(void);
+/* Ctrl-Z has arrived: end curses, then tui_signal_stop. */
+int tui_signal_suspend_pending(void);
+/* Stop the process (SIGTSTP's default); returns when it continues. */
+void tui_signal_stop(void);
 
 /* tui_prompt.c */
 void tui_prompt(struct tui *t, const char *label, const char *initial,

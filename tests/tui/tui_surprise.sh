@@ -3,7 +3,9 @@
 # "Surprises to remove"), driven in tmux as a person would:
 #   - a key that does nothing says so on the message line;
 #   - the mouse wheel scrolls the history screen H and does not close it;
-#   - F1 opens the help, as ? does.
+#   - F1 opens the help, as ? does;
+#   - Ctrl-Z in a shell stops the workbench (the shell shows the stopped
+#     job) and fg brings its screen back, sampling on.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -70,6 +72,41 @@ if wait_for w '^ slipwall \|' 5; then
 	ok "a key leaves the help"
 else
 	not_ok "a key leaves the help" "$(screen w)"
+fi
+
+# Ctrl-Z from a shell with job control: the shell says the job stopped;
+# fg brings the screen back and sampling goes on.
+T new-window -d -t t -n sh "env -i PATH=/usr/bin:/bin HOME=$tmp TERM=\$TERM PS1='$ ' bash --norc --noprofile -i"
+wait_for sh '\$ ' 10
+T send-keys -t t:sh -l "cd $PWD && LANG=C.UTF-8 LC_ALL=C.UTF-8 SLIPWALL_RUNS=$SLIPWALL_RUNS $bin walls/demo.yaml"
+T send-keys -t t:sh Enter
+wait_samples sh 1 30
+T send-keys -t t:sh C-z
+if wait_for sh '^\[1\]\+ +Stopped ' 10 && ! screen_has sh '^ slipwall \|'; then
+	ok "Ctrl-Z: the shell shows the stopped job"
+else
+	not_ok "Ctrl-Z: the shell shows the stopped job" "$(screen sh)"
+fi
+T send-keys -t t:sh fg Enter
+if wait_for sh '^ slipwall \| Demo wall' 10 &&
+   wait_for sh 'back after Ctrl-Z' 5; then
+	ok "fg: the screen is back (the title line, 'back after Ctrl-Z')"
+else
+	not_ok "fg: the screen is back" "$(screen sh)"
+fi
+s1=$(samples sh)
+sleep 1.5
+s2=$(samples sh)
+if [ -n "$s1" ] && [ -n "$s2" ] && { [ "$s2" -gt "$s1" ] || title sh | grep -q 'run 1 done'; }; then
+	ok "fg: sampling goes on ($s1, then $s2)"
+else
+	not_ok "fg: sampling goes on" "$s1 then $s2" "$(screen sh)"
+fi
+T send-keys -t t:sh q
+if wait_for sh '^run history \(1 run\):' 10; then
+	ok "q after fg: the workbench ends and prints its history"
+else
+	not_ok "q after fg: the workbench ends and prints its history" "$(screen sh)"
 fi
 
 # w ends (its files written before the server and $tmp go)
