@@ -131,8 +131,8 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	if (tui_file_runs_dir(dir, sizeof dir, err) != 0 ||
 	    history_index_path(dir, t->hist_path, sizeof t->hist_path))
 		t->hist_path[0] = 0;
-	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
-		    t->threads);
+	tui_message(t, 0, "%s: sampling on %d thread%s", w->path ? w->path : path,
+		    t->threads, tui_s(t->threads));
 	tui_run_start(t);
 	t->solve = tui_solve_new();
 	if (t->solve)

@@ -195,6 +195,10 @@ void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
+/* "s" unless n is 1: "%d run%s", n, tui_s(n). */
+const char *tui_s(long n);
+/* A probability as a percentage, "0.1 %", "98 %", "< 0.01 %" ("-": NaN). */
+void tui_pct(char *buf, size_t len, double p);
 /* The unit of the loads shown (wall_quantity): "N" (point loads of one
  * magnitude), else what they are ("seismic coefficient", "load factor"). */
 const char *tui_load_unit(const struct wall *w);

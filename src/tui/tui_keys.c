@@ -34,8 +34,9 @@ static void tui_keys_pause(struct tui *t, int ch)
 {
 	(void)ch;
 	tui_run_pause(t, !t->run.paused);
-	tui_message(t, 0, "%s at %ld samples",
-		    t->run.paused ? "paused" : "resumed", t->run.done);
+	tui_message(t, 0, "%s at %ld sample%s",
+		    t->run.paused ? "paused" : "resumed", t->run.done,
+		    tui_s(t->run.done));
 }
 
 static void tui_keys_reset(struct tui *t, int ch)

@@ -312,10 +312,12 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 							   (double)ta->accepted
 						 : 0.0;
 			const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
+			char pcs[32];
+			tui_pct(pcs, sizeof pcs, pc / 100);
 			for (int form = 0; form < 3; form++) {
 				snprintf(label, len,
-					 "mechanism %d/%d: %.0f %%%s (%s %.*g..%.*g%s)",
-					 k + 1, n, pc, form == 0 ? " of accepted" : "",
+					 "mechanism %d/%d: %s%s (%s %.*g..%.*g%s)",
+					 k + 1, n, pcs, form == 0 ? " of accepted" : "",
 					 tui_lam(t), form == 2 ? 3 : 4, mm->lam_lo,
 					 form == 2 ? 3 : 4, mm->lam_hi, unit);
 				if (tui_cols(label) <= w)

@@ -5,7 +5,9 @@
 #   - the mouse wheel scrolls the history screen H and does not close it;
 #   - F1 opens the help, as ? does;
 #   - Ctrl-Z in a shell stops the workbench (the shell shows the stopped
-#     job) and fg brings its screen back, sampling on.
+#     job) and fg brings its screen back, sampling on;
+#   - texts: "1 run this session", the rarest mechanism of 300 samples
+#     never "0 %", no probability in scientific notation.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -107,6 +109,30 @@ if wait_for sh '^run history \(1 run\):' 10; then
 	ok "q after fg: the workbench ends and prints its history"
 else
 	not_ok "q after fg: the workbench ends and prints its history" "$(screen sh)"
+fi
+
+# One run: "1 run", not "1 runs".
+T send-keys -t t:w H
+if wait_for w '^ run history: 1 run this session' 5; then
+	ok "H: '1 run this session'"
+else
+	not_ok "H: '1 run this session'" "$(screen w | head -n 1)"
+fi
+T send-keys -t t:w q
+wait_for w '^ slipwall \|' 5
+# 300 samples: the rarest mechanism (M from the latest) is a share of
+# 300, at least 0.3 %: never "0 %"; nothing in scientific notation
+T send-keys -t t:w n C-u 300 Enter r
+wait_run w 2 done 120
+T send-keys -t t:w M
+sleep 0.5
+label=$(screen w | sed -n 2p)
+if printf '%s\n' "$label" |
+	grep -qE 'mechanism ([0-9]+)/\1: ([1-9][0-9]*|0\.[1-9]|[0-9]+\.[0-9]) % ' &&
+   ! screen w | grep -qE '[0-9]e[-+][0-9]'; then
+	ok "the rarest of 300 is not '0 %' (${label%%(*}); no scientific notation"
+else
+	not_ok "the rarest of 300 is not '0 %'; no scientific notation" "$(screen w)"
 fi
 
 # w ends (its files written before the server and $tmp go)
