@@ -7,7 +7,9 @@
 #   - Ctrl-Z in a shell stops the workbench (the shell shows the stopped
 #     job) and fg brings its screen back, sampling on;
 #   - texts: "1 run this session", the rarest mechanism of 300 samples
-#     never "0 %", no probability in scientific notation.
+#     never "0 %", no probability in scientific notation;
+#   - h on the demo's pull on the right face says that the load now
+#     pushes on the left face.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -133,6 +135,21 @@ if printf '%s\n' "$label" |
 	ok "the rarest of 300 is not '0 %' (${label%%(*}); no scientific notation"
 else
 	not_ok "the rarest of 300 is not '0 %'; no scientific notation" "$(screen w)"
+fi
+
+# h on the demo's pull on the right face goes round to the left face,
+# where the same direction pushes: said so.
+T send-keys -t t:w h
+if wait_for w 'load now pushes on the left face \(was: pulls on the right face\)' 5; then
+	ok "h: 'load now pushes on the left face (was: pulls on the right face)'"
+else
+	not_ok "h: the message says the load now pushes on the left face" "$(message w)"
+fi
+T send-keys -t t:w l
+if wait_for w 'load now pulls on the right face \(was: pushes on the left face\)' 5; then
+	ok "l: back to a pull on the right face, said so"
+else
+	not_ok "l: back to a pull on the right face, said so" "$(message w)"
 fi
 
 # w ends (its files written before the server and $tmp go)
