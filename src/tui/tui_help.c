@@ -20,6 +20,7 @@ static const char *const tui_help_notes[] = {
 	"Wall drawing: filled blocks move,",
 	"arrows show their motion, = a sliding joint, : an opening joint,",
 	"* a hinge; S G T on the histogram axis: standard, gilbert, tests;",
+	"x crossed out: no block there (removed with x, or an opening);",
 	"the outline under the bars: the previous run.  NO_COLOR=1: no colours.",
 };
 

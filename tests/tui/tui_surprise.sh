@@ -9,7 +9,9 @@
 #   - texts: "1 run this session", the rarest mechanism of 300 samples
 #     never "0 %", no probability in scientific notation;
 #   - h on the demo's pull on the right face says that the load now
-#     pushes on the left face.
+#     pushes on the left face;
+#   - a block removed from inside the wall is crossed out, not drawn as
+#     a block.
 #
 # Usage (from the source root): bash tests/tui/tui_surprise.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -150,6 +152,36 @@ if wait_for w 'load now pulls on the right face \(was: pushes on the left face\)
 	ok "l: back to a pull on the right face, said so"
 else
 	not_ok "l: back to a pull on the right face, said so" "$(message w)"
+fi
+
+# A block removed from inside the wall (course 2, the third block):
+# crossed out, not drawn as a block between its neighbours' lines.
+wall_pane() {	# the panes' rows (╳ is the wall pane's only)
+	screen "$1" | sed -n '3,24p'
+}
+if ! wall_pane w | grep -q '╳'; then
+	ok "the whole wall: nothing crossed out"
+else
+	not_ok "the whole wall: nothing crossed out" "$(wall_pane w)"
+fi
+T send-keys -t t:w Tab
+wait_for w 'cursor \(' 5
+T send-keys -t t:w Up Right Right Right
+wait_for w 'cursor \(0\.35, 0\.225\): c2b2' 5
+T send-keys -t t:w x
+wait_for w 'block c2b2 removed' 5
+T send-keys -t t:w Tab
+sleep 0.5
+if wall_pane w | grep -qE '│╳+│'; then
+	ok "x: the removed block's place is crossed out between its neighbours"
+else
+	not_ok "x: the removed block's place is crossed out" "$(wall_pane w)"
+fi
+T send-keys -t t:w u
+if wait_for w 'undone' 5 && ! wall_pane w | grep -q '╳'; then
+	ok "u: the block is back, nothing crossed out"
+else
+	not_ok "u: the block is back, nothing crossed out" "$(wall_pane w)"
 fi
 
 # w ends (its files written before the server and $tmp go)
