@@ -11,7 +11,7 @@
  * answered within 100 ms.
  *
  * Signals (tui_signal.c): SIGINT, SIGTERM and SIGHUP end the loop the
- * way q does.  Quitting never waits for a computation: the pool is
+ * way q does; Ctrl-Z suspends (tui_suspend).  Quitting never waits for a computation: the pool is
  * stopped and drained (tui_run_end), the solve thread stopped and
  * joined (tui_solve_free); their LPs see the stop within a second.
  */
@@ -104,9 +104,10 @@ static SCREEN *tui_terminal(struct tui *t)
 	curs_set(0);
 	set_escdelay(25);
 	tui_colors(t);
-	/* a left click selects a block, a right click moves the load */
+	/* a left click selects a block, a right click moves the load; the
+	 * wheel scrolls the help and the history */
 	mousemask(BUTTON1_PRESSED | BUTTON1_CLICKED | BUTTON3_PRESSED |
-		  BUTTON3_CLICKED, NULL);
+		  BUTTON3_CLICKED | BUTTON4_PRESSED | BUTTON5_PRESSED, NULL);
 	mouseinterval(0);
 	getmaxyx(stdscr, t->rows, t->cols);
 	return scr;
@@ -130,8 +131,8 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	if (tui_file_runs_dir(dir, sizeof dir, err) != 0 ||
 	    history_index_path(dir, t->hist_path, sizeof t->hist_path))
 		t->hist_path[0] = 0;
-	tui_message(t, 0, "%s: sampling on %d threads", w->path ? w->path : path,
-		    t->threads);
+	tui_message(t, 0, "%s: sampling on %d thread%s", w->path ? w->path : path,
+		    t->threads, tui_s(t->threads));
 	tui_run_start(t);
 	t->solve = tui_solve_new();
 	if (t->solve)
@@ -185,6 +186,22 @@ static int tui_tick(struct tui *t, int *more)
 	return dirty;
 }
 
+/* Ctrl-Z: the terminal back to the shell, the process stopped
+ * (tui_signal_stop); after fg the screen drawn again from scratch. */
+static void tui_suspend(struct tui *t)
+{
+	double t0 = sys_now();
+	endwin();
+	tui_signal_stop();
+	/* the clocks of the speed and of the solve leave out the stop */
+	t->run.t_start += sys_now() - t0;
+	t->solve_t0 += sys_now() - t0;
+	refresh();		/* back in curses mode */
+	tui_size_check(t);	/* resized while stopped */
+	clearok(curscr, TRUE);
+	tui_message(t, 0, "back after Ctrl-Z (the sampling stopped with the program)");
+}
+
 static void tui_loop(struct tui *t)
 {
 	double last_draw = -1;
@@ -206,6 +223,11 @@ static void tui_loop(struct tui *t)
 			break;
 		if (tui_signal_pending())
 			break;
+		if (tui_signal_suspend_pending()) {
+			tui_suspend(t);
+			dirty = 1;
+			last_draw = -1;
+		}
 		if (tui_tick(t, &more))
 			dirty = 1;
 		/* the clocks of slow samples and of the solve thread tick */

@@ -22,7 +22,7 @@
  *                pushes them), the one on show, its keys
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
- *   tui_signal.c SIGINT, SIGTERM, SIGHUP
+ *   tui_signal.c SIGINT, SIGTERM, SIGHUP; Ctrl-Z (SIGTSTP)
  *   tui_fatal.c  any other end (abort, a fault, exit): the terminal back,
  *                the reason on stderr
  *   tui_draw.c   text helpers, the message line, the clock
@@ -225,6 +225,10 @@ void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
+/* "s" unless n is 1: "%d run%s", n, tui_s(n). */
+const char *tui_s(long n);
+/* A probability as a percentage, "0.1 %", "98 %", "< 0.01 %" ("-": NaN). */
+void tui_pct(char *buf, size_t len, double p);
 /* The unit of the loads shown (wall_quantity): "N" (point loads of one
  * magnitude), else what they are ("seismic coefficient", "load factor"). */
 const char *tui_load_unit(const struct wall *w);
@@ -242,12 +246,20 @@ int tui_fatal_begin(void);
 void tui_fatal_arm(int mouse);
 void tui_fatal_end(void);
 
+/* The mouse wheel as KEY_UP / KEY_DOWN, another mouse event as 0, any
+ * other key as itself (tui_history.c; the help and H scroll with it). */
+int tui_wheel(int ch);
+
 /* tui_signal.c */
 int tui_signal_install(void);	/* before curses starts; -1 on failure */
 /* The pool a signal handler should stop (NULL: none). */
 void tui_signal_watch(struct mc *m);
 /* A terminating signal has arrived: start nothing new. */
 int tui_signal_pending(void);
+/* Ctrl-Z has arrived: end curses, then tui_signal_stop. */
+int tui_signal_suspend_pending(void);
+/* Stop the process (SIGTSTP's default); returns when it continues. */
+void tui_signal_stop(void);
 
 /* tui_prompt.c */
 void tui_prompt(struct tui *t, const char *label, const char *initial,

@@ -5,6 +5,7 @@
  * clock.  It calls nothing else of the room, so any file may call it.
  */
 #include <stdarg.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -140,6 +141,34 @@ const char *tui_lam(const struct tui *t)
 const char *tui_mu(const struct tui *t)
 {
 	return t->utf8 ? "\u03bc" : "mu";
+}
+
+const char *tui_s(long n)
+{
+	return n == 1 ? "" : "s";
+}
+
+/* Whole percents from 1 to 99.5, a tenth below and above, a hundredth
+ * below 0.1 %: 1 of 1,000 is "0.1 %", never "0 %" (docs/workbench.md). */
+void tui_pct(char *buf, size_t len, double p)
+{
+	double pc = 100 * p;
+	if (isnan(p))
+		snprintf(buf, len, "-");
+	else if (pc <= 0)
+		snprintf(buf, len, "0 %%");
+	else if (pc >= 100)
+		snprintf(buf, len, "100 %%");
+	else if (pc < 0.01)
+		snprintf(buf, len, "< 0.01 %%");
+	else if (pc < 0.1)
+		snprintf(buf, len, "%.2f %%", pc);
+	else if (pc >= 99.95)
+		snprintf(buf, len, "> 99.9 %%");
+	else if (pc < 1 || pc >= 99.5)
+		snprintf(buf, len, "%.1f %%", pc);
+	else
+		snprintf(buf, len, "%.0f %%", pc);
 }
 
 const char *tui_load_unit(const struct wall *w)

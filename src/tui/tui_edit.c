@@ -205,6 +205,57 @@ void tui_edit_key_depth(struct tui *t, int ch)
 
 /* ---- the load ---- */
 
+/* Where load l of w acts, in words: "pulls on the right face", "pushes
+ * on the top face".  The face is the side of the point with no block
+ * (probed a hundredth of a block away); the load pulls when it points
+ * away from the wall, pushes when it points into it. */
+static void tui_edit_load_face(const struct wall *w, int l, char *buf,
+			       size_t len)
+{
+	static const char *const side[4] = {"right", "left", "top", "bottom"};
+	static const double n[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+	const struct wall_load *ld = &w->loads[l];
+	double e = 0.01 * w->mean_size;
+	int face = -1, nfaces = 0;
+	for (int k = 0; k < 4; k++) {
+		int out = wedit_block_at(w, ld->at[0] + e * n[k][0],
+					 ld->at[1] + e * n[k][1]);
+		int in = wedit_block_at(w, ld->at[0] - e * n[k][0],
+					ld->at[1] - e * n[k][1]);
+		if ((out < 0 || w->blocks[out].fixed) && in >= 0 &&
+		    !w->blocks[in].fixed) {
+			face = k;
+			nfaces++;
+		}
+	}
+	double d = face < 0 ? 0 : ld->dir[0] * n[face][0] + ld->dir[1] * n[face][1];
+	const char *acts = d > 1e-9 ? "pulls on" : d < -1e-9 ? "pushes on" : "acts along";
+	if (face < 0 || nfaces > 1)	/* a corner, a sloped face */
+		snprintf(buf, len, "%s the wall",
+			 face < 0 ? "acts on" : "acts at a corner of");
+	else
+		snprintf(buf, len, "%s the %s face", acts, side[face]);
+}
+
+/* The message after an edit of the load: the face it acts on and
+ * whether it pulls or pushes, when that changed (h on the right face
+ * can carry a pull round to a push on the left: docs/workbench.md,
+ * "Edits"). */
+static void tui_edit_load_done(struct tui *t, struct wall *nw, int l,
+			       const char *what)
+{
+	char was[64], now[64];
+	tui_edit_load_face(t->w, l, was, sizeof was);
+	if (tui_edit_apply(t, nw, what) != 0)
+		return;
+	tui_edit_load_face(t->w, l, now, sizeof now);	/* finished: nw */
+	if (strcmp(was, now))
+		tui_message(t, 0, "load now %s (was: %s): sampling again (run %d)",
+			    now, was, t->runno);
+	else
+		tui_message(t, 0, "%s: sampling again (run %d)", what, t->runno);
+}
+
 static void tui_edit_load_at(struct tui *t, const double at[2],
 			     const double *dir)
 {
@@ -225,7 +276,7 @@ static void tui_edit_load_at(struct tui *t, const double at[2],
 	}
 	snprintf(what, sizeof what, "load at (%.4g, %.4g) direction (%.3g, %.3g)",
 		 at[0], at[1], nw->loads[l].dir[0], nw->loads[l].dir[1]);
-	tui_edit_done(t, nw, what);
+	tui_edit_load_done(t, nw, l, what);
 }
 
 static void tui_edit_load_typed(struct tui *t, const char *text)
@@ -280,7 +331,7 @@ void tui_edit_key_turn(struct tui *t, int ch)
 	char what[96];
 	snprintf(what, sizeof what, "load direction (%.3g, %.3g)", ld->dir[0],
 		 ld->dir[1]);
-	tui_edit_done(t, nw, what);
+	tui_edit_load_done(t, nw, l, what);
 }
 
 /* ---- the layout ---- */

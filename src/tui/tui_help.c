@@ -20,6 +20,7 @@ static const char *const tui_help_notes[] = {
 	"Wall drawing: filled blocks move,",
 	"arrows show their motion, = a sliding joint, : an opening joint,",
 	"* a hinge; S G T on the histogram axis: standard, gilbert, tests;",
+	"x crossed out: no block there (removed with x, or an opening);",
 	"the outline under the bars: the previous run.  NO_COLOR=1: no colours.",
 };
 
@@ -55,6 +56,9 @@ void tui_help_init(struct tui *t)
 enum tui_screen_id tui_help_key(struct tui *t, int ch)
 {
 	int page = t->rows - 2;
+	ch = tui_wheel(ch);	/* the mouse scrolls, never closes */
+	if (ch == 0)
+		return TUI_SCREEN_HELP;
 	if (ch == 'j' || ch == KEY_DOWN) {
 		if (t->help_top + page < tui_help_count())
 			t->help_top++;

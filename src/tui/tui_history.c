@@ -138,7 +138,7 @@ void tui_history_print(const struct tui *t, FILE *f)
 	char a[256], b[256];
 	if (t->nhist == 0)
 		return;
-	fprintf(f, "run history (%d runs):\n", t->nhist);
+	fprintf(f, "run history (%d run%s):\n", t->nhist, tui_s(t->nhist));
 	for (int i = 0; i < t->nhist; i++) {
 		const struct history_row *h = &t->hist[i];
 		tui_history_lines(t, h, a, sizeof a, b, sizeof b);
@@ -182,8 +182,27 @@ void tui_history_free(struct tui *t)
 	t->hist_nold = 0;
 }
 
+/* The mouse wheel as a key: KEY_DOWN (wheel down), KEY_UP (up), 0 for
+ * another mouse event, which leaves the screen open. */
+int tui_wheel(int ch)
+{
+	MEVENT ev;
+	if (ch != KEY_MOUSE)
+		return ch;
+	if (getmouse(&ev) != OK)
+		return 0;
+	if (ev.bstate & BUTTON4_PRESSED)
+		return KEY_UP;
+	if (ev.bstate & BUTTON5_PRESSED)
+		return KEY_DOWN;
+	return 0;
+}
+
 enum tui_screen_id tui_history_key(struct tui *t, int ch)
 {
+	ch = tui_wheel(ch);	/* the mouse scrolls, never closes */
+	if (ch == 0)
+		return TUI_SCREEN_HISTORY;
 	if (ch == 'j' || ch == KEY_DOWN) {
 		t->hist_top++;
 		return TUI_SCREEN_HISTORY;
@@ -251,8 +270,8 @@ void tui_history_draw(struct tui *t)
 	if (t->hist_top < 0 || t->hist_top > maxtop)
 		t->hist_top = maxtop;
 
-	snprintf(buf, sizeof buf, " run history: %d runs this session%s%s",
-		 t->nhist + running,
+	snprintf(buf, sizeof buf, " run history: %d run%s this session%s%s",
+		 t->nhist + running, tui_s(t->nhist + running),
 		 t->hist_path[0] ? "; index " :
 		 t->hist_err[0] ? " (not kept: the line below says why)" :
 		 " (not kept: no index file)", t->hist_path);

@@ -6,7 +6,8 @@
  * handler, and the screen it opens), and the status line shows the
  * labels it gives the mode on show.  While the prompt line is open the
  * prompt's keys of the table work, and any other is typed into the
- * prompt (tui_prompt.c).
+ * prompt (tui_prompt.c).  Any other key says on the message line that it
+ * does nothing (docs/workbench.md, "Keys").
  */
 #include <stdio.h>
 #include <string.h>
@@ -20,12 +21,29 @@ void tui_home_init(struct tui *t)
 	(void)t;
 }
 
+/* A key's name for a message: the character itself when printable
+ * (keyname gives "^Z" for controls, "KEY_F(5)" for function keys). */
+static const char *tui_home_keyname(int ch)
+{
+	static char buf[32];
+	if (ch == ' ')
+		return "space";
+	const char *n = keyname(ch);
+	snprintf(buf, sizeof buf, "%s", n ? n : "?");
+	if (ch >= 128 && ch < 256)	/* a byte of a wide character */
+		snprintf(buf, sizeof buf, "0x%02x", ch);
+	return buf;
+}
+
 enum tui_screen_id tui_home_key(struct tui *t, int ch)
 {
 	const struct tui_key *k = tui_keys_find(t->prompting, ch);
 	if (!k) {
 		if (t->prompting)
 			tui_prompt_type(t, ch);	/* a character of the text */
+		else if (ch != KEY_RESIZE && ch != KEY_MOUSE)
+			tui_message(t, 0, "key %s does nothing here: ? lists the keys",
+				    tui_home_keyname(ch));
 		return TUI_SCREEN_MAIN;
 	}
 	if (k->fn)

@@ -34,8 +34,9 @@ static void tui_keys_pause(struct tui *t, int ch)
 {
 	(void)ch;
 	tui_run_pause(t, !t->run.paused);
-	tui_message(t, 0, "%s at %ld samples",
-		    t->run.paused ? "paused" : "resumed", t->run.done);
+	tui_message(t, 0, "%s at %ld sample%s",
+		    t->run.paused ? "paused" : "resumed", t->run.done,
+		    tui_s(t->run.done));
 }
 
 static void tui_keys_reset(struct tui *t, int ch)
@@ -172,7 +173,7 @@ static void tui_keys_report(struct tui *t, int ch)
  * heading.  Names are key names separated by ", " (the same action) or
  * " / " (the opposite one): tests/keys_doc.sh reads them from here. */
 static const struct tui_key tui_keys[] = {
-	{.ch = {'?'}, .name = "?", .next = TUI_SCREEN_HELP,
+	{.ch = {'?', KEY_F(1)}, .name = "?, F1", .next = TUI_SCREEN_HELP,
 	 .help = "this help (any key returns)",
 	 BAR(MAIN, "? help", 2), BAR(CURSOR, "? help", 6),
 	 BAR(BROWSE, "? help", 6)},

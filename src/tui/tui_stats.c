@@ -49,14 +49,19 @@ static void tui_stats_text(struct tui_lines *p, const char *line)
 
 /* A line with up to four numbers (fmt has one %s for each, in order;
  * pad: the width the first one is padded to, 0 for none), with the
- * most significant digits that fit. */
-static void tui_stats_nums(struct tui_lines *p, const char *fmt, int pad,
-			   int nv, const double *v)
+ * most significant digits that fit; those whose bit is set in probs are
+ * probabilities, shown as percentages (tui_pct). */
+static void tui_stats_probs(struct tui_lines *p, const char *fmt, int pad,
+			    int nv, const double *v, unsigned probs)
 {
 	char line[256], s[4][32];
 	for (int prec = 4; prec >= 2; prec--) {
 		for (int i = 0; i < 4; i++)
-			tui_stats_num(s[i], sizeof s[i], i < nv ? v[i] : NAN, prec);
+			if (probs & (1u << i))	/* a probability: a percentage */
+				tui_pct(s[i], sizeof s[i], i < nv ? v[i] : NAN);
+			else
+				tui_stats_num(s[i], sizeof s[i],
+					      i < nv ? v[i] : NAN, prec);
 		if (pad > 0) {
 			char tmp[32];
 			snprintf(tmp, sizeof tmp, "%-*s", pad, s[0]);
@@ -67,6 +72,12 @@ static void tui_stats_nums(struct tui_lines *p, const char *fmt, int pad,
 			break;
 	}
 	tui_stats_text(p, line);
+}
+
+static void tui_stats_nums(struct tui_lines *p, const char *fmt, int pad,
+			   int nv, const double *v)
+{
+	tui_stats_probs(p, fmt, pad, nv, v, 0);
 }
 
 /* Speed: samples per second, or seconds per sample when they are slow;
@@ -84,13 +95,13 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	double v[4];
 	if (ta->samples > 0 && rate < 1) {
 		v[0] = 1 / rate;
-		snprintf(line, sizeof line, "speed    %%s s a sample, %d threads",
-			 t->threads);
+		snprintf(line, sizeof line, "speed    %%s s a sample, %d thread%s",
+			 t->threads, tui_s(t->threads));
 		tui_stats_nums(p, line, 0, 1, v);
 	} else if (ta->samples > 0 || pg.oldest < 1) {
 		tui_stats_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
-		snprintf(line, sizeof line, "speed    %s /s on %d threads", a,
-			 t->threads);
+		snprintf(line, sizeof line, "speed    %s /s on %d thread%s", a,
+			 t->threads, tui_s(t->threads));
 		tui_stats_text(p, line);
 	} else {
 		tui_stats_text(p, "speed    none finished yet");
@@ -205,12 +216,12 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 			 lam, c.k, c.n);
 		v[0] = c.load;
 		v[1] = c.p;
-		tui_stats_nums(p, line, 0, 2, v);
+		tui_stats_probs(p, line, 0, 2, v, 2);
 		if (c.n > 0) {
 			v[0] = c.lo;
 			v[1] = c.hi;
-			tui_stats_nums(p, "  99 %% interval [%s, %s] (binomial)",
-				       0, 2, v);
+			tui_stats_probs(p, "  99 %% interval [%s, %s] (binomial)",
+					0, 2, v, 3);
 		}
 	}
 
@@ -242,18 +253,20 @@ static void tui_stats_tail(struct tui *t, struct tui_lines *p)
 		    stats_ks2(ta->lam.x, ta->lam.n, wall->tests,
 			      (size_t)wall->ntests, &ks) == 0) {
 			snprintf(line, sizeof line,
-				 "KS vs %d tests: D %%s p %%s, model<tests p %%s",
-				 wall->ntests);
+				 "KS vs %d test%s: D %%s p %%s, model<tests p %%s",
+				 wall->ntests, tui_s(wall->ntests));
 			v[0] = ks.d;
 			v[1] = ks.p_two_sided;
 			v[2] = ks.p_greater;
-			tui_stats_nums(p, line, 0, 3, v);
+			tui_stats_probs(p, line, 0, 3, v, 6);
 		} else {
-			snprintf(line, sizeof line, "KS vs %d tests: -", wall->ntests);
+			snprintf(line, sizeof line, "KS vs %d test%s: -",
+				 wall->ntests, tui_s(wall->ntests));
 			tui_stats_text(p, line);
 		}
 	}
-	snprintf(line, sizeof line, "%d mechanisms; m/M shows them", ta->nmech);
+	snprintf(line, sizeof line, "%d mechanism%s; m/M shows them", ta->nmech,
+		 tui_s(ta->nmech));
 	tui_stats_text(p, line);
 }
 

@@ -9,7 +9,9 @@
  * the right box-drawing junction (ASCII: - | +); other edges are drawn
  * with / and \.  The cells between lines belong to the block whose
  * polygon holds the cell centre: moving blocks are filled, supports
- * hatched.  Overlays come last: joint states on the interface lines,
+ * hatched, and cells of no block that blocks wall in (a removed block,
+ * an opening) crossed out, else the lines around them would draw a
+ * block there.  Overlays come last: joint states on the interface lines,
  * one motion arrow per moving block (from u, v of its velocity), the
  * load arrow, the block cursor.  With the sample browser open
  * (tui_browse.c) the mechanism is the shown sample's, and its draw's
@@ -296,6 +298,37 @@ static void tui_wall_fill(const struct wall *w, struct tui_canvas *cv,
 	}
 }
 
+/* Is the empty cell (c, r) walled in: a line or a block first met
+ * in each of the four directions? */
+static int tui_wall_enclosed(const struct tui_canvas *cv, int c, int r)
+{
+	static const int d[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+	for (int k = 0; k < 4; k++) {
+		int x = c + d[k][0], y = r + d[k][1], hit = 0;
+		for (; tui_wall_in(cv, x, y) && !hit; x += d[k][0], y += d[k][1]) {
+			int i = y * cv->w + x;
+			hit = cv->conn[i] || cv->owner[i] >= 0;
+		}
+		if (!hit)
+			return 0;
+	}
+	return 1;
+}
+
+/* Holes: cells of no block walled in by blocks, where a block was
+ * removed (x) or the wall has an opening.  Left empty, the lines of the
+ * blocks around would draw one there; they are crossed out instead. */
+static void tui_wall_holes(const struct tui *t, struct tui_canvas *cv)
+{
+	for (int r = 0; r < cv->h; r++)
+		for (int c = 0; c < cv->w; c++) {
+			int i = r * cv->w + c;
+			if (cv->owner[i] < 0 && !cv->conn[i] && !cv->glyph[i] &&
+			    tui_wall_enclosed(cv, c, r))
+				tui_wall_glyph(cv, c, r, t->utf8 ? "╳" : "x", A_DIM);
+		}
+}
+
 int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w)
 {
@@ -315,10 +348,12 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 							   (double)ta->accepted
 						 : 0.0;
 			const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
+			char pcs[32];
+			tui_pct(pcs, sizeof pcs, pc / 100);
 			for (int form = 0; form < 3; form++) {
 				snprintf(label, len,
-					 "mechanism %d/%d: %.0f %%%s (%s %.*g..%.*g%s)",
-					 k + 1, n, pc, form == 0 ? " of accepted" : "",
+					 "mechanism %d/%d: %s%s (%s %.*g..%.*g%s)",
+					 k + 1, n, pcs, form == 0 ? " of accepted" : "",
 					 tui_lam(t), form == 2 ? 3 : 4, mm->lam_lo,
 					 form == 2 ? 3 : 4, mm->lam_hi, unit);
 				if (tui_cols(label) <= w)
@@ -586,6 +621,7 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 		if (k >= 0 && wall->blocks[k].fixed && !cv.conn[i])
 			cv.glyph[i] = t->utf8 ? "░" : "/";
 	}
+	tui_wall_holes(t, &cv);
 	if (wall->has_ground && isfinite(cmin) && m.coarse) {
 		int gr = (int)ceil(tui_wall_row(&m, wall->ground_y));
 		for (int c = (int)cmin - 3; c <= (int)cmax + 3; c++)

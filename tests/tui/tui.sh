@@ -65,7 +65,7 @@ before=$(wall_pane w)
 r0=$(runno w)
 c0=$(samples w)
 T send-keys -t t:w Up Space
-if wait_for w "run $((r0 + 1)) paused" 10 && wait_for w '^ *paused at [0-9]+ samples' 5; then
+if wait_for w "run $((r0 + 1)) paused" 10 && wait_for w '^ *paused at [0-9]+ samples?' 5; then
 	after=$(wall_pane w)
 	r1=$(runno w)
 	c1=$(samples w)
@@ -152,7 +152,7 @@ else
 fi
 wait_samples w 5 20
 T send-keys -t t:w m
-if wait_for w 'mechanism 1/[0-9]+: [0-9]+ % of accepted' 5; then
+if wait_for w 'mechanism 1/[0-9]+: [0-9.]+ % of accepted' 5; then
 	ok "m shows the most frequent mechanism with its frequency"
 else
 	not_ok "m shows the most frequent mechanism" "$(screen w)"

@@ -5,7 +5,8 @@
 # count is neither 0 nor all) shows "P(λ <= design L) p, k of n" and its
 # 99 % interval in the statistics pane once run 1 is done; k and n are
 # the run's own samples file's counts (accepted rows with lambda_min <= L,
-# accepted rows), p is k/n, and the interval holds p.  The demo wall
+# accepted rows), p is k/n as a percentage (never in scientific
+# notation: src/tui/tui_draw.c, tui_pct), and the interval holds p.  The demo wall
 # itself (no design load) has no such line.
 #
 # Usage (from the source root): bash tests/tui/tui_design.sh SLIPWALL
@@ -42,10 +43,21 @@ k, n = (int(x) for x in counts.split(" of "))
 shown_load, p = head[len("P(λ <= design "):].split(") ")
 rows = [r for r in csv.DictReader(open(path)) if r["status"] == "accepted"]
 want_k = sum(float(r["lambda_min"]) <= float(load) for r in rows)
-lo, hi = (float(x) for x in ci[ci.index("[") + 1:ci.index("]")].split(", "))
+def pct(p):	# tui_pct
+    pc = 100 * p
+    if pc <= 0: return "0 %"
+    if pc >= 100: return "100 %"
+    if pc < 0.01: return "< 0.01 %"
+    if pc < 0.1: return "%.2f %%" % pc
+    if pc >= 99.95: return "> 99.9 %"
+    if pc < 1 or pc >= 99.5: return "%.1f %%" % pc
+    return "%.0f %%" % pc
+def num(s):	# a shown percentage, its sign of bound dropped
+    return float(s.strip("<> %"))
+lo, hi = (num(x) for x in ci[ci.index("[") + 1:ci.index("]")].split(", "))
 ok = (n == len(rows) > 0 and k == want_k and 0 < k < n
-      and shown_load == "%.4g" % float(load) and p == "%.4g" % (k / n)
-      and lo <= k / n <= hi)
+      and shown_load == "%.4g" % float(load) and p == pct(k / n)
+      and lo - 0.5 <= 100 * k / n <= hi + 0.5)
 if not ok:
     print("# shown %s / %s; the file: %d of %d at %s" % (line, ci, want_k, len(rows), load))
 sys.exit(not ok)' "$line" "$ci" "$f" "$load"; then

@@ -151,7 +151,7 @@ fi
 T send-keys -t t:ms Tab
 r0=$(runno ms)
 click ms 2 "$cx" "$cy"
-if wait_for ms 'load at \(' 5 && [ "$(runno ms)" -eq $((r0 + 1)) ]; then
+if wait_for ms 'load at \(|load now (pulls|pushes|acts)' 5 && [ "$(runno ms)" -eq $((r0 + 1)) ]; then
 	ok "a right click moves the load there (a new run)"
 else
 	not_ok "a right click moves the load there" "$(screen ms)"
