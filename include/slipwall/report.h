@@ -72,6 +72,10 @@ struct report_run {
 	long samples, accepted;
 	long rejected[SAMPLE_STATUS_COUNT];	/* by status */
 	const char *note;	/* one more line for the summary, or NULL */
+	/* the wall sampled in words (the workbench: its friction,
+	 * contacts, load, layout and what was edited since the file it
+	 * came from), a row of the run's table; NULL: no row */
+	const char *wall_desc;
 };
 
 struct report_input {

@@ -57,6 +57,7 @@ static void md_row(FILE *f, const char *what, size_t n,
  * terminal).  NULL where the input has none. */
 struct md_text {
 	char *name, *wall_path, *command, *samples_file, *tests_source, *note;
+	char *wall_desc;
 };
 
 /* Is every line of s clean (text_is_clean), newlines apart? */
@@ -165,6 +166,8 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 	const struct report_run *r = &in->run;
 	fprintf(f, "\n## Run\n\n| setting | value |\n|---|---|\n");
 	fprintf(f, "| wall file | `%s` |\n", t->wall_path ? t->wall_path : "?");
+	if (t->wall_desc)
+		fprintf(f, "| wall sampled | %s |\n", t->wall_desc);
 	fprintf(f, "| slipwall version | %s |\n", r->version ? r->version : "?");
 	if (t->samples_file)
 		fprintf(f, "| loads read from | `%s` |\n", t->samples_file);
@@ -251,6 +254,7 @@ enum sw_status report_md_write(const struct rctx *c,
 		md_clean(c->w->name), md_clean(r->wall_path),
 		NULL, md_clean(r->samples_file),
 		md_clean(r->tests_source), md_clean(r->note),
+		md_clean(r->wall_desc),
 	};
 	fprintf(f, "# slipwall report: %s\n\n", t.name ? t.name :
 		(t.wall_path ? t.wall_path : "wall"));
@@ -272,5 +276,6 @@ enum sw_status report_md_write(const struct rctx *c,
 	free(t.samples_file);
 	free(t.tests_source);
 	free(t.note);
+	free(t.wall_desc);
 	return outfile_commit(&out, err);
 }

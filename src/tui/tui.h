@@ -173,6 +173,12 @@ struct tui {
 	char pbuf[PATH_MAX];
 	int plen;
 	tui_prompt_done pdone;
+	/* Tab in the prompt (tui_complete.c): the text after the last Tab,
+	 * and the candidates listed above the prompt while it is still
+	 * that text */
+	char pcomp[PATH_MAX];
+	char pcands[1024];
+	int pcands_on;
 
 	char msg[2 * SW_ERRLEN];/* message line; msg_err: show as an error */
 	int msg_err;
@@ -271,6 +277,8 @@ void tui_prompt_erase(struct tui *t, int ch);	/* Backspace */
 void tui_prompt_clear(struct tui *t, int ch);	/* Ctrl-U */
 void tui_prompt_type(struct tui *t, int ch);	/* any other: typed */
 void tui_prompt_draw(struct tui *t, int y);
+/* tui_complete.c: Tab, file names completed (save, report, open) */
+void tui_prompt_complete(struct tui *t, int ch);
 
 /* tui_file.c */
 /* The runs directory: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs
@@ -367,6 +375,21 @@ void tui_edit_load_to(struct tui *t, double x, double y);
 void tui_io_save(struct tui *t);	/* s: the wall and a summary */
 void tui_io_open(struct tui *t);	/* o: another wall */
 void tui_io_report(struct tui *t);	/* R: a directory */
+
+/* tui_report.c: what R says beyond `slipwall report`, and the defaults
+ * of s and R beside the opened wall file */
+/* DIR/STEM+suffix: DIR the opened wall file's directory, STEM the
+ * samples file's name without .csv (or WALL-edited); -1 when the wall
+ * came from no file. */
+int tui_report_default(const struct tui *t, const char *suffix, char *out,
+		       size_t len);
+/* The command that reproduces the run's loads from wallpath into
+ * DIR-rerun (malloc'd; NULL when out of memory). */
+char *tui_report_command(const struct tui *t, const char *wallpath,
+			 const char *dir);
+/* The wall sampled in words, for report.md (malloc'd; NULL when out of
+ * memory). */
+char *tui_report_describe(const struct tui *t, const char *wallpath);
 
 /* tui_keys.c: the workbench's keys, one table: the main screen's
  * dispatch, the status line and the help are made from it */

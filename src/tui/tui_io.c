@@ -2,14 +2,16 @@
  * tui_io.c - the main screen's keys that read and write files: save (s),
  * open (o), report (R).  Each asks for a path on the prompt line.
  *
- * Save asks for the wall's path (default: the samples file's with
- * .yaml) and writes the wall with wallfile_save (PATH.tmp then rename)
+ * Save asks for the wall's path (default: beside the opened wall file,
+ * tui_report.c; else the samples file's with .yaml) and writes the wall with wallfile_save (PATH.tmp then rename)
  * and a JSON summary of the run beside it (.json, same way), after
  * checking both against the output policy (outfile.h: not the samples
  * file being streamed, not a FIFO, a device or a directory).  Open asks
  * for a path; a file that does not load leaves the current wall and
  * shows the reader's FILE:LINE:COLUMN message.  Report writes what
- * `slipwall report` writes, for the current run.
+ * `slipwall report` writes, for the current run, and the wall sampled
+ * beside it (DIR/wall.yaml) with its description and the command that
+ * reproduces it (tui_report.c).
  */
 #include <errno.h>
 #include <math.h>
@@ -167,7 +169,10 @@ static void tui_io_save_to(struct tui *t, const char *path)
 void tui_io_save(struct tui *t)
 {
 	char def[PATH_MAX];
-	if (t->run.csv[0]) {
+	/* beside the opened wall file (tui_report.c), else the samples */
+	if (tui_report_default(t, ".yaml", def, sizeof def) == 0)
+		;
+	else if (t->run.csv[0]) {
 		snprintf(def, sizeof def, "%s", t->run.csv);
 		char *dot = strrchr(def, '.');
 		if (dot && !strcmp(dot, ".csv"))
@@ -242,6 +247,20 @@ static void tui_io_report_to(struct tui *t, const char *dir)
 		tui_message(t, 1, "report: %s", err);
 		return;
 	}
+	/* the wall sampled is saved beside the report (tui_report.c) */
+	char wallpath[PATH_MAX];
+	if ((size_t)snprintf(wallpath, sizeof wallpath, "%s%swall.yaml", dir,
+			     dir[strlen(dir) - 1] == '/' ? "" : "/") >=
+	    sizeof wallpath) {
+		tui_message(t, 1, "report: path too long");
+		return;
+	}
+	struct stat dst;	/* a new directory has no wall.yaml yet */
+	if (stat(dir, &dst) == 0 &&
+	    outfile_check(wallpath, inputs, 0, "the wall", err) != SW_OK) {
+		tui_message(t, 1, "report: %s", err);
+		return;
+	}
 	if (!t->run.csv[0] ||
 	    runlog_read_loads(t->run.csv, t->w, &lam, &n, NULL, err) != SW_OK) {
 		tui_message(t, 1, "report: %s", t->run.csv[0] ? err : "no samples file");
@@ -274,7 +293,7 @@ static void tui_io_report_to(struct tui *t, const char *dir)
 	in.ntests = t->w->ntests;
 	in.sol = sol;
 	in.nsol = 2;
-	in.run.wall_path = t->w->path ? t->w->path : "(edited wall)";
+	in.run.wall_path = wallpath;
 	in.run.version = sw_version();
 	in.run.samples_file = t->run.csv;
 	in.run.seed_known = 1;
@@ -287,9 +306,40 @@ static void tui_io_report_to(struct tui *t, const char *dir)
 	in.run.samples = t->run.tally.samples;
 	in.run.accepted = t->run.tally.accepted;
 	memcpy(in.run.rejected, t->run.tally.rejected, sizeof in.run.rejected);
-	in.run.note = "written from the workbench (key R) while sampling";
+	/* "while sampling" only while it samples (issue 27) */
+	char note[256];
+	const char *state = tui_run_state(t);
+	if (!strcmp(state, "running"))
+		snprintf(note, sizeof note, "Written from the workbench (key R) "
+			 "while sampling: %ld of the run's %ld samples computed.",
+			 t->run.tally.samples, t->run.target);
+	else if (!strcmp(state, "done"))
+		snprintf(note, sizeof note, "Written from the workbench (key R) "
+			 "after the run ended: all its %ld samples computed.",
+			 t->run.tally.samples);
+	else
+		snprintf(note, sizeof note, "Written from the workbench (key R) "
+			 "while the run was %s: %ld of its %ld samples computed.",
+			 state, t->run.tally.samples, t->run.target);
+	in.run.note = note;
+	char *cmd = tui_report_command(t, wallpath, dir);
+	char *desc = tui_report_describe(t, wallpath);
+	in.run.command = cmd;
+	in.run.wall_desc = desc;
 	enum sw_status st = report_write(&in, dir, NULL, err);
 	free(lam);
+	free(cmd);
+	free(desc);
+	if (st == SW_OK) {
+		/* the wall as sampled: its analysis.samples and seed those of
+		 * the run, so that `slipwall run` alone repeats it too */
+		struct wall *c = wall_copy(t->w);
+		c->samples = t->run.tally.samples > 0x7fffffffL ? 0x7fffffff :
+			     (int)t->run.tally.samples;
+		c->seed = t->run.cfg.seed;
+		st = wallfile_save(c, wallpath, err);
+		wall_free(c);
+	}
 	if (st != SW_OK)
 		tui_message(t, 1, "report: %s", err);
 	else
@@ -297,7 +347,9 @@ static void tui_io_report_to(struct tui *t, const char *dir)
 		char md[PATH_MAX + 16];
 		snprintf(md, sizeof md, "%s/report.md", dir);
 		tui_note_file(t, "report", md);
-		tui_message(t, 0, "report of %ld accepted samples in %s", n, md);
+		tui_note_file(t, "wall", wallpath);
+		tui_message(t, 0, "report of %ld accepted samples in %s; the wall "
+			    "in %s", n, md, wallpath);
 	}
 }
 
@@ -308,11 +360,14 @@ void tui_io_report(struct tui *t)
 		tui_message(t, 1, "report: no samples file");
 		return;
 	}
-	snprintf(def, sizeof def, "%s", t->run.csv);
-	char *dot = strrchr(def, '.');
-	if (dot && !strcmp(dot, ".csv"))
-		*dot = 0;
-	if (strlen(def) + 8 < sizeof def)
-		strcat(def, "-report");
+	/* beside the opened wall file (tui_report.c), else the samples */
+	if (tui_report_default(t, "-report", def, sizeof def) != 0) {
+		snprintf(def, sizeof def, "%s", t->run.csv);
+		char *dot = strrchr(def, '.');
+		if (dot && !strcmp(dot, ".csv"))
+			*dot = 0;
+		if (strlen(def) + 8 < sizeof def)
+			strcat(def, "-report");
+	}
 	tui_prompt(t, "write report to directory", def, tui_io_report_to);
 }

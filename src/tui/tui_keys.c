@@ -284,6 +284,9 @@ static const struct tui_key tui_keys[] = {
 	 .fn = tui_prompt_erase, .help = "delete the last character"},
 	{.ch = {21}, .name = "Ctrl-U", .prompt = 1, .fn = tui_prompt_clear,
 	 .help = "clear", BAR(PROMPT, "Ctrl-U clear", 3)},
+	{.ch = {'\t'}, .name = "Tab", .prompt = 1, .fn = tui_prompt_complete,
+	 .help = "complete a file name (save, report, open);\n"
+		 "again: list the names it could be"},
 };
 
 #define TUI_NKEYS ((int)(sizeof tui_keys / sizeof *tui_keys))

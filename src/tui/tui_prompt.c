@@ -21,6 +21,8 @@ void tui_prompt(struct tui *t, const char *label, const char *initial,
 	snprintf(t->pbuf, sizeof t->pbuf, "%s", initial ? initial : "");
 	t->plen = (int)strlen(t->pbuf);
 	t->pdone = done;
+	t->pcomp[0] = 0;
+	t->pcands_on = 0;
 }
 
 void tui_prompt_accept(struct tui *t, int ch)
@@ -74,6 +76,11 @@ void tui_prompt_draw(struct tui *t, int y)
 	while ((int)strlen(p) > room && *p)
 		p++;
 	snprintf(buf, sizeof buf, "%s: %s", t->plabel, p);
+	if (t->pcands_on && y > 0 && !strcmp(t->pcomp, t->pbuf)) {
+		move(y - 1, 0);	/* Tab's candidates (tui_complete.c) */
+		clrtoeol();
+		tui_text(y - 1, 0, C - 1, t->pcands);
+	}
 	attron(A_BOLD);
 	tui_text(y, 0, C - 1, buf);
 	attroff(A_BOLD);
