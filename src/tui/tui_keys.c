@@ -181,7 +181,7 @@ static const struct tui_key tui_keys[] = {
 	{.ch = {'q', 'Q'}, .name = "q, Q", .fn = tui_keys_quit,
 	 .help = "quit: print the history and every file written",
 	 BAR(MAIN, "q quit", 1), BAR(CURSOR, "q quit", 7),
-	 BAR(BROWSE, "q quit", 5)},
+	 BAR(BROWSE, "q quit", 5), BAR(PRESENT, "q quit", 5)},
 	{.ch = {' ', 'p'}, .name = "space, p", .fn = tui_keys_pause,
 	 .help = "pause / resume sampling (resume continues the same run)",
 	 BAR(MAIN, "spc pause", 3)},

@@ -18,7 +18,6 @@
  * by at most that.  At the latest sample it starts again at the first
  * one kept.
  */
-#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -139,7 +138,8 @@ void tui_present_key_play(struct tui *t, int ch)
 			    "F5 or V");
 		return;
 	}
-	t->present_play = !t->present_play;
+	/* playing with the browser closed (S, Esc): it opens, play goes on */
+	t->present_play = !t->present_play || !t->browse.open;
 	t->present_next = sys_now() + TUI_PRESENT_STEP;
 	if (t->present_play && !t->browse.open)
 		tui_browse_key_toggle(t, 'S');

@@ -10,7 +10,8 @@
 #   statistics pane before) in large digits, row by row as the font
 #   draws it (with `█` in UTF-8, `#` in ASCII); auto-play advances the
 #   shown sample within 5 s; A pauses it (the number stays 3.5 s) and
-#   resumes it; V again brings the statistics back;
+#   resumes it; after Esc (the browser closed) A opens it and plays on;
+#   V again brings the statistics back;
 # - m lights the bins of its mechanism's samples in the histogram: red
 #   bars with colours (capture-pane -e), reverse video with NO_COLOR;
 #   none before m, none again back at the latest mechanism (M).
@@ -163,6 +164,18 @@ if wait_for u 'auto-play resumed' 5 && within 5 changed; then
 	ok "A resumes auto-play: sample $n2, then $(shown_no u)"
 else
 	not_ok "A resumes auto-play" "'$n2' '$(shown_no u)': $(screen u)"
+fi
+# Esc closes the browser: the latest accepted sample's load; A opens it
+# and plays on
+T send-keys -t t:u Escape
+wait_for u 'latest mechanism \(sample' 5
+n0=$(shown_no u)
+T send-keys -t t:u A
+if wait_for u 'auto-play resumed' 5 && wait_for u '^sample [0-9]+: ' 5 &&
+   within 5 changed; then
+	ok "Esc, then A: the browser again, auto-play on (sample $n0, then $(shown_no u))"
+else
+	not_ok "Esc, then A: the browser again, auto-play on" "'$n0': $(screen u)"
 fi
 for w in u a; do
 	T send-keys -t "t:$w" V
