@@ -177,6 +177,8 @@ static int tui_tick(struct tui *t, int *more)
 	*more = n < 0;
 	if (n != 0)
 		dirty = 1;
+	if (tui_present_tick(t))	/* auto-play's step */
+		dirty = 1;
 	if (t->solve && !t->solve_done &&
 	    tui_solve_poll(t->solve, &t->has_std, &t->lam_std, &t->has_gil,
 			   &t->lam_gil)) {

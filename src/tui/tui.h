@@ -7,6 +7,7 @@
  *   tui.c        tui_main: the terminal, the poll() loop, the screens
  *   tui_home.c   the main screen: its layout, its keys through tui_keys.c
  *   tui_help.c   the help screen, made from tui_keys.c's table
+ *   tui_meaning.c its second page: what the numbers mean
  *   tui_keys.c   the one key table (dispatch, status line, help) and the
  *                main screen's own keys
  *   tui_history.c the run history: its rows, the H screen, what q prints
@@ -20,6 +21,8 @@
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
  *   tui_browse.c the sample browser: the run's samples kept (tui_run.c
  *                pushes them), the one on show, its keys
+ *   tui_present.c the presentation mode: large digits, auto-play (it
+ *                steps the browser)
  *   tui_file.c   where the samples files go, and their names
  *   tui_prompt.c the prompt line
  *   tui_signal.c SIGINT, SIGTERM, SIGHUP; Ctrl-Z (SIGTSTP)
@@ -203,6 +206,11 @@ struct tui {
 	int cursor_mode;	/* arrows move the block cursor, not the load */
 	double cur_x, cur_y;	/* block cursor, wall coordinates */
 
+	int help_page;		/* help: 0 the keys, 1 what the numbers mean */
+	int present;		/* the presentation mode (tui_present.c) */
+	int present_play;	/* its auto-play steps the browser */
+	double present_next;	/* when auto-play steps next (sys_now) */
+
 	int quit;
 };
 
@@ -346,10 +354,25 @@ int tui_browse_shown(const struct tui *t, struct tui_browse_sample *s);
 int tui_browse_mech_rank(const struct tui *t, const char *joint, int *n);
 /* The oldest kept sample's index (-1: none). */
 long tui_browse_first(const struct tui *t);
+/* Sample i, kept (tui_browse_first .. browse.next - 1): 1, else 0. */
+int tui_browse_sample_at(const struct tui *t, long i,
+			 struct tui_browse_sample *s);
+/* The bins of nb, width from lo, that hold a kept accepted sample of the
+ * mechanism joint: lit[b] = 1 (m/M's lit bins in the histogram). */
+void tui_browse_lit_bins(const struct tui *t, const char *joint, double lo,
+			 double width, int nb, unsigned char *lit);
 /* The browser's keys (tui_keys.c's table): */
 void tui_browse_key_toggle(struct tui *t, int ch);	/* S, Esc */
 void tui_browse_key_step(struct tui *t, int ch);	/* [ ] Home End */
 void tui_browse_key_pair(struct tui *t, int ch);	/* = */
+
+/* tui_present.c: the presentation mode */
+/* The main screen's panes in presentation mode, rows top .. bottom-1. */
+void tui_present_draw(struct tui *t, int top, int bottom);
+/* Each turn of the UI loop: auto-play's step; 1 when it stepped. */
+int tui_present_tick(struct tui *t);
+void tui_present_key_toggle(struct tui *t, int ch);	/* F5, V */
+void tui_present_key_play(struct tui *t, int ch);	/* A */
 
 /* tui_stats.c */
 /* Returns the rows it used. */
@@ -398,6 +421,7 @@ enum tui_keys_mode {
 	TUI_KEYS_CURSOR,	/* the main screen in block cursor mode */
 	TUI_KEYS_PROMPT,	/* the prompt line */
 	TUI_KEYS_BROWSE,	/* the main screen with the sample browser */
+	TUI_KEYS_PRESENT,	/* the presentation mode */
 	TUI_KEYS_MODES
 };
 #define TUI_KEYS_NAME_W 12	/* the help's column of names */
@@ -436,6 +460,9 @@ void tui_history_free(struct tui *t);	/* the H screen's rows */
 void tui_history_init(struct tui *t);
 enum tui_screen_id tui_history_key(struct tui *t, int ch);
 void tui_history_draw(struct tui *t);
+/* tui_meaning.c: line `line` of the help's second page ("what the
+ * numbers mean"); 0 past the last. */
+int tui_meaning_line(const struct tui *t, int line, char *buf, size_t len);
 /* tui_help.c */
 void tui_help_init(struct tui *t);
 enum tui_screen_id tui_help_key(struct tui *t, int ch);

@@ -16,6 +16,9 @@
  * browser working when the file could not be made or was cut by a
  * write error, and costs no parsing of a file being written.
  *
+ * The mechanism view (m/M, browser closed) lights the bins of the kept
+ * samples of the mechanism on show (tui_browse_lit_bins, tui_hist.c).
+ *
  * The pair (=): among the kept accepted samples with the shown one's
  * joint states (the same mechanism), the ones of the least and of the
  * largest load; = shows one, then the other.
@@ -28,6 +31,7 @@
 
 #include <curses.h>
 
+#include "slipwall/stats.h"
 #include "tui.h"
 
 #define TUI_BROWSE_MAX 100000L		/* samples kept at most */
@@ -254,4 +258,29 @@ void tui_browse_key_pair(struct tui *t, int ch)
 			    "%ld) .. %.4g%s (sample %ld); = alternates", k, n,
 			    tui_lam(t), tui_load(t, llo), unit, lo + 1,
 			    tui_load(t, lhi), unit, hi + 1);
+}
+
+int tui_browse_sample_at(const struct tui *t, long i,
+			 struct tui_browse_sample *s)
+{
+	long first = tui_browse_first(t);
+	if (first < 0 || i < first || i >= t->browse.next)
+		return 0;
+	tui_browse_get(t, i, s);
+	return 1;
+}
+
+/* m/M's lit bins: the kept samples of the mechanism, as the browser's
+ * one sample lights its bin (tui_hist.c).  Only the kept ones: on a
+ * large wall the ring holds the latest samples of the run. */
+void tui_browse_lit_bins(const struct tui *t, const char *joint, double lo,
+			 double width, int nb, unsigned char *lit)
+{
+	struct tui_browse_sample s;
+	long first = tui_browse_first(t);
+	for (long i = first; first >= 0 && i < t->browse.next; i++) {
+		tui_browse_get(t, i, &s);
+		if (s.status == SAMPLE_ACCEPTED && !strcmp(s.joint, joint))
+			lit[stats_bin(tui_load(t, s.lam), lo, width, nb)] = 1;
+	}
 }

@@ -17,7 +17,9 @@
  * that a what-if is read at a glance.
  *
  * With the sample browser open (tui_browse.c), the bin of the shown
- * sample's load is lit (the load's colour, or reverse video).
+ * sample's load is lit (the load's colour, or reverse video); with it
+ * closed and a mechanism of the tally on show (m/M), the bins of that
+ * mechanism's kept samples are lit the same way (tui_browse_lit_bins).
  */
 #include <math.h>
 #include <stdio.h>
@@ -141,10 +143,10 @@ static size_t tui_hist_bin(const double *x, size_t n, double lo, double width,
 }
 
 /* The previous run's outline, then this run's bars, in rows rows above
- * y0 + rows + 1; nb bins of cpb columns each, bin `lit` (-1: none) lit. */
+ * y0 + rows + 1; nb bins of cpb columns each, the bins lit[b] lit. */
 static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 			   int cpb, const size_t *count, const size_t *pcount,
-			   size_t maxc, int lit)
+			   size_t maxc, const unsigned char *lit)
 {
 	size_t n = t->run.tally.lam.n, pn = t->prev_n;
 	int cols = nb * cpb;
@@ -168,7 +170,7 @@ static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 	for (int c = 0; c < cols && maxc; c++) {
 		size_t cnt = count[c / cpb];
 		int e = (int)ceil((double)cnt / (double)n / maxf * rows * 8);
-		int attr = c / cpb == lit ? lattr : battr;
+		int attr = lit[c / cpb] ? lattr : battr;
 		if (attr)
 			attron(attr);
 		for (int r = 0; r < rows; r++) {
@@ -204,21 +206,29 @@ static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
 
 	size_t *count = calloc((size_t)nb, sizeof *count);
 	size_t *pcount = calloc((size_t)nb, sizeof *pcount);
-	if (!count || !pcount) {
+	unsigned char *lit = calloc((size_t)nb, 1);
+	if (!count || !pcount || !lit) {
 		free(count);
 		free(pcount);
+		free(lit);
 		return -1;
 	}
 	size_t maxc = tui_hist_bin(s->x, n, a->lo, width, count, nb);
 	if (n)
 		tui_hist_bin(t->prev_lam, t->prev_n, a->lo, width, pcount, nb);
 	struct tui_browse_sample bs;
-	int lit = -1;
+	const char *joint;
+	const double *vel;
+	char label[256];
 	if (tui_browse_shown(t, &bs) && bs.status == SAMPLE_ACCEPTED)
-		lit = stats_bin(tui_load(t, bs.lam), a->lo, width, nb);
+		lit[stats_bin(tui_load(t, bs.lam), a->lo, width, nb)] = 1;
+	else if (!t->browse.open && t->mech_sel > 0 &&
+		 tui_wall_mechanism(t, &joint, &vel, label, sizeof label, 0))
+		tui_browse_lit_bins(t, joint, a->lo, width, nb, lit);
 	tui_hist_paint(t, y0, x0, rows, nb, cpb, count, pcount, maxc, lit);
 	free(count);
 	free(pcount);
+	free(lit);
 	return nb * cpb;
 }
 

@@ -124,6 +124,7 @@ static void tui_home_keybar(struct tui *t)
 	char buf[512];
 	tui_keys_bar(t->prompting ? TUI_KEYS_PROMPT :
 		     t->cursor_mode ? TUI_KEYS_CURSOR :
+		     t->present ? TUI_KEYS_PRESENT :
 		     t->browse.open ? TUI_KEYS_BROWSE : TUI_KEYS_MAIN,
 		     t->cols, buf, sizeof buf);
 	tui_bar(t, t->rows - 1, buf);
@@ -135,13 +136,17 @@ void tui_home_draw(struct tui *t)
 	tui_home_title(t);
 
 	int top = 1, bottom = R - 2;	/* panes: rows top .. bottom-1 */
+	if (t->present)		/* no statistics pane (tui_present.c) */
+		tui_present_draw(t, top, bottom);
 	int lw = C * 55 / 100;
 	int rx = lw + 1, rw = C - rx;
-	tui_wall_draw(t, top, 0, bottom - top, lw);
-	for (int y = top; y < bottom; y++)
-		tui_put(t, y, lw, "│", "|");
-	int sh = tui_stats_draw(t, top, rx, bottom - top - 5, rw) + 1;
-	tui_hist_draw(t, top + sh, rx, bottom - top - sh, rw);
+	if (!t->present) {
+		tui_wall_draw(t, top, 0, bottom - top, lw);
+		for (int y = top; y < bottom; y++)
+			tui_put(t, y, lw, "│", "|");
+		int sh = tui_stats_draw(t, top, rx, bottom - top - 5, rw) + 1;
+		tui_hist_draw(t, top + sh, rx, bottom - top - sh, rw);
+	}
 
 	if (t->prompting)
 		tui_prompt_draw(t, R - 2);

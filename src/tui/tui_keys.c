@@ -174,13 +174,14 @@ static void tui_keys_report(struct tui *t, int ch)
  * " / " (the opposite one): tests/keys_doc.sh reads them from here. */
 static const struct tui_key tui_keys[] = {
 	{.ch = {'?', KEY_F(1)}, .name = "?, F1", .next = TUI_SCREEN_HELP,
-	 .help = "this help (any key returns)",
+	 .help = "this help (Tab: what the numbers mean; any other key\n"
+		 "returns)",
 	 BAR(MAIN, "? help", 2), BAR(CURSOR, "? help", 6),
-	 BAR(BROWSE, "? help", 6)},
+	 BAR(BROWSE, "? help", 6), BAR(PRESENT, "? help", 4)},
 	{.ch = {'q', 'Q'}, .name = "q, Q", .fn = tui_keys_quit,
 	 .help = "quit: print the history and every file written",
 	 BAR(MAIN, "q quit", 1), BAR(CURSOR, "q quit", 7),
-	 BAR(BROWSE, "q quit", 5)},
+	 BAR(BROWSE, "q quit", 5), BAR(PRESENT, "q quit", 5)},
 	{.ch = {' ', 'p'}, .name = "space, p", .fn = tui_keys_pause,
 	 .help = "pause / resume sampling (resume continues the same run)",
 	 BAR(MAIN, "spc pause", 3)},
@@ -200,7 +201,7 @@ static const struct tui_key tui_keys[] = {
 	 BAR(BROWSE, "S/Esc close", 1)},
 	{.ch = {'[', ']'}, .name = "[ / ]", .fn = tui_browse_key_step,
 	 .help = "sample browser: previous / next sample",
-	 BAR(BROWSE, "[/] step", 2)},
+	 BAR(BROWSE, "[/] step", 2), BAR(PRESENT, "[/] step", 3)},
 	{.ch = {KEY_HOME, KEY_END}, .name = "Home / End",
 	 .fn = tui_browse_key_step,
 	 .help = "sample browser: first / latest sample kept",
@@ -209,6 +210,13 @@ static const struct tui_key tui_keys[] = {
 	 .help = "sample browser: the same mechanism's least and largest\n"
 		 "load, one then the other",
 	 BAR(BROWSE, "= pair", 4)},
+	{.ch = {KEY_F(5), 'V'}, .name = "F5, V", .fn = tui_present_key_toggle,
+	 .help = "presentation mode on / off: wall, histogram, the sample's\n"
+		 "load and p05 in large digits, auto-play",
+	 BAR(PRESENT, "F5/V back", 1)},
+	{.ch = {'A'}, .name = "A", .fn = tui_present_key_play,
+	 .help = "presentation mode: pause / resume auto-play",
+	 BAR(PRESENT, "A auto-play", 2)},
 	{.help = NULL},
 
 	{.ch = {'u'}, .name = "u", .fn = tui_edit_key_undo,
