@@ -10,7 +10,13 @@
  * samples files (history.h), so it survives quitting; the run in
  * progress is shown live, from its tally.  When the run ends, its
  * accepted loads are kept as "the previous run" that the histogram pane
- * outlines under the current one.
+ * outlines over the current one, with its p05 (tui_compare_p05).
+ *
+ * In H a row is selected (j/k); Space marks up to two rows, whose runs
+ * tui_compare.c compares in the lower half of the screen, and o or
+ * Enter reopens the selected run's wall (tui_compare_reopen).  Rows are
+ * numbered in the order shown: earlier sessions, this session, the live
+ * run (tui_history_rows); marks are reset each time H opens.
  */
 #include <math.h>
 #include <stdio.h>
@@ -424,7 +430,7 @@ void tui_history_draw(struct tui *t)
 	move(R - 1, 0);
 	for (int c = 0; c < C; c++)
 		addch(' ');
-	tui_text(R - 1, 0, C, " Esc: back  j/k: select  Space: mark two to "
-		 "compare  o, Enter: reopen the run's wall");
+	tui_text(R - 1, 0, C, " Esc back  j/k select  Space mark two to "
+		 "compare  o/Enter reopen the run's wall");
 	attroff(A_REVERSE);
 }
