@@ -287,13 +287,12 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	int have = tui_hist_range(t, &a);
 	char off[64] = "";
 	if (have && a.clip) {	/* the share of the previous run off the axis */
-		size_t below = stats_count_le(t->prev_lam, t->prev_n, a.lo);
-		size_t above = 0;
-		while (above < t->prev_n &&
+		size_t below = 0, above = 0;	/* sorted: from each end */
+		while (below < t->prev_n && t->prev_lam[below] < a.lo)
+			below++;
+		while (above < t->prev_n - below &&
 		       t->prev_lam[t->prev_n - 1 - above] > a.hi)
 			above++;
-		if (below && t->prev_lam[below - 1] == a.lo)
-			below--;	/* a.lo itself is on the axis */
 		char pct[32];
 		tui_pct(pct, sizeof pct, (double)(below + above) / (double)t->prev_n);
 		snprintf(off, sizeof off, ": %s off %s", pct,

@@ -6,7 +6,8 @@
 # run's outline; in H two marked runs show Δp05, Δp50, Δp95 and a KS
 # line whose D is the one `slipwall compare WALL --samples A --against
 # B` prints; `o` on a row reopens that run's wall (its friction in the
-# title), the unsaved edit's too.
+# title), the unsaved edit's too; after a load moved far the histogram's
+# axis spans the current run and the outline is clipped.
 #
 # Usage (from the source root): bash tests/tui/tui_compare.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -125,6 +126,22 @@ if wait_for w 'run 1: .*no wall kept for this run' 5 &&
 else
 	not_ok "a run whose wall file is gone" "$(screen w)"
 fi
-T send-keys -t t:w Escape q
+T send-keys -t t:w Escape
+wait_for w 'samples  ' 5
+
+# the axis follows the current run: the load moved low on the end face
+# (loads of about 35..90 N after 80..500 N) spans it alone, and the
+# title says how much of the previous run's outline is off the axis
+prompt w P 'dx,dy\]' '0.6,0.0875'
+wait_run w 5 done 60
+lo=$(screen w | grep -A1 -E '│─+' | tail -n 1 | sed 's/^.*│\([0-9.]*\).*/\1/')
+min=$(screen w | sed -n 's/.*λ min  *\([0-9.]*\) .*/\1/p')
+if screen_has w 'histogram \([0-9]+( accepted)?; ═ run 4: [0-9.]+ % off ▸\)' &&
+   [ -n "$lo" ] && [ "$lo" = "$min" ]; then
+	ok "a moved load: the axis starts at the run's λ min ($min), run 4's outline clipped"
+else
+	not_ok "a moved load: the axis follows the current run (axis $lo, min $min)" "$(screen w)"
+fi
+T send-keys -t t:w q
 wait_for w '^history: ' 10
 tap_end
