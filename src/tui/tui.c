@@ -88,6 +88,7 @@ static void tui_colors(struct tui *t)
 	init_pair(4, COLOR_MAGENTA, -1);		/* markers */
 	init_pair(5, COLOR_WHITE, COLOR_RED);		/* errors */
 	init_pair(6, COLOR_BLACK, COLOR_CYAN);		/* title, status */
+	init_pair(7, COLOR_YELLOW, -1);			/* previous run */
 }
 
 /* curses on the terminal, set up; NULL if it cannot start. */

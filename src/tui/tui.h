@@ -12,6 +12,8 @@
  *                main screen's own keys
  *   tui_history.c the run history: its rows, the H screen, what q prints
  *                (tui_run.c reaches it only through t->run_ended)
+ *   tui_compare.c two runs of H compared, a run's wall kept and reopened,
+ *                p05 against the previous run
  *   tui_io.c     the keys that read and write files: save, open, report
  *   tui_edit.c   the edits of the wall (through src/lib/wedit.c), undo
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
@@ -48,6 +50,7 @@
 #include "slipwall/run.h"
 #include "slipwall/runlog.h"
 #include "slipwall/sample.h"
+#include "slipwall/stats.h"
 #include "slipwall/sys.h"
 #include "slipwall/tally.h"
 #include "slipwall/undo.h"
@@ -108,6 +111,18 @@ struct tui_browse_sample {
 	const double *xi, *mu, *vel;	/* mu NULL: fixed friction */
 };
 
+/* Two runs of H compared (tui_compare.c): A the upper row (the earlier
+ * run), B the lower; their loads read from their samples files. */
+struct tui_cmp {
+	int a, b;		/* H's row numbers; -1: not read */
+	double *la, *lb;	/* accepted loads, sorted (malloc'd) */
+	long na, nb;
+	int ks_ok;		/* ks holds the test of B (x) against A (y) */
+	struct stats_ks ks;
+	char err[SW_ERRLEN + 64];	/* why they could not be read */
+	char note[SW_ERRLEN];	/* read, with a caveat */
+};
+
 struct tui;
 struct tui_solve;
 
@@ -152,6 +167,7 @@ struct tui {
 	double *prev_lam;	/* the previous run's accepted loads, sorted */
 	size_t prev_n;
 	int prev_run;
+	double prev_p05;	/* the previous run's p05 (tui_compare_p05) */
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
 	/* called when a run ends, its file closed and its tally whole
@@ -199,6 +215,10 @@ struct tui {
 	struct history_row *hist_old;	/* H: rows of earlier sessions */
 	int hist_nold;
 	char hist_rerr[SW_ERRLEN + 64];	/* H: why they could not be read */
+	int hist_cur;		/* H: the selected row; -1: the last */
+	int hist_mark[2];	/* H: the marked rows, -1: none */
+	char hist_msg[PATH_MAX + SW_ERRLEN];	/* H: why a wall was not reopened */
+	struct tui_cmp cmp;	/* H: the two marked runs compared */
 	struct tui_wall_view wall_view;	/* the wall pane's last drawing */
 
 	struct tui_browse browse;	/* the sample browser (S) */
@@ -463,6 +483,29 @@ void tui_history_draw(struct tui *t);
 /* tui_meaning.c: line `line` of the help's second page ("what the
  * numbers mean"); 0 past the last. */
 int tui_meaning_line(const struct tui *t, int line, char *buf, size_t len);
+
+/* tui_compare.c */
+/* Save the run's wall beside its samples file (X.csv: X.yaml) when it
+ * starts; a failure is said and the run goes on. */
+void tui_compare_save_wall(struct tui *t);
+/* The wall file beside a samples file; 0 when csv is not "X.csv". */
+int tui_compare_wall_path(const char *csv, char *out, size_t len);
+/* The characteristic value's line with the previous run's, in at most
+ * w columns: "p05 80.7 (run 1: 118.2, −32 %)"; 0 with no previous
+ * run (the caller writes its own line). */
+int tui_compare_p05(const struct tui *t, double p05, int w, char *out,
+		    size_t len);
+/* Read the marked rows' loads when the pair changed (h: H's rows in
+ * order, n of them). */
+void tui_compare_update(struct tui *t, const struct history_row *const *h,
+			int n);
+void tui_compare_free(struct tui *t);
+/* The comparison of the two marked rows in rows y0 .. y0 + h - 1. */
+void tui_compare_draw(struct tui *t, const struct history_row *const *h,
+		      int y0, int h_rows);
+/* Reopen row h's wall (H's o, Enter); 0 and t->hist_msg on failure. */
+int tui_compare_reopen(struct tui *t, const struct history_row *h);
+
 /* tui_help.c */
 void tui_help_init(struct tui *t);
 enum tui_screen_id tui_help_key(struct tui *t, int ch);

@@ -12,9 +12,18 @@
  * the right end, its value in the legend.
  *
  * The previous run of the session (before the last edit) is drawn as an
- * outline under the bars: the top of each of its bins, on the same axis
- * (which spans both runs) and the same scale of relative frequency, so
- * that a what-if is read at a glance.
+ * outline over the bars: the top of each of its bins as ═ (= in ASCII),
+ * in its own colour (yellow), on the same axis and the same scale of
+ * relative frequency, so that a what-if is read at a glance; the title
+ * labels it ("═ run 2").  The axis follows the current run
+ * (docs/workbench.md, "The histogram"): it spans both runs while that
+ * span is at most 3 times the current run's own (its range, or 10 % of
+ * its middle when narrower), so that a small change shows both whole;
+ * past that (a moved load that halves the loads) it spans the current
+ * run alone, the outline is clipped to it (the previous run's loads
+ * off the axis are left out, not piled into the end bins) and the
+ * title says which share of the previous run is off the axis and on
+ * which side ("run 2: 80 % off ▸").
  *
  * With the sample browser open (tui_browse.c), the bin of the shown
  * sample's load is lit (the load's colour, or reverse video); with it
@@ -56,17 +65,19 @@ struct tui_hist_axis {
 	int nmk;
 	const char *far[2];
 	int nfar;
+	int clip;		/* the previous run clipped to the axis */
 };
 
-static void tui_hist_title(struct tui *t, int y0, int x0, int w, size_t n)
+static void tui_hist_title(struct tui *t, int y0, int x0, int w, size_t n,
+			   const char *off)
 {
 	char buf[256];
 	if (t->prev_n) {
-		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted; %s run %d)",
-			 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
+		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted; %s run %d%s)",
+			 tui_lam(t), n, t->utf8 ? "═" : "=", t->prev_run, off);
 		if (tui_cols(buf) > w)
-			snprintf(buf, sizeof buf, "%s_min histogram (%zu; %s run %d)",
-				 tui_lam(t), n, t->utf8 ? "─" : "_", t->prev_run);
+			snprintf(buf, sizeof buf, "%s_min histogram (%zu; %s run %d%s)",
+				 tui_lam(t), n, t->utf8 ? "═" : "=", t->prev_run, off);
 	} else
 		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted)",
 			 tui_lam(t), n);
@@ -85,13 +96,20 @@ static int tui_hist_range(const struct tui *t, struct tui_hist_axis *a)
 	double lo = INFINITY, hi = -INFINITY;
 
 	a->nmk = a->nfar = 0;
+	a->clip = 0;
 	if (n) {
 		lo = s->x[0];
 		hi = s->x[n - 1];
 	}
-	if (n && pn) {
-		lo = fmin(lo, px[0]);
-		hi = fmax(hi, px[pn - 1]);
+	if (n && pn) {	/* both runs, unless that squeezes this one */
+		double ulo = fmin(lo, px[0]), uhi = fmax(hi, px[pn - 1]);
+		double own = fmax(hi - lo, 0.1 * fabs(0.5 * (lo + hi)));
+		if (uhi - ulo <= 3 * own) {
+			lo = ulo;
+			hi = uhi;
+		} else {
+			a->clip = 1;
+		}
 	}
 	for (int i = 0; i < wall->ntests && a->nmk < 60; i++)
 		a->mk[a->nmk++] = (struct tui_mark){wall->tests[i], "T"};
@@ -154,17 +172,6 @@ static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 	double maxf = n ? (double)maxc / (double)n : 0;
 	for (int b = 0; b < nb && pn; b++)
 		maxf = fmax(maxf, (double)pcount[b] / (double)pn);
-	int pattr = t->colors ? COLOR_PAIR(4) : A_DIM;
-	attron(pattr);
-	for (int c = 0; c < cols && maxf > 0 && pn; c++) {
-		double f = (double)pcount[c / cpb] / (double)pn;
-		int e = (int)ceil(f / maxf * rows * 8);
-		if (e <= 0)
-			continue;
-		int top = (e - 1) / 8;	/* its top row, from the bottom */
-		mvaddstr(y0 + rows - top, x0 + c, t->utf8 ? "─" : "_");
-	}
-	attroff(pattr);
 	int battr = t->colors ? COLOR_PAIR(3) : 0;
 	int lattr = (t->colors ? COLOR_PAIR(2) : A_REVERSE) | A_BOLD;
 	for (int c = 0; c < cols && maxc; c++) {
@@ -181,6 +188,18 @@ static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 		if (attr)
 			attroff(attr);
 	}
+	/* over the bars, so that it is seen where they are higher */
+	int pattr = (t->colors ? COLOR_PAIR(7) : 0) | A_BOLD;
+	attron(pattr);
+	for (int c = 0; c < cols && maxf > 0 && pn; c++) {
+		double f = (double)pcount[c / cpb] / (double)pn;
+		int e = (int)ceil(f / maxf * rows * 8);
+		if (e <= 0)
+			continue;
+		int top = (e - 1) / 8;	/* its top row, from the bottom */
+		mvaddstr(y0 + rows - top, x0 + c, t->utf8 ? "═" : "=");
+	}
+	attroff(pattr);
 }
 
 /* The bins (Freedman-Diaconis, whole columns each) and the bars;
@@ -214,8 +233,11 @@ static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
 		return -1;
 	}
 	size_t maxc = tui_hist_bin(s->x, n, a->lo, width, count, nb);
-	if (n)
-		tui_hist_bin(t->prev_lam, t->prev_n, a->lo, width, pcount, nb);
+	for (size_t i = 0; n && i < t->prev_n; i++) {
+		double v = t->prev_lam[i];
+		if (!a->clip || (v >= a->lo && v <= a->hi))	/* clipped */
+			pcount[stats_bin(v, a->lo, width, nb)]++;
+	}
 	struct tui_browse_sample bs;
 	const char *joint;
 	const double *vel;
@@ -268,13 +290,30 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 {
 	const struct wall *wall = t->w;
 	struct tui_hist_axis a;
+	a.lo = a.hi = 0;
+	a.clip = 0;
 	char buf[256];
 
-	tui_hist_title(t, y0, x0, w, t->run.tally.lam.n);
+	int have = tui_hist_range(t, &a);
+	char off[64] = "";
+	if (have && a.clip) {	/* the share of the previous run off the axis */
+		size_t below = 0, above = 0;	/* sorted: from each end */
+		while (below < t->prev_n && t->prev_lam[below] < a.lo)
+			below++;
+		while (above < t->prev_n - below &&
+		       t->prev_lam[t->prev_n - 1 - above] > a.hi)
+			above++;
+		char pct[32];
+		tui_pct(pct, sizeof pct, (double)(below + above) / (double)t->prev_n);
+		snprintf(off, sizeof off, ": %s off %s", pct,
+			 above >= below ? (t->utf8 ? "▸" : ">") :
+			 (t->utf8 ? "◂" : "<"));
+	}
+	tui_hist_title(t, y0, x0, w, t->run.tally.lam.n, off);
 	int rows = h - 4;
 	if (rows < 1 || w < 10)
 		return;
-	if (!tui_hist_range(t, &a)) {
+	if (!have) {
 		tui_text(y0 + 1, x0, w, "waiting for accepted samples...");
 		return;
 	}

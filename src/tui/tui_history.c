@@ -10,7 +10,13 @@
  * samples files (history.h), so it survives quitting; the run in
  * progress is shown live, from its tally.  When the run ends, its
  * accepted loads are kept as "the previous run" that the histogram pane
- * outlines under the current one.
+ * outlines over the current one, with its p05 (tui_compare_p05).
+ *
+ * In H a row is selected (j/k); Space marks up to two rows, whose runs
+ * tui_compare.c compares in the lower half of the screen, and o or
+ * Enter reopens the selected run's wall (tui_compare_reopen).  Rows are
+ * numbered in the order shown: earlier sessions, this session, the live
+ * run (tui_history_rows); marks are reset each time H opens.
  */
 #include <math.h>
 #include <stdio.h>
@@ -91,6 +97,7 @@ void tui_history_record(struct tui *t)
 			t->prev_lam = x;
 			t->prev_n = r->tally.lam.n;
 			t->prev_run = t->runno;
+			t->prev_p05 = h.p05;
 		}
 	}
 }
@@ -159,6 +166,9 @@ void tui_history_init(struct tui *t)
 	tui_history_free(t);
 	t->hist_top = -1;	/* at the bottom */
 	t->hist_rerr[0] = 0;
+	t->hist_cur = -1;	/* the last row */
+	t->hist_mark[0] = t->hist_mark[1] = -1;
+	t->hist_msg[0] = 0;
 	if (!t->hist_path[0])
 		return;
 	if (history_read(t->hist_path, TUI_HISTORY_OLD, &all, &n, err) != SW_OK) {
@@ -180,6 +190,7 @@ void tui_history_free(struct tui *t)
 	free(t->hist_old);
 	t->hist_old = NULL;
 	t->hist_nold = 0;
+	tui_compare_free(t);
 }
 
 /* The mouse wheel as a key: KEY_DOWN (wheel down), KEY_UP (up), 0 for
@@ -198,27 +209,88 @@ int tui_wheel(int ch)
 	return 0;
 }
 
+/* H's rows in order (earlier sessions, this session, the live run in
+ * live): a malloc'd array of n pointers, NULL when there are none. */
+static const struct history_row **tui_history_rows(const struct tui *t,
+						   struct history_row *live,
+						   int *n)
+{
+	int running = t->run.latest_joint != NULL;
+	*n = t->hist_nold + t->nhist + running;
+	const struct history_row **v = malloc(sizeof *v * (size_t)(*n + 1));
+	if (!v) {
+		*n = 0;
+		return NULL;
+	}
+	int k = 0;
+	for (int i = 0; i < t->hist_nold; i++)
+		v[k++] = &t->hist_old[i];
+	for (int i = 0; i < t->nhist; i++)
+		v[k++] = &t->hist[i];
+	if (running) {
+		tui_history_row(t, live);
+		v[k++] = live;
+	}
+	return v;
+}
+
+/* Space: mark the selected row, or unmark it; a third mark replaces
+ * the older one. */
+static void tui_history_mark(struct tui *t, int row)
+{
+	int *m = t->hist_mark;
+	if (m[0] == row || m[1] == row) {
+		if (m[0] == row)
+			m[0] = m[1];
+		m[1] = -1;
+		return;
+	}
+	if (m[0] < 0)
+		m[0] = row;
+	else if (m[1] < 0)
+		m[1] = row;
+	else {
+		m[0] = m[1];
+		m[1] = row;
+	}
+}
+
 enum tui_screen_id tui_history_key(struct tui *t, int ch)
 {
+	struct history_row live;
+	int n;
 	ch = tui_wheel(ch);	/* the mouse scrolls, never closes */
 	if (ch == 0)
 		return TUI_SCREEN_HISTORY;
+	const struct history_row **rows = tui_history_rows(t, &live, &n);
+	enum tui_screen_id next = TUI_SCREEN_HISTORY;
+	int cur = t->hist_cur < 0 || t->hist_cur >= n ? n - 1 : t->hist_cur;
+	t->hist_msg[0] = 0;
 	if (ch == 'j' || ch == KEY_DOWN) {
-		t->hist_top++;
-		return TUI_SCREEN_HISTORY;
+		if (cur < n - 1)
+			cur++;
+	} else if (ch == 'k' || ch == KEY_UP) {
+		if (cur > 0)
+			cur--;
+	} else if (ch == ' ') {
+		if (cur >= 0)
+			tui_history_mark(t, cur);
+	} else if (ch == 'o' || ch == '\n' || ch == '\r' || ch == KEY_ENTER) {
+		if (cur >= 0 && tui_compare_reopen(t, rows[cur]))
+			next = TUI_SCREEN_MAIN;
+	} else {
+		next = TUI_SCREEN_MAIN;
 	}
-	if (ch == 'k' || ch == KEY_UP) {
-		if (t->hist_top > 0)
-			t->hist_top--;
-		return TUI_SCREEN_HISTORY;
-	}
-	return TUI_SCREEN_MAIN;
+	t->hist_cur = cur;
+	free(rows);
+	return next;
 }
 
 /* One run: three lines (what changed and the file; the wall's
  * parameters; the numbers). */
 static int tui_history_draw_row(const struct tui *t, int y, int y1,
-				const struct history_row *h, int live, int old)
+				const struct history_row *h, int live, int old,
+				int sel, int mark)
 {
 	char a[256], b[256], head[PATH_MAX + 256], file[PATH_MAX];
 	const char *base = strrchr(h->file, '/');
@@ -226,6 +298,9 @@ static int tui_history_draw_row(const struct tui *t, int y, int y1,
 	tui_history_lines(t, h, a, sizeof a, b, sizeof b);
 	int n = snprintf(head, sizeof head, "%s%s%s%3d", live ? ">" : " ",
 			 old ? h->session : "", old ? " " : "", h->run);
+	if (mark)	/* the marked rows: A or B in place of the number's
+			 * first column (runs up to 99 keep theirs) */
+		head[n - 3] = mark;
 	int room = t->cols - 2 - n - 2;
 	int fw = (int)strlen(base);
 	if (fw > room / 2)
@@ -240,11 +315,12 @@ static int tui_history_draw_row(const struct tui *t, int y, int y1,
 	tui_abbrev(t, wc, sizeof wc, what, ww);
 	snprintf(head + n, sizeof head - (size_t)n, " %-*s  %s", ww, wc, file);
 	if (y >= 1 && y < y1) {
-		if (live)
-			attron(A_BOLD);
+		int attr = (live ? A_BOLD : 0) | (sel ? A_REVERSE : 0);
+		if (attr)
+			attron(attr);
 		tui_text(y, 0, t->cols, head);
-		if (live)
-			attroff(A_BOLD);
+		if (attr)
+			attroff(attr);
 	}
 	if (y + 1 >= 1 && y + 1 < y1)
 		tui_text(y + 1, 5, t->cols - 5, a);
@@ -253,22 +329,51 @@ static int tui_history_draw_row(const struct tui *t, int y, int y1,
 	return 3;
 }
 
+/* The mark of row i: 'A' (the upper marked row), 'B', '*' (one
+ * marked), or 0. */
+static int tui_history_mark_of(const struct tui *t, int i)
+{
+	int a = t->hist_mark[0], b = t->hist_mark[1];
+	if (i != a && i != b)
+		return 0;
+	if (a < 0 || b < 0)
+		return '*';
+	return i == (a < b ? a : b) ? 'A' : 'B';
+}
+
 void tui_history_draw(struct tui *t)
 {
 	char buf[PATH_MAX + 128];
 	struct history_row live;
 	int R = t->rows, C = t->cols;
 	int running = t->run.latest_joint != NULL;
-	if (running)
-		tui_history_row(t, &live);
+	int nrows;
+	const struct history_row **rows = tui_history_rows(t, &live, &nrows);
+	if (t->hist_cur < 0 || t->hist_cur >= nrows)
+		t->hist_cur = nrows - 1;
+	for (int k = 0; k < 2; k++)
+		if (t->hist_mark[k] >= nrows)
+			t->hist_mark[k] = -1;
+	if (rows)
+		tui_compare_update(t, rows, nrows);
+	/* two marked rows: their comparison takes the lower rows */
+	int cmp_h = t->cmp.a >= 0 ? (R - 3) / 2 : 0;
+	if (cmp_h > 16)
+		cmp_h = 16;
 
-	int nrows = t->hist_nold + t->nhist + running;
-	int body = R - 3;	/* rows 1 .. R-3 */
-	int lines = 3 * nrows + (t->hist_nold ? 1 : 0) +
-		    (t->hist_rerr[0] ? 1 : 0) + (t->hist_err[0] ? 1 : 0);
+	int body = R - 3 - cmp_h;	/* rows 1 .. R-3-cmp_h */
+	int head = (t->hist_nold ? 1 : 0) + (t->hist_rerr[0] ? 1 : 0) +
+		   (t->hist_err[0] ? 1 : 0);
+	int lines = 3 * nrows + head;
 	int maxtop = lines > body ? lines - body : 0;
+	/* the selected row in sight */
+	int cy = head + 3 * t->hist_cur;
 	if (t->hist_top < 0 || t->hist_top > maxtop)
 		t->hist_top = maxtop;
+	if (cy + 3 > t->hist_top + body)
+		t->hist_top = cy + 3 - body;
+	if (cy < t->hist_top)
+		t->hist_top = cy > head ? cy : 0;
 
 	snprintf(buf, sizeof buf, " run history: %d run%s this session%s%s",
 		 t->nhist + running, tui_s(t->nhist + running),
@@ -284,7 +389,7 @@ void tui_history_draw(struct tui *t)
 	tui_text(0, 0, C, ab);
 	attroff(A_REVERSE);
 
-	int y = 1 - t->hist_top, y1 = R - 2;
+	int y = 1 - t->hist_top, y1 = R - 2 - cmp_h;
 	/* why the index was not written or read, above the rows */
 	const char *why[] = {t->hist_err, t->hist_rerr};
 	for (int i = 0; i < 2; i++) {
@@ -299,19 +404,33 @@ void tui_history_draw(struct tui *t)
 		if (y >= 1 && y < y1)
 			tui_text(y, 0, C, "earlier sessions (session, run):");
 		y++;
-		for (int i = 0; i < t->hist_nold; i++)
-			y += tui_history_draw_row(t, y, y1, &t->hist_old[i], 0, 1);
 	}
-	for (int i = 0; i < t->nhist; i++)
-		y += tui_history_draw_row(t, y, y1, &t->hist[i], 0, 0);
-	if (running)
-		tui_history_draw_row(t, y, y1, &live, 1, 0);
+	for (int i = 0; i < nrows; i++)
+		y += tui_history_draw_row(t, y, y1, rows[i],
+					  running && i == nrows - 1,
+					  i < t->hist_nold, i == t->hist_cur,
+					  tui_history_mark_of(t, i));
+	if (cmp_h)
+		tui_compare_draw(t, rows, R - 2 - cmp_h, cmp_h);
+	free(rows);
 
-	tui_text(R - 2, 0, C, "p05 [99 % interval of p05], p50, p95: the accepted loads of the run");
+	if (t->hist_msg[0]) {
+		int attr = t->colors ? COLOR_PAIR(5) : A_BOLD;
+		attron(attr);
+		tui_text(R - 2, 0, C, t->hist_msg);
+		attroff(attr);
+	} else if (t->hist_mark[0] >= 0 && t->hist_mark[1] < 0) {
+		tui_text(R - 2, 0, C, "1 run marked (*): mark another with "
+			 "Space to compare them");
+	} else if (!cmp_h) {
+		tui_text(R - 2, 0, C, "p05 [99 % interval of p05], p50, p95: "
+			 "the accepted loads of the run");
+	}
 	attron(A_REVERSE);
 	move(R - 1, 0);
 	for (int c = 0; c < C; c++)
 		addch(' ');
-	tui_text(R - 1, 0, C, " any key: back to the workbench   j/k: scroll");
+	tui_text(R - 1, 0, C, " Esc back  j/k select  Space mark two to "
+		 "compare  o/Enter reopen the run's wall");
 	attroff(A_REVERSE);
 }

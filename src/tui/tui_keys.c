@@ -193,7 +193,8 @@ static const struct tui_key tui_keys[] = {
 	 .help = "next / previous mechanism: latest, then by frequency",
 	 BAR(MAIN, "m mech", 11)},
 	{.ch = {'H'}, .name = "H", .next = TUI_SCREEN_HISTORY,
-	 .help = "run history: one row per run of the session (any key returns)",
+	 .help = "run history: one row per run of the session; Space marks\n"
+		 "two to compare, o reopens a run's wall (Esc returns)",
 	 BAR(MAIN, "H history", 5)},
 	{.ch = {'S', 27}, .name = "S, Esc", .fn = tui_browse_key_toggle,
 	 .help = "sample browser on / off: one sample's load, mechanism,\n"

@@ -199,7 +199,10 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 	v[0] = s->std;
 	tui_stats_nums(p, line, 10, 1, v);
 	v[0] = s->p05;
-	tui_stats_nums(p, "characteristic value (p05) %s", 0, 1, v);
+	if (tui_compare_p05(t, s->p05, p->w, line, sizeof line))
+		tui_stats_text(p, line);	/* and the previous run's */
+	else
+		tui_stats_nums(p, "characteristic value (p05) %s", 0, 1, v);
 	if (s->has_ci) {
 		v[0] = s->p05_lo;
 		v[1] = s->p05_hi;

@@ -50,7 +50,7 @@ if wait_run w 3 done 60; then
 else
 	not_ok "two edits: runs 2 and 3 done" "$(screen w)"
 fi
-if screen_has w "histogram \([0-9]+ accepted; ─ run 2\)"; then
+if screen_has w "histogram \([0-9]+ accepted; ═ run 2\)"; then
 	ok "the histogram outlines the previous run (run 2)"
 else
 	not_ok "the histogram outlines the previous run" "$(screen w)"
