@@ -197,6 +197,11 @@ struct tui {
 	int cursor_mode;	/* arrows move the block cursor, not the load */
 	double cur_x, cur_y;	/* block cursor, wall coordinates */
 
+	/* a key that throws away more than a minute of sampling waits
+	 * for y (tui_confirm.c); NULL: none waits */
+	const struct tui_key *confirm_key;
+	int confirm_ch;
+
 	int quit;
 };
 
@@ -398,6 +403,23 @@ const struct tui_key *tui_keys_find(int prompt, int ch);
 void tui_keys_bar(enum tui_keys_mode mode, int cols, char *buf, size_t len);
 /* Line `line` of the keys' part of the help; 0 past the last. */
 int tui_keys_help(int line, char *buf, size_t len);
+
+/* tui_pace.c: the time left of a run (docs/workbench.md, "Time
+ * left").  0: nothing to say; 1: *left and *total from the a-priori
+ * estimate alone (no sample finished); 2: from the measured rate. */
+int tui_pace_left(struct tui *t, double *left, double *total);
+/* Seconds the current run has sampled (its pools' lifetimes). */
+double tui_pace_sampled(const struct tui *t);
+/* The keys of tui_knobs.c (tui_keys.c's table): */
+void tui_knobs_key_threads(struct tui *t, int ch);	/* T */
+void tui_knobs_key_design(struct tui *t, int ch);	/* G */
+
+/* tui_confirm.c: keys that throw away more than a minute of sampling
+ * (edits, r, o, q) ask first.  tui_confirm_ask: 1 when k waits for the
+ * answer (asked on the message line); tui_confirm_answer: the next key
+ * answers (y: k runs). */
+int tui_confirm_ask(struct tui *t, const struct tui_key *k, int ch);
+enum tui_screen_id tui_confirm_answer(struct tui *t, int ch);
 
 /* tui_home.c: the main screen */
 void tui_home_init(struct tui *t);
