@@ -254,6 +254,14 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 		/* k and n exactly: they are counts */
 		snprintf(line, sizeof line, "P(%s <= design %%s) %%s, %zu of %zu",
 			 lam, c.k, c.n);
+		/* the counts go when even two digits do not fit with them
+		 * (a line cut at "601 of" says something else) */
+		char l2[512], a2[32], b2[32];
+		tui_stats_num(a2, sizeof a2, c.load, 2);
+		tui_pct(b2, sizeof b2, c.p);
+		snprintf(l2, sizeof l2, line, a2, b2);
+		if (tui_cols(l2) > p->w)
+			snprintf(line, sizeof line, "P(%s <= design %%s) %%s", lam);
 		v[0] = c.load;
 		v[1] = c.p;
 		tui_stats_probs(p, line, 0, 2, v, 2);
