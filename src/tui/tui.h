@@ -9,6 +9,8 @@
  *   tui_help.c   the help screen, made from tui_keys.c's table
  *   tui_keys.c   the one key table (dispatch, status line, help) and the
  *                main screen's own keys
+ *   tui_confirm.c the question before a key ends a long run (y/n)
+ *   tui_knobs.c  T (worker threads) and G (the design load)
  *   tui_history.c the run history: its rows, the H screen, what q prints
  *                (tui_run.c reaches it only through t->run_ended)
  *   tui_io.c     the keys that read and write files: save, open, report
@@ -16,6 +18,7 @@
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
  *   tui_stats.c  the statistics pane
  *   tui_hist.c   the histogram pane
+ *   tui_pace.c   the time left of a run (an estimate)
  *   tui_solve.c  the one solve thread: standard and gilbert of the wall
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
  *   tui_browse.c the sample browser: the run's samples kept (tui_run.c
