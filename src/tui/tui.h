@@ -10,6 +10,8 @@
  *   tui_meaning.c its second page: what the numbers mean
  *   tui_keys.c   the one key table (dispatch, status line, help) and the
  *                main screen's own keys
+ *   tui_confirm.c the question before a key ends a long run (y/n)
+ *   tui_knobs.c  T (worker threads) and G (the design load)
  *   tui_history.c the run history: its rows, the H screen, what q prints
  *                (tui_run.c reaches it only through t->run_ended)
  *   tui_compare.c two runs of H compared, a run's wall kept and reopened,
@@ -19,6 +21,7 @@
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
  *   tui_stats.c  the statistics pane
  *   tui_hist.c   the histogram pane
+ *   tui_pace.c   the time left of a run (an estimate)
  *   tui_solve.c  the one solve thread: standard and gilbert of the wall
  *   tui_run.c    one sampling run: the mc pool, the samples CSV, the tally
  *   tui_browse.c the sample browser: the run's samples kept (tui_run.c
@@ -230,6 +233,10 @@ struct tui {
 	int present;		/* the presentation mode (tui_present.c) */
 	int present_play;	/* its auto-play steps the browser */
 	double present_next;	/* when auto-play steps next (sys_now) */
+	/* a key that throws away more than a minute of sampling waits
+	 * for y (tui_confirm.c); NULL: none waits */
+	const struct tui_key *confirm_key;
+	int confirm_ch;
 
 	int quit;
 };
@@ -465,6 +472,23 @@ const struct tui_key *tui_keys_find(int prompt, int ch);
 void tui_keys_bar(enum tui_keys_mode mode, int cols, char *buf, size_t len);
 /* Line `line` of the keys' part of the help; 0 past the last. */
 int tui_keys_help(int line, char *buf, size_t len);
+
+/* tui_pace.c: the time left of a run (docs/workbench.md, "Time
+ * left").  0: nothing to say; 1: *left and *total from the a-priori
+ * estimate alone (no sample finished); 2: from the measured rate. */
+int tui_pace_left(struct tui *t, double *left, double *total);
+/* Seconds the current run has sampled (its pools' lifetimes). */
+double tui_pace_sampled(const struct tui *t);
+/* The keys of tui_knobs.c (tui_keys.c's table): */
+void tui_knobs_key_threads(struct tui *t, int ch);	/* T */
+void tui_knobs_key_design(struct tui *t, int ch);	/* G */
+
+/* tui_confirm.c: keys that throw away more than a minute of sampling
+ * (edits, r, o, q) ask first.  tui_confirm_ask: 1 when k waits for the
+ * answer (asked on the message line); tui_confirm_answer: the next key
+ * answers (y: k runs). */
+int tui_confirm_ask(struct tui *t, const struct tui_key *k, int ch);
+enum tui_screen_id tui_confirm_answer(struct tui *t, int ch);
 
 /* tui_home.c: the main screen */
 void tui_home_init(struct tui *t);

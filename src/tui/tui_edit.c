@@ -336,6 +336,37 @@ void tui_edit_key_turn(struct tui *t, int ch)
 
 /* ---- the layout ---- */
 
+/* A layout edit moves a point load that acted on an end face of the
+ * courses to the same place of the new end face: the same course, the
+ * same height within it (wedit_layout alone keeps the old x: inside a
+ * longer wall, or snapped elsewhere on a shorter one).  And the wall's
+ * name goes: it often states the old geometry ("pulled at course 4");
+ * the title then shows the file's name (docs/workbench.md, "Editing"). */
+static void tui_edit_layout_follow(const struct wall *w, struct wall *nw)
+{
+	const struct wall_layout *o = &w->layout, *n = &nw->layout;
+	double tol = 1e-6 * fmax(o->block_w, o->block_h);
+	for (int l = 0; l < w->nloads && l < nw->nloads; l++) {
+		const struct wall_load *ld = &w->loads[l];
+		if (ld->kind != LOAD_POINT || nw->loads[l].kind != LOAD_POINT)
+			continue;
+		double x;
+		if (fabs(ld->at[0] - (o->x0 + o->length)) < tol)
+			x = n->x0 + n->length;		/* the right end */
+		else if (fabs(ld->at[0] - o->x0) < tol)
+			x = n->x0;			/* the left end */
+		else
+			continue;
+		double c = (ld->at[1] - o->y0) / o->block_h;	/* course */
+		if (!(c > 0) || c >= n->courses)
+			continue;
+		nw->loads[l].at[0] = x;
+		nw->loads[l].at[1] = n->y0 + c * n->block_h;
+	}
+	free(nw->name);
+	nw->name = NULL;
+}
+
 static void tui_edit_layout(struct tui *t, const struct wall_layout *lay,
 			    const char *what)
 {
@@ -349,6 +380,7 @@ static void tui_edit_layout(struct tui *t, const struct wall_layout *lay,
 		tui_message(t, 1, "not applied: %s", err);
 		return;
 	}
+	tui_edit_layout_follow(t->w, nw);
 	tui_edit_done(t, nw, what);
 }
 
@@ -399,6 +431,11 @@ static void tui_edit_block_typed(struct tui *t, const char *text)
 		tui_message(t, 1, "block size: type 'width,height' in m (both > 0)");
 		return;
 	}
+	/* the same blocks per course (to the half block): a length kept
+	 * in metres would end the courses in slivers */
+	double per = lay.block_w > 0 ? round(2 * lay.length / lay.block_w) / 2 : 0;
+	if (per >= 0.5)
+		lay.length = per * v[0];
 	lay.block_w = v[0];
 	lay.block_h = v[1];
 	tui_edit_layout(t, &lay, "block size changed");

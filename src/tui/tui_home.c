@@ -37,6 +37,8 @@ static const char *tui_home_keyname(int ch)
 
 enum tui_screen_id tui_home_key(struct tui *t, int ch)
 {
+	if (t->confirm_key)	/* y or no (tui_confirm.c) */
+		return tui_confirm_answer(t, ch);
 	const struct tui_key *k = tui_keys_find(t->prompting, ch);
 	if (!k) {
 		if (t->prompting)
@@ -46,6 +48,8 @@ enum tui_screen_id tui_home_key(struct tui *t, int ch)
 				    tui_home_keyname(ch));
 		return TUI_SCREEN_MAIN;
 	}
+	if (tui_confirm_ask(t, k, ch))
+		return TUI_SCREEN_MAIN;
 	if (k->fn)
 		k->fn(t, ch);
 	return k->next;
@@ -144,7 +148,7 @@ void tui_home_draw(struct tui *t)
 		tui_wall_draw(t, top, 0, bottom - top, lw);
 		for (int y = top; y < bottom; y++)
 			tui_put(t, y, lw, "│", "|");
-		int sh = tui_stats_draw(t, top, rx, bottom - top - 5, rw) + 1;
+		int sh = tui_stats_draw(t, top, rx, bottom - top - 8, rw) + 1;
 		tui_hist_draw(t, top + sh, rx, bottom - top - sh, rw);
 	}
 

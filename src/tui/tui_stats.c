@@ -37,14 +37,42 @@ static void tui_stats_num(char *buf, size_t len, double v, int prec)
 		snprintf(buf, len, "%.*g", prec, v);
 }
 
+/* opt: the level of the lines written now (0: always shown; the
+ * highest levels go first when the pane is short: tui_stats_draw);
+ * keep: the highest level shown; dry: count the lines of each level
+ * in n[] instead of drawing. */
 struct tui_lines {
 	int y, end, x0, w;
+	int opt, keep, dry;
+	int n[4];
 };
 
+/* A line longer than the pane is cut at a word boundary (a space in its
+ * right half), not in the middle of a word. */
 static void tui_stats_text(struct tui_lines *p, const char *line)
 {
-	if (p->y < p->end)
-		tui_text(p->y++, p->x0, p->w, line);
+	char buf[512];
+	if (p->opt > p->keep)
+		return;
+	if (p->dry) {
+		p->n[p->opt]++;
+		return;
+	}
+	if (p->y >= p->end)
+		return;
+	if (tui_cols(line) > p->w) {
+		const char *cut = tui_skip(line, p->w);
+		const char *sp = cut;
+		while (sp > line && *sp != ' ')
+			sp--;
+		if (*cut == ' ' || tui_cols(line) - tui_cols(sp) > p->w / 2)
+			cut = *cut == ' ' ? cut : sp;
+		while (cut > line && cut[-1] == ' ')
+			cut--;
+		snprintf(buf, sizeof buf, "%.*s", (int)(cut - line), line);
+		line = buf;
+	}
+	tui_text(p->y++, p->x0, p->w, line);
 }
 
 /* A line with up to four numbers (fmt has one %s for each, in order;
@@ -110,30 +138,37 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	 * with the a-priori estimate (rough: src/lib/mc.c, "Estimate") */
 	double est = mc_sample_seconds(wall);
 	if (ta->samples == 0 && est >= 1) {
+		p->opt = 3;
 		mc_about(a, sizeof a, est);
 		snprintf(line, sizeof line, "first    %s a sample (a wall of %d "
 			 "interfaces; rough)", a, wall->nifaces);
 		if (tui_cols(line) > w)
 			snprintf(line, sizeof line, "first    %s (estimate)", a);
 		tui_stats_text(p, line);
+		p->opt = 0;
 	}
-	if (pg.busy > 0 && pg.oldest >= 1) {
-		long left = t->run.target - ta->samples;
+	double left, total;
+	int how = tui_pace_left(t, &left, &total);
+	if (pg.busy > 0 && (pg.oldest >= 1 || (how && total >= 10 &&
+						 (ta->samples == 0 || rate < 2)))) {
 		tui_duration(a, sizeof a, pg.oldest);
 		snprintf(line, sizeof line, "working  %d sample%s, oldest %s",
 			 pg.busy, pg.busy == 1 ? "" : "s", a);
+		p->opt = 2;
 		tui_stats_text(p, line);
-		if (ta->samples > 0) {
-			tui_duration(b, sizeof b, (double)left / rate);
-			snprintf(line, sizeof line, "left     ~%s (estimate)", b);
-		} else {
-			/* nothing finished: every worker is on its first
-			 * sample, so each takes at least `oldest` */
-			long rounds = (left + t->threads - 1) / t->threads;
-			tui_duration(b, sizeof b, (double)rounds * pg.oldest);
-			snprintf(line, sizeof line, "left     > %s (at least)", b);
+		p->opt = 0;
+		if (how) {
+			/* an estimate, never a bound that only grows
+			 * (tui_pace.c) */
+			char c[32];
+			tui_duration(b, sizeof b, left);
+			tui_duration(c, sizeof c, total);
+			snprintf(line, sizeof line, "left     %s%s of %s%s",
+				 how == 1 ? "about " : "~", b, how == 1 ? "" : "~", c);
+			if (tui_cols(line) + 11 <= w)
+				strcat(line, how == 1 ? " (a priori)" : " (estimate)");
+			tui_stats_text(p, line);
 		}
-		tui_stats_text(p, line);
 	}
 }
 
@@ -193,16 +228,20 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 	snprintf(line, sizeof line, "%*s p95  %%s mean %%s", ind, "");
 	v[0] = s->p95;
 	v[1] = s->mean;
+	p->opt = 1;
 	tui_stats_nums(p, line, 10, 2, v);
 	snprintf(line, sizeof line, "%*s  sd  %%s (%s)", ind, "",
 		 tui_load_unit(wall));
 	v[0] = s->std;
+	p->opt = 2;
 	tui_stats_nums(p, line, 10, 1, v);
+	p->opt = 0;
 	v[0] = s->p05;
 	if (tui_compare_p05(t, s->p05, p->w, line, sizeof line))
 		tui_stats_text(p, line);	/* and the previous run's */
 	else
 		tui_stats_nums(p, "characteristic value (p05) %s", 0, 1, v);
+	p->opt = 1;
 	if (s->has_ci) {
 		v[0] = s->p05_lo;
 		v[1] = s->p05_hi;
@@ -210,6 +249,7 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 	} else {
 		tui_stats_text(p, "  99 % interval: needs 90 accepted");
 	}
+	p->opt = 0;
 	if (wall->design_load > 0) {
 		struct collapse c;
 		collapse_at(ta->lam.x, ta->lam.n, wall->design_load,
@@ -217,14 +257,24 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 		/* k and n exactly: they are counts */
 		snprintf(line, sizeof line, "P(%s <= design %%s) %%s, %zu of %zu",
 			 lam, c.k, c.n);
+		/* the counts go when even two digits do not fit with them
+		 * (a line cut at "601 of" says something else) */
+		char l2[512], a2[32], b2[32];
+		tui_stats_num(a2, sizeof a2, c.load, 2);
+		tui_pct(b2, sizeof b2, c.p);
+		snprintf(l2, sizeof l2, line, a2, b2);
+		if (tui_cols(l2) > p->w)
+			snprintf(line, sizeof line, "P(%s <= design %%s) %%s", lam);
 		v[0] = c.load;
 		v[1] = c.p;
 		tui_stats_probs(p, line, 0, 2, v, 2);
 		if (c.n > 0) {
 			v[0] = c.lo;
 			v[1] = c.hi;
+			p->opt = 2;
 			tui_stats_probs(p, "  99 %% interval [%s, %s] (binomial)",
 					0, 2, v, 3);
+			p->opt = 0;
 		}
 	}
 
@@ -270,23 +320,40 @@ static void tui_stats_tail(struct tui *t, struct tui_lines *p)
 	}
 	snprintf(line, sizeof line, "%d mechanism%s; m/M shows them", ta->nmech,
 		 tui_s(ta->nmech));
+	p->opt = 3;
 	tui_stats_text(p, line);
+	p->opt = 0;
 }
 
 int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 {
 	const struct tally *ta = &t->run.tally;
 	struct stats_summary s;
-	struct tui_lines p = {y0, y0 + h, x0, w};
+	struct tui_lines p = {y0, y0 + h, x0, w, 0, 3, 1, {0}};
 	char line[512];
 
 	tally_summary(ta, &s);
-	snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
-		 t->run.target, tui_run_state(t));
-	tui_stats_text(&p, line);
-	tui_stats_speed(t, &p);
-	tui_stats_counts(t, &p);
-	tui_stats_loads(t, &p, &s);
-	tui_stats_tail(t, &p);
+	/* twice: first the lines of each level counted, then drawn with
+	 * the levels that fit (the lowest-priority ones dropped first) */
+	for (int pass = 0; pass < 2; pass++) {
+		snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
+			 t->run.target, tui_run_state(t));
+		tui_stats_text(&p, line);
+		tui_stats_speed(t, &p);
+		tui_stats_counts(t, &p);
+		tui_stats_loads(t, &p, &s);
+		tui_stats_tail(t, &p);
+		if (pass == 0) {
+			int used = 0;
+			p.keep = -1;
+			for (int l = 0; l < 4; l++) {
+				used += p.n[l];
+				if (used > h && l > 0)
+					break;
+				p.keep = l;
+			}
+			p.dry = 0;
+		}
+	}
 	return p.y - y0;
 }

@@ -26,8 +26,10 @@ lam_column() {
 mu_is() {	# WINDOW MU: the title shows that friction
 	title "$1" | grep -qF "μ $2/$2 "
 }
+# (the name, or after a layout edit the file's name: it has no name
+# then, docs/workbench.md, "Edits"), then " * |" when modified
 marked() {
-	title "$1" | grep -qE '\) \* \|'
+	title "$1" | grep -qE ' \* \| '
 }
 
 start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/clamp-pull.yaml

@@ -160,7 +160,7 @@ T send-keys -t t:ms q
 
 # --- a large wall: honest progress ---
 start big LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/large.yaml
-if wait_for big 'working  [0-9]+ samples?, oldest [0-9]+ s' 10 && wait_for big 'left     [>~] ?[0-9:]+( s)? \((at least|estimate)\)' 10; then
+if wait_for big 'working  [0-9]+ samples?, oldest [0-9]+ s' 10 && wait_for big 'left     (about |~)[0-9:]+( s)? of ~?[0-9:]+( s)?' 10; then
 	ok "large wall: samples in progress, their age, the time left, within 10 s"
 else
 	not_ok "large wall: samples in progress, their age, the time left, within 10 s" "$(screen big)"

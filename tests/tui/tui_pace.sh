@@ -1,0 +1,122 @@
+#!/bin/bash
+# tui/tui_pace.sh - the workbench on slow walls and small screens, in
+# tmux (issue 27):
+#   - the time left is an estimate whose total does not grow while the
+#     rate is steady (tests/data/body-195.yaml: seconds a sample; two
+#     readings 3 s apart, the second total at most 20 % above the first);
+#   - T sets the worker threads (the speed line says how many);
+#   - G sets the design load (the pane shows P(λ <= design ...));
+#   - q after more than SLIPWALL_CONFIRM_SECONDS of sampling asks; n
+#     keeps the run, y quits;
+#   - at 80x24, a wall with tests and a design load keeps at least 3
+#     rows of histogram bars;
+#   - L then w: the wall stays a whole number of the new blocks, the
+#     load moves to the new end face, the name that stated the old
+#     geometry goes.
+#
+# Usage (from the source root): bash tests/tui/tui_pace.sh SLIPWALL
+# TAP output; skips when tmux is missing.
+
+bin=${1:?usage: tui/tui_pace.sh SLIPWALL}
+bin=$(realpath "$bin")
+cd "$(dirname "$0")/../.." || exit 1
+
+. tests/tap.sh
+. tests/tui/tui_lib.sh
+tui_setup "slipwall-pace-$$" 100 30
+
+# the total of the "left" line: "left     ~1:05 of ~3:10" -> seconds
+total() {
+	screen "$1" | sed -n 's/.*left  *[~a-z ]*[0-9:s ]* of ~*\([0-9:]*\( s\)*\).*/\1/p' |
+		head -n 1 | awk -F: '{ sub(/ s$/, ""); v = 0; for (i = 1; i <= NF; i++) v = 60 * v + $i; print v }'
+}
+
+sed -e 's/^  samples: .*/  samples: 200/' tests/data/body-195.yaml >"$tmp/slow.yaml"
+start p LANG=C.UTF-8 LC_ALL=C.UTF-8 SLIPWALL_CONFIRM_SECONDS=3 -- "$tmp/slow.yaml"
+if wait_samples p 2 180 && wait_for p 'left  .* of ' 30; then
+	a=$(total p)
+	sleep 3
+	b=$(total p)
+	if [ -n "$a" ] && [ -n "$b" ] && [ "$a" -gt 0 ] && [ $((b * 10)) -le $((a * 12)) ]; then
+		ok "the estimated total stays put: $a s, 3 s later $b s"
+	else
+		not_ok "the estimated total stays put: '$a' s, 3 s later '$b' s" "$(screen p)"
+	fi
+else
+	not_ok "a slow wall shows the time left" "$(screen p)"
+fi
+
+prompt p T threads 1
+if wait_for p 'speed .*(on 1 thread|, 1 thread)( |$)' 10; then
+	ok "T: the speed line says 1 thread"
+else
+	not_ok "T: the speed line says 1 thread" "$(screen p)"
+fi
+
+prompt p G "design load" 0.5
+if wait_for p 'P\(λ <= design 0\.5\)' 10; then
+	ok "G: the pane shows P(λ <= design 0.5)"
+else
+	not_ok "G: the pane shows P(λ <= design 0.5)" "$(screen p)"
+fi
+
+T send-keys -t t:p q
+if wait_for p 'quit and end .* of sampling\? y yes' 5; then
+	ok "q after the threshold asks"
+else
+	not_ok "q after the threshold asks" "$(screen p)"
+fi
+T send-keys -t t:p n
+if wait_for p 'kept the run' 5 && screen_has p 'run 1 running'; then
+	ok "n keeps the run"
+else
+	not_ok "n keeps the run" "$(screen p)"
+fi
+T send-keys -t t:p q
+wait_for p 'quit and end' 5
+T send-keys -t t:p y
+if wait_for p '^samples: ' 30; then
+	ok "y quits"
+else
+	not_ok "y quits" "$(screen p)"
+fi
+
+# 80x24: a wall with tests and a design load
+T kill-server >/dev/null 2>&1
+tui_server "slipwall-pace2-$$" 80 24
+sed -e "s/^  seed: .*/&\n  design_load: 1000/" walls/demo.yaml >"$tmp/small.yaml"
+printf 'tests:\n  loads: [900, 1000, 1100]\n' >>"$tmp/small.yaml"
+start s LANG=C.UTF-8 LC_ALL=C.UTF-8 -- "$tmp/small.yaml"
+wait_samples s 200 120
+sleep 1
+rows=$(screen s | python3 -c '
+import sys
+lines = sys.stdin.read().split("\n")
+right = [l[45:] if len(l) > 45 else "" for l in lines]
+top = [i for i, r in enumerate(right) if "histogram (" in r]
+axis = [i for i, r in enumerate(right) if r.startswith("──")]
+print(axis[0] - top[0] - 1 if top and axis else 0)')
+if [ "$rows" -ge 3 ] && screen_has s 'KS vs 3 tests' && screen_has s 'P\(λ <= design'; then
+	ok "80x24 with tests and a design load: $rows histogram rows"
+else
+	not_ok "80x24 with tests and a design load: $rows histogram rows (>= 3)" "$(screen s)"
+fi
+
+# L then w on the demo (0.60 m, 3 blocks of 0.20; the load on the end
+# face of course 4, [0.60, 0.525])
+T send-keys -t t:s q
+start d LANG=C.UTF-8 LC_ALL=C.UTF-8 -- walls/demo.yaml
+wait_for d 'run 1 ' 20
+prompt d L "blocks per course" 4
+wait_for d 'run 2 ' 20
+prompt d w "block width,height" 0.3,0.15
+wait_for d 'run 3 ' 20
+T send-keys -t t:d P
+if wait_for d 'load x,y\[,dx,dy\]: 1\.2,0\.525,' 5 && ! title d | grep -q 'pulled'; then
+	ok "L then w: 4 blocks of 0.3 m, the load on the new end face, the old name gone"
+else
+	not_ok "L then w: 4 blocks of 0.3 m, the load on the new end face, the old name gone" "$(screen d)"
+fi
+T send-keys -t t:d Escape
+
+tap_end
