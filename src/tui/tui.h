@@ -325,6 +325,11 @@ int tui_file_runs_dir(char *out, size_t len, char *err);
 void tui_file_stem(const struct wall *w, char *out, size_t len);
 /* The directory and name of the next samples file. */
 int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err);
+/* Save the run's wall beside its samples file (X.csv: X.yaml) when it
+ * starts; a failure is said and the run goes on. */
+void tui_file_save_run_wall(struct tui *t);
+/* The wall file beside a samples file; 0 when csv is not "X.csv". */
+int tui_file_run_wall_path(const char *csv, char *out, size_t len);
 
 /* tui_run.c */
 void tui_run_start(struct tui *t);	/* new CSV, new tally, sample */
@@ -509,11 +514,6 @@ void tui_history_draw(struct tui *t);
 int tui_meaning_line(const struct tui *t, int line, char *buf, size_t len);
 
 /* tui_compare.c */
-/* Save the run's wall beside its samples file (X.csv: X.yaml) when it
- * starts; a failure is said and the run goes on. */
-void tui_compare_save_wall(struct tui *t);
-/* The wall file beside a samples file; 0 when csv is not "X.csv". */
-int tui_compare_wall_path(const char *csv, char *out, size_t len);
 /* The characteristic value's line with the previous run's, in at most
  * w columns: "p05 80.7 (run 1: 118.2, −32 %)"; 0 with no previous
  * run (the caller writes its own line). */

@@ -37,27 +37,6 @@
 #include "slipwall/wallfile.h"
 #include "tui.h"
 
-int tui_compare_wall_path(const char *csv, char *out, size_t len)
-{
-	size_t n = strlen(csv);
-	if (n < 5 || strcmp(csv + n - 4, ".csv") || n + 2 > len)
-		return 0;
-	memcpy(out, csv, n - 4);
-	memcpy(out + n - 4, ".yaml", 6);
-	return 1;
-}
-
-void tui_compare_save_wall(struct tui *t)
-{
-	char path[PATH_MAX], err[SW_ERRLEN];
-	if (!t->run.csv[0] ||
-	    !tui_compare_wall_path(t->run.csv, path, sizeof path))
-		return;
-	if (wallfile_save(t->w, path, err) != SW_OK)
-		tui_message(t, 1, "the run's wall: %s (run %d cannot be "
-			    "reopened from H)", err, t->runno);
-}
-
 /* "−32 %" (a minus sign in UTF-8), "+5.1 %", "0 %". */
 static void tui_compare_rel(const struct tui *t, char *buf, size_t len,
 			    double a, double b)
@@ -141,7 +120,7 @@ static int tui_compare_read(struct tui *t, const struct history_row *h,
 		snprintf(err, errlen, "run %d has no samples file", h->run);
 		return 0;
 	}
-	if (tui_compare_wall_path(h->file, path, sizeof path) &&
+	if (tui_file_run_wall_path(h->file, path, sizeof path) &&
 	    stat(path, &st) == 0) {
 		if (wallfile_load(path, &w, e) != SW_OK) {
 			snprintf(err, errlen, "%s", e);
@@ -361,7 +340,7 @@ int tui_compare_reopen(struct tui *t, const struct history_row *h)
 	struct wall *nw;
 	struct stat st;
 	t->hist_msg[0] = 0;
-	if (!h->file[0] || !tui_compare_wall_path(h->file, path, sizeof path)) {
+	if (!h->file[0] || !tui_file_run_wall_path(h->file, path, sizeof path)) {
 		snprintf(t->hist_msg, sizeof t->hist_msg, "run %d has no "
 			 "samples file, so no wall kept", h->run);
 		return 0;

@@ -1,7 +1,8 @@
 /*
  * tui_file.c - where the workbench's files go: the samples file of each
- * run (tui_run.c streams to it) and the wall's short name that names
- * it and the default of a save (tui_io.c).
+ * run (tui_run.c streams to it), the wall each run sampled beside it
+ * (X.yaml beside X.csv, which H reopens: tui_compare.c), and the wall's
+ * short name that names them and the default of a save (tui_io.c).
  *
  * Samples files: $SLIPWALL_RUNS, else $XDG_DATA_HOME/slipwall/runs, else
  * ~/.local/share/slipwall/runs (made if missing), named
@@ -20,6 +21,7 @@
  * session made.
  */
 #include <errno.h>
+#include <limits.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -27,6 +29,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "slipwall/wallfile.h"
 #include "tui.h"
 
 void tui_file_stem(const struct wall *w, char *out, size_t len)
@@ -105,4 +108,25 @@ int tui_file_csv_path(struct tui *t, char *out, size_t len, char *err)
 	sw_fail(err, SW_EIO, "%s: 1000 samples files of run %d this second",
 		dir, t->runno);
 	return -1;
+}
+
+int tui_file_run_wall_path(const char *csv, char *out, size_t len)
+{
+	size_t n = strlen(csv);
+	if (n < 5 || strcmp(csv + n - 4, ".csv") || n + 2 > len)
+		return 0;
+	memcpy(out, csv, n - 4);
+	memcpy(out + n - 4, ".yaml", 6);
+	return 1;
+}
+
+void tui_file_save_run_wall(struct tui *t)
+{
+	char path[PATH_MAX], err[SW_ERRLEN];
+	if (!t->run.csv[0] ||
+	    !tui_file_run_wall_path(t->run.csv, path, sizeof path))
+		return;
+	if (wallfile_save(t->w, path, err) != SW_OK)
+		tui_message(t, 1, "the run's wall: %s (run %d cannot be "
+			    "reopened from H)", err, t->runno);
 }

@@ -133,7 +133,7 @@ void tui_run_start(struct tui *t)
 	}
 	if (r->log) {
 		tui_note_file(t, "samples", r->csv);
-		tui_compare_save_wall(t);	/* X.yaml beside X.csv */
+		tui_file_save_run_wall(t);	/* X.yaml beside X.csv */
 	} else {
 		r->csv[0] = 0;
 	}
