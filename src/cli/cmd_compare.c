@@ -261,16 +261,6 @@ done:
 
 /* ---- output ------------------------------------------------------------- */
 
-static void fmt_ci(char *buf, size_t len, const struct stats_summary *s)
-{
-	if (s->has_ci)
-		snprintf(buf, len, "[%.6g, %.6g]", s->p05_lo, s->p05_hi);
-	else if (s->n > 0)
-		snprintf(buf, len, "none (n < 90)");
-	else
-		snprintf(buf, len, "-");
-}
-
 static void print_table(const struct model *md, const struct stats_summary *ts,
 			long ntests)
 {
@@ -281,8 +271,8 @@ static void print_table(const struct model *md, const struct stats_summary *ts,
 	printf("%-24s %-26s %ld\n", "values", a, ntests);
 	printf("%-24s %-26.6g %.6g\n", "min", ms->min, ts->min);
 	printf("%-24s %-26.6g %.6g\n", "p05 (characteristic)", ms->p05, ts->p05);
-	fmt_ci(a, sizeof a, ms);
-	fmt_ci(b, sizeof b, ts);
+	compare_fmt_ci(a, sizeof a, ms);
+	compare_fmt_ci(b, sizeof b, ts);
 	printf("%-24s %-26s %s\n", "  99 % interval", a, b);
 	printf("%-24s %-26.6g %.6g\n", "p50", ms->p50, ts->p50);
 	printf("%-24s %-26.6g %.6g\n", "p95", ms->p95, ts->p95);

@@ -65,7 +65,7 @@ static double rel_pct(double a, double b)
 
 /* ---- text ---------------------------------------------------------------- */
 
-static void fmt_ci(char *buf, size_t len, const struct stats_summary *s)
+void compare_fmt_ci(char *buf, size_t len, const struct stats_summary *s)
 {
 	if (s->has_ci)
 		snprintf(buf, len, "[%.6g, %.6g]", s->p05_lo, s->p05_hi);
@@ -120,8 +120,8 @@ static void print_text(const struct compare_runs_args *a,
 	printf("%-24s %-26s %-26s %+ld\n", "accepted", ca, cb,
 	       rb->accepted - ra->accepted);
 	row("p05 (characteristic)", ra->s.p05, rb->s.p05, q->unit);
-	fmt_ci(ca, sizeof ca, &ra->s);
-	fmt_ci(cb, sizeof cb, &rb->s);
+	compare_fmt_ci(ca, sizeof ca, &ra->s);
+	compare_fmt_ci(cb, sizeof cb, &rb->s);
 	printf("%-24s %-26s %s\n", "  99 % interval", ca, cb);
 	row("p50", ra->s.p50, rb->s.p50, q->unit);
 	row("p95", ra->s.p95, rb->s.p95, q->unit);

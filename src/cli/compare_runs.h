@@ -5,7 +5,10 @@
 #ifndef SLIPWALL_CLI_COMPARE_RUNS_H
 #define SLIPWALL_CLI_COMPARE_RUNS_H
 
+#include <stddef.h>
+
 #include "override.h"
+#include "slipwall/stats.h"
 #include "slipwall/wall.h"
 
 /* What compare_runs needs of the command line: the wall's path (as
@@ -24,5 +27,9 @@ struct compare_runs_args {
  * 0; 1 when a file has no accepted sample (printed first); 2 for a bad
  * file (FILE:LINE:COLUMN: message on stderr, nothing on stdout). */
 int compare_runs(const struct compare_runs_args *a, const struct wall *w);
+
+/* p05's 99 % interval as compare prints it: "[lo, hi]", "none (n < 90)"
+ * or "-" without samples (both forms of compare use it). */
+void compare_fmt_ci(char *buf, size_t len, const struct stats_summary *s);
 
 #endif
