@@ -436,32 +436,37 @@ static int stopped_writing(struct lp *p)
 	return 1;
 }
 
-static void glpk_set_col(struct lp *p, int col, int n, const int *rows,
-			 const double *vals)
+/* A column's or row's n entries (0-based indices) into q's 1-based
+ * scratch arrays, as glp_set_mat_col and glp_set_mat_row take them; 0,
+ * or -1 when a stop request deleted the problem (nothing to write). */
+static int put_entries(struct lp *p, int n, const int *idx,
+		       const double *vals)
 {
 	struct glpk_lp *q = Q(p);
 	q->held = 0;
 	if (stopped_writing(p))
-		return;
+		return -1;
 	for (int i = 0; i < n; i++) {
-		q->ind[i + 1] = rows[i] + 1;
+		q->ind[i + 1] = idx[i] + 1;
 		q->val[i + 1] = vals[i];
 	}
-	GUARD(p, glp_set_mat_col(q->P, col + 1, n, q->ind, q->val));
+	return 0;
+}
+
+static void glpk_set_col(struct lp *p, int col, int n, const int *rows,
+			 const double *vals)
+{
+	struct glpk_lp *q = Q(p);
+	if (put_entries(p, n, rows, vals) == 0)
+		GUARD(p, glp_set_mat_col(q->P, col + 1, n, q->ind, q->val));
 }
 
 static void glpk_set_row(struct lp *p, int row, int n, const int *cols,
 			 const double *vals)
 {
 	struct glpk_lp *q = Q(p);
-	q->held = 0;
-	if (stopped_writing(p))
-		return;
-	for (int i = 0; i < n; i++) {
-		q->ind[i + 1] = cols[i] + 1;
-		q->val[i + 1] = vals[i];
-	}
-	GUARD(p, glp_set_mat_row(q->P, row + 1, n, q->ind, q->val));
+	if (put_entries(p, n, cols, vals) == 0)
+		GUARD(p, glp_set_mat_row(q->P, row + 1, n, q->ind, q->val));
 }
 
 static int glpk_get_col(const struct lp *p, int col, int *rows,
