@@ -52,6 +52,24 @@ static int split_numbers(const char *v, int n, char *buf, size_t len,
 	return k == n ? 0 : -1;
 }
 
+/* --friction's value: MU (bed and head both) or BED,HEAD, their texts
+ * in *bed and *head (into buf).  0, or -1 if it is neither. */
+static int friction_parts(const char *v, char *buf, size_t len, char **bed,
+			  char **head)
+{
+	char *part[2];
+	if (!split_numbers(v, 1, buf, len, part)) {
+		*bed = *head = part[0];
+		return 0;
+	}
+	if (!split_numbers(v, 2, buf, len, part)) {
+		*bed = part[0];
+		*head = part[1];
+		return 0;
+	}
+	return -1;
+}
+
 int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 {
 	struct overrides *ov = dst;
@@ -63,18 +81,16 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst)
 	char buf[256], *part[2];
 	char *key = NULL, *value = NULL;
 	switch (kind) {
-	case OVR_FRICTION:
-		if (!split_numbers(v, 1, buf, sizeof buf, part)) {
-			value = dup_printf("%s", part[0]);
-		} else if (!split_numbers(v, 2, buf, sizeof buf, part)) {
-			value = dup_printf("{bed: %s, head: %s}", part[0],
-					   part[1]);
-		} else {
+	case OVR_FRICTION: {
+		char *bed, *head;
+		if (friction_parts(v, buf, sizeof buf, &bed, &head))
 			return cli_usage_error(cmd, "--friction: '%s' is neither "
 					       "MU nor BED,HEAD (numbers)", v);
-		}
+		value = bed == head ? dup_printf("%s", bed) :
+			dup_printf("{bed: %s, head: %s}", bed, head);
 		key = dup_printf("material.friction");
 		break;
+	}
 	case OVR_COV:
 		if (split_numbers(v, 1, buf, sizeof buf, part))
 			return cli_usage_error(cmd, "--cov: '%s' is not a "
@@ -126,46 +142,32 @@ int override_add(const char *cmd, const char *opt, const char *v, void *dst)
  * edit becomes the whole mapping material.friction = {bed, head, cov},
  * from the file's values and the edits before it, in order.  Without a
  * cov anywhere, --friction's edit is left as it is. */
-static int resolve_friction(const char *path, struct overrides *ov)
+static int sets_cov(const struct override *x)
 {
-	int need = 0, any = 0;
-	for (int k = 0; k < ov->n; k++) {
-		need |= ov->o[k].kind == OVR_COV ||
-			(ov->o[k].kind == OVR_SET &&
-			 !strcmp(ov->o[k].key, "material.friction.cov"));
-		any |= ov->o[k].kind == OVR_FRICTION;
-	}
-	if (!need && !any)
-		return 0;
-	struct wall *w = NULL;
-	int rc = cli_load_wall(path, &w);
-	if (rc)
-		return rc;
-	need |= w->mu_cov > 0;
-	if (!need) {
-		wall_free(w);
-		return 0;
-	}
+	return x->kind == OVR_COV ||
+	       (x->kind == OVR_SET && !strcmp(x->key, "material.friction.cov"));
+}
+
+static void resolve_friction(const struct wall *w, struct overrides *ov)
+{
+	int need = w->mu_cov > 0;
+	for (int k = 0; k < ov->n; k++)
+		need |= sets_cov(&ov->o[k]);
+	if (!need)
+		return;
 	char bed[64], head[64], cov[64];
 	snprintf(bed, sizeof bed, "%.17g", w->mu_bed);
 	snprintf(head, sizeof head, "%.17g", w->mu_head);
 	snprintf(cov, sizeof cov, "%.17g", w->mu_cov);
-	wall_free(w);
 	for (int k = 0; k < ov->n; k++) {
 		struct override *x = &ov->o[k];
-		char buf[256], *part[2];
+		char buf[256], *b, *h;
 		if (x->kind == OVR_FRICTION) {
-			if (!split_numbers(x->arg, 1, buf, sizeof buf, part)) {
-				snprintf(bed, sizeof bed, "%s", part[0]);
-				snprintf(head, sizeof head, "%s", part[0]);
-			} else if (!split_numbers(x->arg, 2, buf, sizeof buf,
-						  part)) {
-				snprintf(bed, sizeof bed, "%s", part[0]);
-				snprintf(head, sizeof head, "%s", part[1]);
+			if (!friction_parts(x->arg, buf, sizeof buf, &b, &h)) {
+				snprintf(bed, sizeof bed, "%s", b);
+				snprintf(head, sizeof head, "%s", h);
 			}
-		} else if (x->kind == OVR_COV ||
-			   (x->kind == OVR_SET &&
-			    !strcmp(x->key, "material.friction.cov"))) {
+		} else if (sets_cov(x)) {
 			snprintf(cov, sizeof cov, "%.60s", x->value);
 		} else {
 			continue;
@@ -176,23 +178,13 @@ static int resolve_friction(const char *path, struct overrides *ov)
 		x->value = dup_printf("{bed: %s, head: %s, cov: %s}", bed, head,
 				      cov);
 	}
-	return 0;
 }
 
 /* The keys of --load-at and --load-direction: the wall's only load. */
 static int resolve_loads(const char *cmd, const char *path,
-			 struct overrides *ov)
+			 const struct wall *w, struct overrides *ov)
 {
-	int need = 0;
-	for (int k = 0; k < ov->n; k++)
-		need |= ov->o[k].kind == OVR_LOAD_AT ||
-			ov->o[k].kind == OVR_LOAD_DIR;
-	if (!need)
-		return 0;
-	struct wall *w;
-	int rc = cli_load_wall(path, &w);
-	if (rc)
-		return rc;
+	int rc = 0;
 	for (int k = 0; k < ov->n && !rc; k++) {
 		struct override *x = &ov->o[k];
 		if (x->kind != OVR_LOAD_AT && x->kind != OVR_LOAD_DIR)
@@ -218,7 +210,6 @@ static int resolve_loads(const char *cmd, const char *path,
 					    "direction");
 		}
 	}
-	wall_free(w);
 	return rc;
 }
 
@@ -228,11 +219,22 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 	*w = NULL;
 	if (ov->n == 0)
 		return cli_load_wall(path, w);
-	int rc = resolve_loads(cmd, path, ov);
-	if (!rc)
-		rc = resolve_friction(path, ov);
-	if (rc)
-		return rc;
+	/* the file as it is, read once, when an override's key or value
+	 * depends on it: the live load's kind, the friction's cov */
+	int need = 0;
+	for (int k = 0; k < ov->n; k++)
+		need |= ov->o[k].kind != OVR_SET || sets_cov(&ov->o[k]);
+	if (need) {
+		struct wall *plain = NULL;
+		int rc = cli_load_wall(path, &plain);
+		if (!rc)
+			rc = resolve_loads(cmd, path, plain, ov);
+		if (!rc)
+			resolve_friction(plain, ov);
+		wall_free(plain);
+		if (rc)
+			return rc;
+	}
 	struct wallfile_edit *e = sw_xmalloc(sizeof *e * (size_t)ov->n);
 	for (int k = 0; k < ov->n; k++)
 		e[k] = (struct wallfile_edit){ov->o[k].key, ov->o[k].value,
