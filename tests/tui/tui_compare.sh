@@ -20,17 +20,6 @@ cd "$(dirname "$0")/../.." || exit 1
 . tests/tui/tui_lib.sh
 tui_setup "slipwall-compare-$$" 100 36
 
-# p05 of a samples file as the workbench prints it (%.4g): GSL's type 7
-# quantile of the sorted accepted lambda_min (a point load of the demo:
-# lambda_min is the load in N)
-csv_p05() {
-	awk -F, 'NR > 1 && $2 == "accepted" { print $4 }' "$1" | sort -g |
-		awk '{ x[n++] = $1 }
-		     END { if (!n) { print "-"; exit }
-			   h = (n - 1) * 0.05; i = int(h); d = h - i
-			   v = x[i]; if (i + 1 < n) v = (1 - d) * x[i] + d * x[i + 1]
-			   printf "%.4g\n", v }'
-}
 
 sed -e 's/^  samples: .*/  samples: 200/' walls/demo.yaml >"$tmp/demo.yaml"
 start w LANG=C.UTF-8 LC_ALL=C.UTF-8 -- "$tmp/demo.yaml"

@@ -18,16 +18,6 @@ cd "$(dirname "$0")/../.." || exit 1
 . tests/tui/tui_lib.sh
 tui_setup "slipwall-history-$$" 100 40
 
-# p05 of a samples file as the workbench prints it (%.4g): GSL's type 7
-# quantile of the sorted accepted lambda_min
-csv_p05() {
-	awk -F, 'NR > 1 && $2 == "accepted" { print $4 }' "$1" | sort -g |
-		awk '{ x[n++] = $1 }
-		     END { if (!n) { print "-"; exit }
-			   h = (n - 1) * 0.05; i = int(h); d = h - i
-			   v = x[i]; if (i + 1 < n) v = (1 - d) * x[i] + d * x[i + 1]
-			   printf "%.4g\n", v }'
-}
 # the H screen's three lines of run N: "mu p05" (mu bed)
 hist_row() {
 	screen w | awk -v r="$1" '

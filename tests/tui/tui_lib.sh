@@ -131,3 +131,15 @@ frame_at() {
 printed_csv() {
 	screen "$1" | sed -n 's/^samples: \(.*\.csv\) *$/\1/p' | head -n 1
 }
+# csv_p05 FILE: p05 of a samples file as the workbench prints it (%.4g):
+# GSL's type 7 quantile of the sorted accepted lambda_min (for a point
+# load of 1 N, as the demo's, lambda_min is the load in N); "-" without
+# an accepted sample
+csv_p05() {
+	awk -F, 'NR > 1 && $2 == "accepted" { print $4 }' "$1" | sort -g |
+		awk '{ x[n++] = $1 }
+		     END { if (!n) { print "-"; exit }
+			   h = (n - 1) * 0.05; i = int(h); d = h - i
+			   v = x[i]; if (i + 1 < n) v = (1 - d) * x[i] + d * x[i + 1]
+			   printf "%.4g\n", v }'
+}
