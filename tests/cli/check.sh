@@ -33,6 +33,15 @@ assert d["loads"][0]["type"] == "point" and d["loads"][0]["block"] == "c4b3", d[
 PY
 ok_if $? "demo wall: 28 blocks, 66 interfaces (20 head), 58.86 N blocks, load on c4b3"
 
+# every bundled wall loads, geometry and all (docs/walls.md)
+for w in walls/*.yaml; do
+	if "$bin" check "$w" > /dev/null 2> "$tmp/err"; then
+		ok "check $w exits 0"
+	else
+		not_ok "check $w exits 0" "$(head -c 400 "$tmp/err")"
+	fi
+done
+
 "$bin" check walls/ferris-tinloi-1.yaml > "$tmp/ft1.txt"
 grep -q "33 free" "$tmp/ft1.txt"
 ok_if $? "check text: Ferris & Tin-Loi wall 1 has 33 free blocks"
