@@ -3,7 +3,8 @@
 #
 #   sh scripts/ci-sanitize.sh [asan|tsan]...     (default: both)
 #
-# asan: every test (unit, command line, workbench) built with
+# asan: every test (unit, command line, workbench) but the real-size
+#       walls (tests/cli/realwalls.sh, minutes even unsanitized) built with
 #       -Db_sanitize=address,undefined in build-asan/; leaks are errors
 #       (LeakSanitizer), except those listed in scripts/sanitizers/lsan.supp.
 # tsan: the threaded tests - the sampler's pool (test_mc), `run` with 1
@@ -64,7 +65,8 @@ for job in $jobs; do
 		LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0 \
 		UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:log_path=$log \
 		meson test -C "$dir" --print-errorlogs --num-processes 2 \
-			--timeout-multiplier 3 >"$dir/test-output.txt" 2>&1
+			--timeout-multiplier 3 --no-suite realwalls \
+			>"$dir/test-output.txt" 2>&1
 		rc=$?
 		set -e
 		tail -n 12 "$dir/test-output.txt"

@@ -1,0 +1,69 @@
+#!/bin/bash
+# cli/realwalls.sh - the real-size walls of issue 25 (docs/walls.md):
+# walls/body-300.yaml (310 blocks) and walls/facade.yaml (a two-storey
+# bay with windows, 243 blocks) under a horizontal body load, 20 samples
+# each (SLIPWALL_REALWALLS_SAMPLES to change it) on 2 threads.  Every
+# sample must be accepted or rejected for a physical reason: 0
+# `numerical` and 0 `not_converged` rejections (the engine's own
+# failures, docs/method.md "Tolerances"); every accepted sample's
+# lambda_min positive and finite; the count of samples what was asked.
+# (That every walls/*.yaml passes `slipwall check`: tests/cli/check.sh.)
+#
+# Not in the fast tier, nor in the sanitizer job (scripts/ci-sanitize.sh
+# leaves the suite `realwalls` out): on fa21007's engine a sample of
+# the 310-block wall takes about 15 s.  When this was written the engine
+# failed it (`numerical` and `not_converged` samples on both walls,
+# docs/walls.md "Measured"): the test is the check of issue 25's fix.
+# TAP output.
+set -u
+bin=${1:?usage: cli/realwalls.sh SLIPWALL}
+cd "$(dirname "$0")/../.." || exit 1
+. tests/tap.sh
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+N=${SLIPWALL_REALWALLS_SAMPLES:-20}
+
+# realwall WALL: N samples, seed 1, 2 threads
+realwall() {
+	local w=$1 name rc summary
+	name=$(basename "$w" .yaml)
+	"$bin" run "$w" -n "$N" --seed 1 --threads 2 --json \
+		--samples "$tmp/$name.csv" >"$tmp/$name.json" 2>"$tmp/$name.err"
+	rc=$?
+	summary=$(json_field "$tmp/$name.json" \
+		'"%d accepted of %d, rejected %s" % (d["accepted"], d["samples"], {k: v for k, v in d["rejected"].items() if v})')
+	check "$w: run -n $N exits 0 ($rc): $summary" [ "$rc" = 0 ]
+	check "$w: $N samples reported" \
+		[ "$(json_field "$tmp/$name.json" 'd["samples"]')" = "$N" ]
+	check "$w: $N rows in the samples file" \
+		[ "$(($(wc -l <"$tmp/$name.csv") - 1))" = "$N" ]
+	check "$w: 0 numerical rejections" \
+		[ "$(json_field "$tmp/$name.json" 'd["rejected"]["numerical"]')" = 0 ]
+	check "$w: 0 not_converged rejections" \
+		[ "$(json_field "$tmp/$name.json" 'd["rejected"]["not_converged"]')" = 0 ]
+	check "$w: at least one sample accepted" \
+		python3 -c 'import json, sys; sys.exit(not json.load(open(sys.argv[1]))["accepted"] > 0)' "$tmp/$name.json"
+	# each accepted row's lambda_min (column 4) a positive finite number
+	check "$w: every accepted sample's lambda_min is positive and finite" \
+		python3 - "$tmp/$name.csv" <<'PY'
+import csv, math, sys
+bad = []
+for r in csv.DictReader(open(sys.argv[1])):
+    if r["status"] != "accepted":
+        continue
+    try:
+        x = float(r["lambda_min"])
+    except ValueError:
+        x = float("nan")
+    if not (math.isfinite(x) and x > 0):
+        bad.append((r["sample"], r["lambda_min"]))
+if bad:
+    print("#   not positive and finite:", bad)
+sys.exit(1 if bad else 0)
+PY
+	# the rejected samples, for whoever reads the log
+	awk -F, 'NR > 1 && $2 != "accepted" { print "#   sample " $1 ": " $2 }' "$tmp/$name.csv"
+}
+realwall walls/body-300.yaml
+realwall walls/facade.yaml
+tap_end
