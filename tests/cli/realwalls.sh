@@ -10,10 +10,12 @@
 # (That every walls/*.yaml passes `slipwall check`: tests/cli/check.sh.)
 #
 # Not in the fast tier, nor in the sanitizer job (scripts/ci-sanitize.sh
-# leaves the suite `realwalls` out): on fa21007's engine a sample of
-# the 310-block wall takes about 15 s.  When this was written the engine
-# failed it (`numerical` and `not_converged` samples on both walls,
-# docs/walls.md "Measured"): the test is the check of issue 25's fix.
+# leaves the suite `realwalls` out): on b7f2664's engine a sample of
+# the 310-block wall takes about 10 s on one thread, and the test 5 min
+# on 2 busy cores.  When this was written the engine failed it (19
+# `numerical` of 20 on body-300, one `numerical` and one `not_converged`
+# on the facade; docs/walls.md "Measured"): the test is the check of
+# issue 25's engine fix.
 # TAP output.
 set -u
 bin=${1:?usage: cli/realwalls.sh SLIPWALL}
