@@ -384,15 +384,15 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 		const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
 		char pcs[32];
 		tui_pct(pcs, sizeof pcs, pc / 100);
-		for (int form = 0; form < 4; form++) {
+		for (int form = 0; form < 5; form++) {
+			const char *nm = form == 0 ? name : form == 1 && what ?
+					 what + 2 : "";
 			snprintf(label, len,
 				 "family %d/%d: %s%s (%s %.*g..%.*g%s)%s%s",
 				 t->mech_sel, fs->nfam, pcs,
-				 form == 0 ? " of accepted" : "", tui_lam(t),
-				 form == 3 ? 3 : 4, fa->lam_lo, form == 3 ? 3 : 4,
-				 fa->lam_hi, unit, form < 3 ? ", " : "",
-				 form == 0 ? name : form == 1 ? name :
-				 form == 2 && what ? what + 2 : "");
+				 form < 3 ? " of accepted" : "", tui_lam(t),
+				 form == 4 ? 3 : 4, fa->lam_lo, form == 4 ? 3 : 4,
+				 fa->lam_hi, unit, *nm ? ", " : "", nm);
 			if (tui_cols(label) <= w)
 				break;
 		}
@@ -497,17 +497,16 @@ static void tui_wall_browse_label(const struct tui *t,
 		k = tui_browse_mech_rank(t, s->joint, &n);
 		kf = tui_family_rank(t, s->joint, &nf);
 	}
-	for (int form = 0; form < 3; form++) {
+	for (int form = 0; form < 4; form++) {
 		if (s->status == SAMPLE_ACCEPTED || isfinite(s->lam))
 			snprintf(lam, sizeof lam, " %s%s %.*g%s", tui_lam(t),
-				 form < 2 ? "_min" : "", form == 2 ? 3 : 4,
+				 form < 3 ? "_min" : "", form == 3 ? 3 : 4,
 				 tui_load(t, s->lam), unit);
-		if (k > 0 && kf > 0)
-			snprintf(mech, sizeof mech, form == 0 ?
-				 ", mechanism %d/%d, family %d/%d" :
-				 " mech %d/%d fam %d/%d", k, n, kf, nf);
+		if (k > 0 && kf > 0 && form == 0)
+			snprintf(mech, sizeof mech, ", mechanism %d/%d, family "
+				 "%d/%d", k, n, kf, nf);
 		else if (k > 0)
-			snprintf(mech, sizeof mech, form == 0 ? ", mechanism %d/%d"
+			snprintf(mech, sizeof mech, form < 2 ? ", mechanism %d/%d"
 				 : " mech %d/%d", k, n);
 		snprintf(label, len, "sample %ld: %s%s%s", s->index + 1,
 			 sample_status_name(s->status), lam, mech);
