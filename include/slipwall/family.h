@@ -42,6 +42,7 @@ int family_moving(const struct wall *w, const char *joint,
 struct family {
 	unsigned char *moving;	/* owned, nblocks: the moving set */
 	int nmoving;
+	unsigned long long key;	/* a hash of moving (FNV-1a), to find it */
 	long count;		/* accepted samples */
 	double lam_lo, lam_hi;	/* their loads' range (the tally's quantity) */
 	int nmech;		/* distinct mechanisms in it */

@@ -9,8 +9,9 @@
  * a family_set classifies each distinct mechanism of a tally once
  * (family_update only looks at the mechanisms added since its last
  * call).  Families are found again by their moving set: a linear search
- * over the families with a cheap count check first; there are far fewer
- * families than mechanisms (measured in docs/statistics.md).
+ * over the families that compares a hash of the set (and its size)
+ * before the set itself; there are far fewer families than mechanisms
+ * (measured in docs/statistics.md).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -139,14 +140,26 @@ void family_set_free(struct family_set *fs)
 	memset(fs, 0, sizeof *fs);
 }
 
+static unsigned long long fnv1a(const unsigned char *s, size_t n)
+{
+	unsigned long long h = 1469598103934665603ull;
+	for (size_t i = 0; i < n; i++) {
+		h ^= s[i];
+		h *= 1099511628211ull;
+	}
+	return h;
+}
+
 /* The family of moving set mv (n blocks), adding it (first mechanism k)
  * if new. */
 static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 		       int k)
 {
 	size_t nb = (size_t)fs->w->nblocks;
+	unsigned long long key = fnv1a(mv, nb);
 	for (int f = 0; f < fs->nfam; f++)
-		if (fs->fam[f].nmoving == n && !memcmp(fs->fam[f].moving, mv, nb))
+		if (fs->fam[f].key == key && fs->fam[f].nmoving == n &&
+		    !memcmp(fs->fam[f].moving, mv, nb))
 			return f;
 	if (fs->nfam == fs->capfam) {
 		fs->capfam = fs->capfam ? 2 * fs->capfam : 8;
@@ -158,6 +171,7 @@ static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 	f->moving = sw_xmalloc(nb + 1);
 	memcpy(f->moving, mv, nb);
 	f->nmoving = n;
+	f->key = key;
 	f->first = k;
 	return fs->nfam++;
 }
