@@ -272,7 +272,7 @@ static void print_families(const struct wall *w, const struct tally *t)
 		family_name(&fs, f->moving, name, sizeof name);
 		printf("  %7ld %5.1f %%  %s %.4g..%.4g  %s\n", f->count,
 		       100.0 * (double)f->count / (double)t->accepted, unit,
-		       f->lam_lo, f->lam_hi, name);
+		       f->lam_lo, f->lam_hi, cli_text(name));
 		int mk;
 		family_mechs(&fs, t, idx[i], &mk, 1);
 		const struct tally_mech *m = &t->mech[mk];
@@ -283,7 +283,8 @@ static void print_families(const struct wall *w, const struct tally *t)
 		family_fmt_joints(w, m->joint, j, sizeof j);
 		printf("                  %d mechanism%s; the most frequent (%ld, "
 		       "%d bod%s): %s\n", f->nmech, f->nmech > 1 ? "s" : "",
-		       m->count, nbodies, nbodies == 1 ? "y" : "ies", j);
+		       m->count, nbodies, nbodies == 1 ? "y" : "ies",
+		       cli_text(j));
 	}
 	int nt = tally_top(t, idx, TOP_MECHANISMS);
 	printf("mechanisms   %d distinct; %s:\n", t->nmech,
@@ -299,7 +300,8 @@ static void print_families(const struct wall *w, const struct tally *t)
 		family_fmt_joints(w, m->joint, j, sizeof j);
 		printf("  %7ld %5.1f %%  %s %.4g..%.4g  family %d  joints %s\n",
 		       m->count, 100.0 * (double)m->count / (double)t->accepted,
-		       unit, m->lam_lo, m->lam_hi, rank[fs.of[idx[i]]], j);
+		       unit, m->lam_lo, m->lam_hi, rank[fs.of[idx[i]]],
+		       cli_text(j));
 	}
 	free(rank);
 	free(fi);
