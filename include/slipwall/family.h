@@ -75,6 +75,12 @@ int family_mechs(const struct family_set *fs, const struct tally *t, int f,
 /* A family's name for people, by its blocks (see above), into buf. */
 void family_name(const struct family_set *fs, const unsigned char *moving,
 		 char *buf, size_t len);
+/* How mechanism joint (moving set mv) comes away from the blocks at
+ * rest, by the joints on the set's edge: "slides on bed joints 3-4,
+ * hinges at 2 joints".  Bed joint k lies between courses k and k + 1
+ * (0: on a support).  "opens" when no edge joint slides or hinges. */
+void family_motion(const struct family_set *fs, const char *joint,
+		   const unsigned char *mv, char *buf, size_t len);
 /* Interface k's two bodies, "a/b" by id, into buf. */
 void family_joint_name(const struct wall *w, int k, char *buf, size_t len);
 /* The moving joints of mechanism joint, 1-based as in the samples file,

@@ -277,13 +277,15 @@ static void print_families(const struct wall *w, const struct tally *t)
 		family_mechs(&fs, t, idx[i], &mk, 1);
 		const struct tally_mech *m = &t->mech[mk];
 		int nbodies;
+		char how[160];
 		unsigned char *mv = sw_xmalloc((size_t)w->nblocks + 1);
 		family_moving(w, m->joint, mv, &nbodies);
+		family_motion(&fs, m->joint, mv, how, sizeof how);
 		free(mv);
 		family_fmt_joints(w, m->joint, j, sizeof j);
 		printf("                  %d mechanism%s; the most frequent (%ld, "
-		       "%d bod%s): %s\n", f->nmech, f->nmech > 1 ? "s" : "",
-		       m->count, nbodies, nbodies == 1 ? "y" : "ies",
+		       "%d bod%s) %s: %s\n", f->nmech, f->nmech > 1 ? "s" : "",
+		       m->count, nbodies, nbodies == 1 ? "y" : "ies", how,
 		       cli_text(j));
 	}
 	int nt = tally_top(t, idx, TOP_MECHANISMS);

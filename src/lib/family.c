@@ -370,6 +370,56 @@ void family_name(const struct family_set *fs, const unsigned char *mv,
 		put(buf, len, &used, " at the right end");
 }
 
+void family_motion(const struct family_set *fs, const char *joint,
+		   const unsigned char *mv, char *buf, size_t len)
+{
+	const struct wall *w = fs->w;
+	unsigned char *bed = sw_xcalloc((size_t)fs->nrows + 2, 1);
+	int nh = 0, nbed = 0;
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		char c = joint[k];
+		if (c == JOINT_CLOSED || mv[f->a] == mv[f->b])
+			continue;	/* not on the edge */
+		if (c == JOINT_HINGES || c == JOINT_HINGE_SLIDES)
+			nh++;
+		if ((c == JOINT_SLIDES || c == JOINT_HINGE_SLIDES) &&
+		    f->kind == JOINT_BED) {
+			/* the lower body's course: the joint's number */
+			int lo = w->blocks[f->a].cy < w->blocks[f->b].cy ?
+				 f->a : f->b;
+			int r = w->blocks[lo].fixed ? 0 : fs->row[lo];
+			if (r >= 0 && r <= fs->nrows && !bed[r]) {
+				bed[r] = 1;
+				nbed++;
+			}
+		}
+	}
+	size_t used = 0;
+	buf[0] = 0;
+	if (nbed > 0) {
+		put(buf, len, &used, "slides on bed joint%s ", nbed > 1 ? "s" :
+		    "");
+		int any = 0;
+		for (int r = 0; r <= fs->nrows; r++) {
+			if (!bed[r] || (r > 0 && bed[r - 1]))
+				continue;	/* not the start of a range */
+			int e = r;
+			while (e + 1 <= fs->nrows && bed[e + 1])
+				e++;
+			put(buf, len, &used, e > r ? "%s%d-%d" : "%s%d",
+			    any ? ", " : "", r, e);
+			any = 1;
+		}
+	}
+	if (nh > 0)
+		put(buf, len, &used, "%shinges at %d joint%s", nbed ? ", " : "",
+		    nh, nh > 1 ? "s" : "");
+	if (nbed == 0 && nh == 0)
+		put(buf, len, &used, "opens");
+	free(bed);
+}
+
 void family_joint_name(const struct wall *w, int k, char *buf, size_t len)
 {
 	const struct wall_interface *f = &w->ifaces[k];

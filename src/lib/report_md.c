@@ -226,21 +226,25 @@ static void md_families(FILE *f, const struct rctx *c)
 		"(docs/statistics.md), the most frequent first; %d famil%s of "
 		"%d distinct mechanisms in %ld accepted samples.\n\n"
 		"| # | share | samples | load%s%s%s | moving blocks | mechanisms "
-		"| the most frequent one's moving joints |\n"
+		"| the most frequent one: how it comes away; its moving joints "
+		"|\n"
 		"|---|---|---|---|---|---|---|\n", c->fams.nfam,
 		c->fams.nfam == 1 ? "y" : "ies", t->nmech, t->accepted,
 		*c->unit ? " (" : "", *c->unit ? c->unit + (*c->unit == ' ') :
 		"", *c->unit ? ")" : "");
 	for (int i = 0; i < c->ntop; i++) {
 		const struct family *fa = &c->fams.fam[c->topfam[i]];
-		char name[256], j[400];
+		char name[256], j[400], how[160];
+		const char *joint = t->mech[c->top[i]].joint;
 		family_name(&c->fams, fa->moving, name, sizeof name);
-		family_fmt_joints(c->w, t->mech[c->top[i]].joint, j, sizeof j);
+		family_motion(&c->fams, joint, fa->moving, how, sizeof how);
+		family_fmt_joints(c->w, joint, j, sizeof j);
 		char *nm = md_clean(name), *jm = md_clean(j);
-		fprintf(f, "| %d | %.1f %% | %ld | %.5g to %.5g | %s | %d | %s |\n",
-			i + 1, 100.0 * (double)fa->count / (double)(t->accepted ?
-			t->accepted : 1), fa->count, fa->lam_lo, fa->lam_hi,
-			nm ? nm : "", fa->nmech, jm ? jm : "");
+		fprintf(f, "| %d | %.1f %% | %ld | %.5g to %.5g | %s | %d | %s; "
+			"%s |\n", i + 1, 100.0 * (double)fa->count /
+			(double)(t->accepted ? t->accepted : 1), fa->count,
+			fa->lam_lo, fa->lam_hi, nm ? nm : "", fa->nmech, how,
+			jm ? jm : "");
 		free(nm);
 		free(jm);
 	}

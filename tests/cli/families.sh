@@ -14,7 +14,9 @@
 # mechanism's `family` points back to it.  The text summary lists the
 # same families, with the count and name of the JSON's first one, and
 # names every joint by its two blocks.  The families do not depend on
-# the thread count.  TAP output.
+# the thread count.  The demo's most frequent family is the end block of
+# course 4 and the half block above it, sliding out on bed joints 3-5
+# (the wall file's comment).  TAP output.
 
 bin=${1:?usage: cli/families.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -101,4 +103,10 @@ done
 "$bin" run walls/demo.yaml -n 200 --seed 1 --threads 1 --json >"$tmp/run.json" 2>"$tmp/err"
 check "demo: the most frequent family is c4b3 and c5b4" \
 	eval "[ \"\$(json_field '$tmp/run.json' 'sorted(d[\"families\"][0][\"blocks\"])')\" = \"['c4b3', 'c5b4']\" ]"
+# ... and it slides out between its neighbours: on the bed joints under
+# c4b3 (3), between c4b3 and c5b3 (4) and above c5b4 (5)
+"$bin" run walls/demo.yaml -n 200 --seed 1 --threads 1 >"$tmp/run.txt" 2>"$tmp/err"
+line=$(grep -m1 'the most frequent (' "$tmp/run.txt")
+check "demo: the most frequent family's mechanism slides on bed joints 3-5" \
+	eval "printf '%s\\n' \"\$line\" | grep -Eq '^ +1 mechanism; the most frequent \\([0-9]+, 1 body\\) slides on bed joints 3-5: '"
 tap_end

@@ -147,6 +147,30 @@ int main(void)
 		       names[i].name, name);
 		free(ji);
 	}
+	/* how they come away: c2b4 slides on the bed joint under it (bed
+	 * joint 1; its head joint slides too); the right end hinges */
+	char mo[128];
+	char *jc = joints(w, corner, 's', '.');
+	family_moving(w, jc, mv, NULL);
+	family_motion(&fs, jc, mv, mo, sizeof mo);
+	tap_ok(!strcmp(mo, "slides on bed joint 1"), "c2b4: \"slides on bed "
+	       "joint 1\" (%s)", mo);
+	free(jc);
+	jc = joints(w, end, 'h', '.');
+	family_moving(w, jc, mv, NULL);
+	family_motion(&fs, jc, mv, mo, sizeof mo);
+	/* its edge: the ground, c1b2 twice (head joint, bed joint under
+	 * c2b3), c2b2 */
+	tap_ok(!strcmp(mo, "hinges at 4 joints"), "the right end: \"hinges "
+	       "at 4 joints\" (%s)", mo);
+	free(jc);
+	jc = joints(w, top, 'H', '.');
+	family_moving(w, jc, mv, NULL);
+	family_motion(&fs, jc, mv, mo, sizeof mo);
+	tap_ok(!strncmp(mo, "slides on bed joint 1, hinges at ", 33),
+	       "course 2 hinging and sliding: \"slides on bed joint 1, hinges "
+	       "at ...\" (%s)", mo);
+	free(jc);
 	char jn[64];
 	family_joint_name(w, 0, jn, sizeof jn);
 	tap_ok(strchr(jn, '/') != NULL, "joint 1 is named by its bodies (%s)",
