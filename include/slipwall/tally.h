@@ -52,6 +52,9 @@ struct tally {
 void tally_init(struct tally *t, const struct wall *w);
 void tally_free(struct tally *t);
 void tally_add(struct tally *t, const struct record *it);
+/* The index in t->mech of mechanism joint (nifaces chars), or -1 when
+ * the tally has not seen it: one hash of the string. */
+int tally_find(const struct tally *t, const char *joint);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */
 int tally_top(const struct tally *t, int *idx, int max);

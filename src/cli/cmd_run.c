@@ -29,6 +29,7 @@
 #include "cli_opts.h"
 #include "cluster.h"
 #include "slipwall/collapse.h"
+#include "slipwall/family.h"
 #include "override.h"
 #include "slipwall/json.h"
 #include "slipwall/mc.h"
@@ -236,31 +237,6 @@ static void progress(struct run *run, struct progress_ci *pc, long n,
 
 /* ---- the summary -------------------------------------------------------- */
 
-/* The moving joints of a mechanism, 1-based as in the samples file:
- * "3s 7s 12h", cut short with "..." to fit len. */
-static void fmt_joints(char *buf, size_t len, const char *joint)
-{
-	size_t used = 0;
-	int any = 0;
-	buf[0] = 0;
-	for (int k = 0; joint[k]; k++) {
-		if (joint[k] == JOINT_CLOSED)
-			continue;
-		char tmp[32];
-		int n = snprintf(tmp, sizeof tmp, "%s%d%c", any ? " " : "",
-				 k + 1, joint[k]);
-		if (used + (size_t)n + 4 >= len) {
-			snprintf(buf + used, len - used, " ...");
-			return;
-		}
-		memcpy(buf + used, tmp, (size_t)n + 1);
-		used += (size_t)n;
-		any = 1;
-	}
-	if (!any)
-		snprintf(buf, len, "(no joint moves)");
-}
-
 struct run_info {
 	const struct run_args *a;
 	const struct wall *w;
@@ -274,6 +250,68 @@ struct run_info {
 static double depth_used(const struct run_info *r)
 {
 	return r->cfg->depth < 0 ? r->w->depth : r->cfg->depth;
+}
+
+/* The families (docs/statistics.md, "Mechanism families"), each with
+ * its most frequent mechanism, then the most frequent mechanisms, each
+ * joint named by its number (the samples file's xa_k) and its bodies. */
+static void print_families(const struct wall *w, const struct tally *t)
+{
+	const char *unit = *t->q.unit ? "load" : "factor";
+	struct family_set fs;
+	family_set_init(&fs, w);
+	family_update(&fs, t);
+	int idx[TOP_MECHANISMS];
+	int nf = family_top(&fs, idx, TOP_MECHANISMS);
+	printf("families     %d (mechanisms with the same moving blocks); "
+	       "%s:\n", fs.nfam, fs.nfam > nf ? "the most frequent" :
+	       "by frequency");
+	for (int i = 0; i < nf; i++) {
+		const struct family *f = &fs.fam[idx[i]];
+		char name[256], j[160];
+		family_name(&fs, f->moving, name, sizeof name);
+		printf("  %7ld %5.1f %%  %s %.4g..%.4g  %s\n", f->count,
+		       100.0 * (double)f->count / (double)t->accepted, unit,
+		       f->lam_lo, f->lam_hi, cli_text(name));
+		int mk;
+		family_mechs(&fs, t, idx[i], &mk, 1);
+		const struct tally_mech *m = &t->mech[mk];
+		int nbodies;
+		char how[160];
+		unsigned char *mv = sw_xmalloc((size_t)w->nblocks + 1);
+		family_moving(w, m->joint, mv, &nbodies);
+		family_motion(&fs, m->joint, mv, how, sizeof how);
+		free(mv);
+		family_fmt_joints(w, m->joint, j, sizeof j);
+		printf("                  %d mechanism%s; the most frequent (%ld, "
+		       "%d bod%s) %s: %s\n", f->nmech, f->nmech > 1 ? "s" : "",
+		       m->count, nbodies, nbodies == 1 ? "y" : "ies", how,
+		       cli_text(j));
+	}
+	int nt = tally_top(t, idx, TOP_MECHANISMS);
+	printf("mechanisms   %d distinct; %s:\n", t->nmech,
+	       t->nmech > nt ? "the most frequent" : "by frequency");
+	int *rank = sw_xmalloc(sizeof(int) * ((size_t)fs.nfam + 1));
+	int *fi = sw_xmalloc(sizeof(int) * ((size_t)fs.nfam + 1));
+	int n = family_top(&fs, fi, fs.nfam);
+	for (int i = 0; i < n; i++)
+		rank[fi[i]] = i + 1;
+	for (int i = 0; i < nt; i++) {
+		const struct tally_mech *m = &t->mech[idx[i]];
+		char j[120];
+		family_fmt_joints(w, m->joint, j, sizeof j);
+		printf("  %7ld %5.1f %%  %s %.4g..%.4g  family %d  joints %s\n",
+		       m->count, 100.0 * (double)m->count / (double)t->accepted,
+		       unit, m->lam_lo, m->lam_hi, rank[fs.of[idx[i]]],
+		       cli_text(j));
+	}
+	free(rank);
+	free(fi);
+	printf("             (joint k(a/b) as in the samples file's xa_k, "
+	       "between bodies a and b:\n"
+	       "              s slides, h hinges, H hinges and slides, "
+	       "o opens)\n");
+	family_set_free(&fs);
 }
 
 static void print_text(const struct run_info *r, const struct tally *t)
@@ -350,26 +388,85 @@ static void print_text(const struct run_info *r, const struct tally *t)
 	printf("speed        %.1f samples/s (%.2f s)\n",
 	       r->elapsed > 0 ? (double)t->samples / r->elapsed : 0.0,
 	       r->elapsed);
-	if (t->nmech > 0) {
-		int idx[TOP_MECHANISMS];
-		int nt = tally_top(t, idx, TOP_MECHANISMS);
-		printf("mechanisms   %d distinct; %s:\n", t->nmech,
-		       t->nmech > nt ? "the most frequent" : "by frequency");
-		for (int i = 0; i < nt; i++) {
-			const struct tally_mech *m = &t->mech[idx[i]];
-			char j[72];
-			fmt_joints(j, sizeof j, m->joint);
-			printf("  %7ld %5.1f %%  %s %.4g..%.4g  joints %s\n",
-			       m->count, 100.0 * (double)m->count /
-			       (double)t->accepted, *t->q.unit ? "load" :
-			       "factor", m->lam_lo, m->lam_hi, j);
-		}
-		printf("             (joint k as in the samples file's xa_k: "
-		       "s slides, h hinges,\n"
-		       "              H hinges and slides, o opens)\n");
-	}
+	if (t->nmech > 0)
+		print_families(w, t);
 	if (r->a->samples)
 		printf("samples file %s\n", cli_text(r->a->samples));
+}
+
+/* "families" and "mechanisms" (docs/run.md): every family, most
+ * frequent first, with its blocks and the positions of its mechanisms
+ * in "mechanisms"; every mechanism with its family's position. */
+static void families_json(const struct wall *w, const struct tally *t,
+			  struct json *j)
+{
+	struct family_set fs;
+	family_set_init(&fs, w);
+	family_update(&fs, t);
+	int *fi = sw_xmalloc(sizeof(int) * ((size_t)fs.nfam + 1));
+	int *frank = sw_xmalloc(sizeof(int) * ((size_t)fs.nfam + 1));
+	int nf = family_top(&fs, fi, fs.nfam);
+	for (int i = 0; i < nf; i++)
+		frank[fi[i]] = i;
+	int *idx = sw_xmalloc(sizeof(int) * ((size_t)t->nmech + 1));
+	int *mrank = sw_xmalloc(sizeof(int) * ((size_t)t->nmech + 1));
+	int nt = tally_top(t, idx, t->nmech);
+	for (int i = 0; i < nt; i++)
+		mrank[idx[i]] = i;
+	json_key(j, "families");
+	json_array_begin(j);
+	for (int i = 0; i < nf; i++) {
+		const struct family *f = &fs.fam[fi[i]];
+		char name[256];
+		family_name(&fs, f->moving, name, sizeof name);
+		json_object_begin(j);
+		json_key_string(j, "name", name);
+		json_key(j, "blocks");
+		json_array_begin(j);
+		for (int b = 0; b < w->nblocks; b++)
+			if (f->moving[b])
+				json_string(j, w->blocks[b].id);
+		json_array_end(j);
+		json_key(j, "count");
+		json_int(j, f->count);
+		json_key(j, "lambda_lo");
+		json_double(j, f->lam_lo);
+		json_key(j, "lambda_hi");
+		json_double(j, f->lam_hi);
+		json_key(j, "mechanisms");
+		json_array_begin(j);
+		int *mk = sw_xmalloc(sizeof(int) * ((size_t)f->nmech + 1));
+		int nm = family_mechs(&fs, t, fi[i], mk, f->nmech);
+		for (int k = 0; k < nm; k++)
+			json_int(j, mrank[mk[k]]);
+		free(mk);
+		json_array_end(j);
+		json_object_end(j);
+	}
+	json_array_end(j);
+	json_key(j, "mechanisms");
+	json_array_begin(j);
+	for (int i = 0; i < nt; i++) {
+		const struct tally_mech *m = &t->mech[idx[i]];
+		json_object_begin(j);
+		json_key(j, "joints");
+		json_string(j, m->joint);
+		json_key(j, "count");
+		json_int(j, m->count);
+		json_key(j, "lambda_lo");
+		json_double(j, m->lam_lo);
+		json_key(j, "lambda_hi");
+		json_double(j, m->lam_hi);
+		json_key(j, "family");
+		json_int(j, frank[fs.of[idx[i]]]);
+		json_object_end(j);
+	}
+	json_array_end(j);
+	free(idx);
+	free(mrank);
+	free(fi);
+	free(frank);
+	family_set_free(&fs);
 }
 
 static void print_json(const struct run_info *r, const struct tally *t)
@@ -443,25 +540,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_double(&j, t->samples ? (double)t->iterations / (double)t->samples : NAN);
 	json_key(&j, "lps_per_sample");
 	json_double(&j, t->samples ? (double)t->lps / (double)t->samples : NAN);
-	json_key(&j, "mechanisms");
-	json_array_begin(&j);
-	int *idx = sw_xmalloc(sizeof(int) * ((size_t)t->nmech + 1));
-	int nt = tally_top(t, idx, t->nmech);
-	for (int i = 0; i < nt; i++) {
-		const struct tally_mech *m = &t->mech[idx[i]];
-		json_object_begin(&j);
-		json_key(&j, "joints");
-		json_string(&j, m->joint);
-		json_key(&j, "count");
-		json_int(&j, m->count);
-		json_key(&j, "lambda_lo");
-		json_double(&j, m->lam_lo);
-		json_key(&j, "lambda_hi");
-		json_double(&j, m->lam_hi);
-		json_object_end(&j);
-	}
-	free(idx);
-	json_array_end(&j);
+	families_json(r->w, t, &j);
 	json_key(&j, "samples_file");
 	if (r->a->samples)
 		json_string(&j, r->a->samples);

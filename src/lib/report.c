@@ -151,6 +151,8 @@ static void wall_extent(struct rctx *c)
 
 static void rctx_free(struct rctx *c)
 {
+	if (c->fams.w)
+		family_set_free(&c->fams);
 	free(c->sol);
 	free(c->lam);
 	free(c->tst);
@@ -255,7 +257,12 @@ static enum sw_status rctx_init(struct rctx *c, const struct report_input *in,
 			max = 1;
 		if (max > MAX_PANELS)
 			max = MAX_PANELS;
-		c->ntop = tally_top(in->mech, c->top, max);
+		family_set_init(&c->fams, c->w);
+		family_update(&c->fams, in->mech);
+		c->ntop = family_top(&c->fams, c->topfam, max);
+		for (int i = 0; i < c->ntop; i++)
+			family_mechs(&c->fams, in->mech, c->topfam[i],
+				     &c->top[i], 1);
 	}
 	return SW_OK;
 }
@@ -907,7 +914,7 @@ static void mech_layout(const struct rctx *c, int *cols, int *rows,
 		aspect = 1.6;
 	if (aspect < 0.25)
 		aspect = 0.25;
-	*ph = (*pw - 24) * aspect + 40;
+	*ph = (*pw - 24) * aspect + 54;
 }
 
 static double mech_height(const struct rctx *c)
@@ -996,28 +1003,37 @@ static void panel_loads(cairo_t *cr, const struct rctx *c, double ox,
 #undef MY
 }
 
-/* A mechanism panel's texts: its rank and share, its range of loads. */
+/* A mechanism panel's texts: its family's rank, share and blocks, its
+ * range of loads, and the mechanism drawn (the family's most frequent). */
 static void panel_caption(struct fig *f, const struct rctx *c, int rank,
 			  const struct tally_mech *mk, double px, double py,
 			  double ph)
 {
 	const struct tally *t = c->in->mech;
-	double pct = 100.0 * (double)mk->count / (double)(t->accepted ?
-							      t->accepted : 1);
+	const struct family *fa = &c->fams.fam[c->topfam[rank]];
+	double pct = 100.0 * (double)fa->count / (double)(t->accepted ?
+							  t->accepted : 1);
+	char name[256];
+	family_name(&c->fams, fa->moving, name, sizeof name);
 	plot_rgb(f->cr, C_BLACK, 1);
 	plot_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
-		  "#%d: %.1f %% (%ld of %ld)", rank + 1, pct, mk->count,
-		  t->accepted);
+		  "#%d: %.1f %% (%ld of %ld), %d mechanism%s", rank + 1, pct,
+		  fa->count, t->accepted, fa->nmech, fa->nmech > 1 ? "s" : "");
 	char lo[32], hi[32];
-	snprintf(lo, sizeof lo, "%.5g", mk->lam_lo);
-	snprintf(hi, sizeof hi, "%.5g", mk->lam_hi);
+	snprintf(lo, sizeof lo, "%.5g", fa->lam_lo);
+	snprintf(hi, sizeof hi, "%.5g", fa->lam_hi);
 	if (!strcmp(lo, hi))
-		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0, "λ = %.5g%s",
-			  mk->lam_lo, c->unit);
+		plot_text(f, px + 12, py + ph - 28, 9.5, 0, 0, 0, 0,
+			  "λ = %.5g%s", fa->lam_lo, c->unit);
 	else
-		plot_text(f, px + 12, py + ph - 14, 9.5, 0, 0, 0, 0,
-			  "λ from %.5g to %.5g%s", mk->lam_lo, mk->lam_hi,
+		plot_text(f, px + 12, py + ph - 28, 9.5, 0, 0, 0, 0,
+			  "λ from %.5g to %.5g%s", fa->lam_lo, fa->lam_hi,
 			  c->unit);
+	/* the blocks are drawn: the words after the ids fit a panel */
+	const char *what = strstr(name, ": ");
+	plot_text(f, px + 12, py + ph - 14, 9, 0, 0, 0, 0, "%s",
+		  what ? what + 2 : name);
+	(void)mk;
 }
 
 static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
@@ -1028,7 +1044,7 @@ static void draw_mech_panel(struct fig *f, const struct rctx *c, int rank,
 	const struct wall *w = c->w;
 	const struct tally *t = c->in->mech;
 	double ww = c->wx1 - c->wx0, wh = c->wy1 - c->wy0;
-	double bx = px + 12, by = py + 22, bw = pw - 24, bh = ph - 40;
+	double bx = px + 12, by = py + 22, bw = pw - 24, bh = ph - 54;
 	double s = fmin(bw / ww, bh / wh);
 	double ox = bx + (bw - s * ww) / 2, oy = by + (bh - s * wh) / 2;
 #define MX(x) (ox + ((x) - c->wx0) * s)
@@ -1122,9 +1138,9 @@ static void draw_mechanisms(struct fig *f, const struct rctx *c)
 	double pw, ph;
 	mech_layout(c, &cols, &rows, &pw, &ph);
 	const struct tally *t = c->in->mech;
-	plot_text(f, 14, 6, 11.5, 1, 0, 0, 0, "Most frequent mechanisms "
-		  "(%d distinct in %ld accepted samples)", t->nmech,
-		  t->accepted);
+	plot_text(f, 14, 6, 11.5, 1, 0, 0, 0, "Mechanism families "
+		  "(%d of %d distinct in %ld accepted samples)", c->fams.nfam,
+		  t->nmech, t->accepted);
 	for (int i = 0; i < c->ntop; i++) {
 		double px = (i % cols) * pw, py = 28 + (i / cols) * ph;
 		draw_mech_panel(f, c, i, &t->mech[c->top[i]], px, py, pw, ph);
@@ -1201,7 +1217,7 @@ static const struct figdef report_figures[] = {
 	 "Kolmogorov-Smirnov test (Fig. 9)", draw_cumulative, h_four},
 	{"single-solutions", "The model against the single-solution methods "
 	 "(Fig. 10)", draw_single, h_three},
-	{"mechanisms", "The most frequent mechanisms (Fig. 6)", draw_mechanisms,
+	{"mechanisms", "The most frequent mechanism families (Fig. 6)", draw_mechanisms,
 	 mech_height},
 	{"convergence", "Convergence of the characteristic value", 
 	 draw_convergence, h_freq},

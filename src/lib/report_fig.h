@@ -11,6 +11,7 @@
 #include <stddef.h>
 
 #include "plot.h"
+#include "slipwall/family.h"
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
 
@@ -41,8 +42,11 @@ struct rctx {
 	double *fm, *ft;	/* relative frequencies per class */
 	/* the load range of the distribution plots */
 	double x0, x1;
-	/* the mechanisms (Fig. 6) */
-	int top[MAX_PANELS], ntop;
+	/* the mechanisms (Fig. 6): the most frequent families (docs/
+	 * statistics.md, "Mechanism families"), each drawn by its most
+	 * frequent mechanism top[i] */
+	struct family_set fams;	/* of in->mech (fams.w NULL: none) */
+	int topfam[MAX_PANELS], top[MAX_PANELS], ntop;
 	double wx0, wx1, wy0, wy1;	/* the drawn extent, m */
 	double wsize;			/* the blocks' larger extent, m */
 	/* the convergence curve */

@@ -203,11 +203,51 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
 	if (in->mech)
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
+	if (in->mech && c->fams.w)
+		fprintf(f, "| mechanism families (same moving blocks) | %d |\n",
+			c->fams.nfam);
 	if (c->m)
 		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
 			t->tests_source ? t->tests_source : "?");
 	if (t->note)
 		fprintf(f, "\n%s\n", t->note);
+}
+
+/* The most frequent families (those of Fig. 6), each with its blocks
+ * and its most frequent mechanism's moving joints, named by their
+ * blocks (docs/statistics.md, "Mechanism families"). */
+static void md_families(FILE *f, const struct rctx *c)
+{
+	const struct tally *t = c->in->mech;
+	if (!t || !c->fams.w || c->ntop == 0)
+		return;
+	fprintf(f, "\n## Mechanism families\n\n"
+		"Mechanisms grouped by the set of blocks that move "
+		"(docs/statistics.md), the most frequent first; %d famil%s of "
+		"%d distinct mechanisms in %ld accepted samples.\n\n"
+		"| # | share | samples | load%s%s%s | moving blocks | mechanisms "
+		"| the most frequent one: how it comes away; its moving joints "
+		"|\n"
+		"|---|---|---|---|---|---|---|\n", c->fams.nfam,
+		c->fams.nfam == 1 ? "y" : "ies", t->nmech, t->accepted,
+		*c->unit ? " (" : "", *c->unit ? c->unit + (*c->unit == ' ') :
+		"", *c->unit ? ")" : "");
+	for (int i = 0; i < c->ntop; i++) {
+		const struct family *fa = &c->fams.fam[c->topfam[i]];
+		char name[256], j[400], how[160];
+		const char *joint = t->mech[c->top[i]].joint;
+		family_name(&c->fams, fa->moving, name, sizeof name);
+		family_motion(&c->fams, joint, fa->moving, how, sizeof how);
+		family_fmt_joints(c->w, joint, j, sizeof j);
+		char *nm = md_clean(name), *jm = md_clean(j);
+		fprintf(f, "| %d | %.1f %% | %ld | %.5g to %.5g | %s | %d | %s; "
+			"%s |\n", i + 1, 100.0 * (double)fa->count /
+			(double)(t->accepted ? t->accepted : 1), fa->count,
+			fa->lam_lo, fa->lam_hi, nm ? nm : "", fa->nmech, how,
+			jm ? jm : "");
+		free(nm);
+		free(jm);
+	}
 }
 
 static void md_figures(FILE *f, const struct md_figure *fig, int nfig,
@@ -269,6 +309,7 @@ enum sw_status report_md_write(const struct rctx *c,
 	md_ks(f, c);
 	md_single(f, c);
 	md_run(f, c, &t);
+	md_families(f, c);
 	md_figures(f, fig, nfig, o);
 	free(t.name);
 	free(t.wall_path);

@@ -99,6 +99,22 @@ static int find_or_add(struct tally *t, const char *joint, const double *vel,
 	return t->nmech++;
 }
 
+int tally_find(const struct tally *t, const char *joint)
+{
+	size_t len = (size_t)t->nifaces;
+	if (t->hashcap == 0)
+		return -1;
+	uint64_t s = fnv1a(joint, len);
+	int i = (int)(s & (uint64_t)(t->hashcap - 1));
+	while (t->hash[i] >= 0) {
+		int k = t->hash[i];
+		if (!memcmp(t->mech[k].joint, joint, len))
+			return k;
+		i = (i + 1) & (t->hashcap - 1);
+	}
+	return -1;
+}
+
 void tally_add(struct tally *t, const struct record *it)
 {
 	t->samples++;

@@ -55,6 +55,7 @@
 #include "slipwall/sample.h"
 #include "slipwall/stats.h"
 #include "slipwall/sys.h"
+#include "slipwall/family.h"
 #include "slipwall/tally.h"
 #include "slipwall/undo.h"
 #include "slipwall/wall.h"
@@ -80,6 +81,9 @@ struct tui_run {
 	struct runlog *log;	/* NULL if the file could not be made */
 	char csv[PATH_MAX];
 	struct tally tally;
+	/* the tally's mechanism families (docs/statistics.md): a cache,
+	 * brought up to date where it is read (tui_run_families) */
+	struct family_set *fams;
 	char *latest_joint;	/* mechanism of the latest accepted sample */
 	double *latest_vel;
 	long latest_index;	/* -1: none yet */
@@ -361,6 +365,16 @@ void tui_solve_free(struct tui_solve *s);
 
 /* tui_wall.c */
 void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w);
+/* The run's mechanism families, up to date with its tally (NULL: no
+ * run). */
+struct family_set *tui_run_families(const struct tui *t);
+/* The family of mechanism joint: its place among the most frequent
+ * families (m/M's number), 1 .. *n, or 0 when the tally does not have
+ * it. */
+int tui_family_rank(const struct tui *t, const char *joint, int *n);
+/* m/M's family on show (0: none, the latest mechanism): its index in
+ * tui_run_families, or -1. */
+int tui_family_shown(const struct tui *t);
 /* The mechanism shown: joint states and velocities, label; 0 if none. */
 int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w);

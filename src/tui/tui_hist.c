@@ -27,8 +27,8 @@
  *
  * With the sample browser open (tui_browse.c), the bin of the shown
  * sample's load is lit (the load's colour, or reverse video); with it
- * closed and a mechanism of the tally on show (m/M), the bins of that
- * mechanism's kept samples are lit the same way (tui_browse_lit_bins).
+ * closed and a mechanism family of the tally on show (m/M), the bins of
+ * that family's kept samples are lit the same way (tui_hist_lit_family).
  */
 #include <math.h>
 #include <stdio.h>
@@ -202,6 +202,28 @@ static void tui_hist_paint(struct tui *t, int y0, int x0, int rows, int nb,
 	attroff(pattr);
 }
 
+/* m/M's lit bins: the kept samples (tui_browse.c) of the family on show,
+ * each found by its mechanism in the tally (one hash of its joint
+ * states). */
+static void tui_hist_lit_family(const struct tui *t, double lo, double width,
+				int nb, unsigned char *lit)
+{
+	const struct family_set *fs = tui_run_families(t);
+	int f = tui_family_shown(t);
+	if (!fs || f < 0)
+		return;
+	struct tui_browse_sample s;
+	long first = tui_browse_first(t);
+	for (long i = first; first >= 0 && i < t->browse.next; i++) {
+		if (!tui_browse_sample_at(t, i, &s) ||
+		    s.status != SAMPLE_ACCEPTED)
+			continue;
+		int m = tally_find(&t->run.tally, s.joint);
+		if (m >= 0 && m < fs->nseen && fs->of[m] == f)
+			lit[stats_bin(tui_load(t, s.lam), lo, width, nb)] = 1;
+	}
+}
+
 /* The bins (Freedman-Diaconis, whole columns each) and the bars;
  * returns the columns used, or -1. */
 static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
@@ -246,7 +268,7 @@ static int tui_hist_bars(struct tui *t, int y0, int x0, int rows, int w,
 		lit[stats_bin(tui_load(t, bs.lam), a->lo, width, nb)] = 1;
 	else if (!t->browse.open && t->mech_sel > 0 &&
 		 tui_wall_mechanism(t, &joint, &vel, label, sizeof label, 0))
-		tui_browse_lit_bins(t, joint, a->lo, width, nb, lit);
+		tui_hist_lit_family(t, a->lo, width, nb, lit);
 	tui_hist_paint(t, y0, x0, rows, nb, cpb, count, pcount, maxc, lit);
 	free(count);
 	free(pcount);

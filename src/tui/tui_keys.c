@@ -66,11 +66,13 @@ static void tui_keys_target(struct tui *t, int ch)
 	tui_prompt(t, "sample target", buf, tui_keys_target_typed);
 }
 
-/* m, M: the next or the previous mechanism on show (0: the latest). */
+/* m, M: the next or the previous mechanism family on show (0: the
+ * latest mechanism). */
 static void tui_keys_mech(struct tui *t, int ch)
 {
-	int nmech = t->run.tally.nmech;
-	t->mech_sel = (t->mech_sel + (ch == 'm' ? 1 : nmech)) % (nmech + 1);
+	const struct family_set *fs = tui_run_families(t);
+	int nfam = fs ? fs->nfam : 0;
+	t->mech_sel = (t->mech_sel + (ch == 'm' ? 1 : nfam)) % (nfam + 1);
 }
 
 /* The block cursor is within a block's size of the wall. */
@@ -194,7 +196,8 @@ static const struct tui_key tui_keys[] = {
 	{.ch = {'G'}, .name = "G", .fn = tui_knobs_key_design,
 	 .help = "design load (prompt; 0: none): the pane shows P(lambda <= it)"},
 	{.ch = {'m', 'M'}, .name = "m / M", .fn = tui_keys_mech,
-	 .help = "next / previous mechanism: latest, then by frequency",
+	 .help = "next / previous mechanism family (the same moving\n"
+		 "blocks): the latest mechanism, then by frequency",
 	 BAR(MAIN, "m mech", 11)},
 	{.ch = {'H'}, .name = "H", .next = TUI_SCREEN_HISTORY,
 	 .help = "run history: one row per run of the session; Space marks\n"

@@ -118,6 +118,8 @@ void tui_run_start(struct tui *t)
 	r->latest_joint = calloc((size_t)w->nifaces + 1, 1);
 	r->latest_vel = calloc(3 * (size_t)w->nblocks + 1, sizeof(double));
 	tally_init(&r->tally, w);
+	r->fams = sw_xmalloc(sizeof *r->fams);
+	family_set_init(r->fams, w);
 	tui_browse_reset(t);
 	mc_config_default(&r->cfg, w);
 	r->cfg.opts.lp = tui_lp;
@@ -143,6 +145,14 @@ void tui_run_start(struct tui *t)
 	tui_run_spawn(t);
 }
 
+struct family_set *tui_run_families(const struct tui *t)
+{
+	struct family_set *fs = t->run.fams;
+	if (fs)
+		family_update(fs, &t->run.tally);
+	return fs;
+}
+
 void tui_run_end(struct tui *t)
 {
 	struct tui_run *r = &t->run;
@@ -158,6 +168,9 @@ void tui_run_end(struct tui *t)
 		t->run_ended(t);	/* the history's row (tui_main) */
 	run_free(&r->core);
 	tally_free(&r->tally);
+	family_set_free(r->fams);
+	free(r->fams);
+	r->fams = NULL;
 	tui_browse_free(t);
 	free(r->latest_joint);
 	free(r->latest_vel);

@@ -318,8 +318,10 @@ static void tui_stats_tail(struct tui *t, struct tui_lines *p)
 			tui_stats_text(p, line);
 		}
 	}
-	snprintf(line, sizeof line, "%d mechanism%s; m/M shows them", ta->nmech,
-		 tui_s(ta->nmech));
+	const struct family_set *fs = tui_run_families(t);
+	int nf = fs ? fs->nfam : 0;
+	snprintf(line, sizeof line, "%d mechanism%s in %d famil%s; m/M shows "
+		 "them", ta->nmech, tui_s(ta->nmech), nf, nf == 1 ? "y" : "ies");
 	p->opt = 3;
 	tui_stats_text(p, line);
 	p->opt = 0;

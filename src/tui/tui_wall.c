@@ -1,7 +1,8 @@
 /*
  * tui_wall.c - the wall pane: the blocks drawn to fit, the supports, the
- * live load, and the mechanism on show (the latest accepted one, or one
- * of the most frequent, chosen with m/M).
+ * live load, and the mechanism on show (the latest accepted one, or, chosen
+ * with m/M, the most frequent mechanism of one of the most frequent
+ * mechanism families: docs/statistics.md, "Mechanism families").
  *
  * Drawing goes through a canvas of cells.  Block edges are mapped to the
  * nearest cell centres; an axis-parallel edge sets connection bits
@@ -329,40 +330,73 @@ static void tui_wall_holes(const struct tui *t, struct tui_canvas *cv)
 		}
 }
 
+int tui_family_shown(const struct tui *t)
+{
+	struct family_set *fs = tui_run_families(t);
+	if (t->mech_sel <= 0 || !fs || fs->nfam == 0)
+		return -1;
+	int *idx = malloc(sizeof(int) * (size_t)fs->nfam);
+	int n = idx ? family_top(fs, idx, fs->nfam) : 0;
+	int k = t->mech_sel - 1, f = k < n ? idx[k] : -1;
+	free(idx);
+	return f;
+}
+
+int tui_family_rank(const struct tui *t, const char *joint, int *n)
+{
+	struct family_set *fs = tui_run_families(t);
+	*n = fs ? fs->nfam : 0;
+	int m = fs ? tally_find(&t->run.tally, joint) : -1;
+	if (m < 0 || m >= fs->nseen)
+		return 0;
+	int *idx = malloc(sizeof(int) * (size_t)fs->nfam);
+	int nf = idx ? family_top(fs, idx, fs->nfam) : 0, k = 0;
+	for (int i = 0; i < nf && !k; i++)
+		if (idx[i] == fs->of[m])
+			k = i + 1;
+	free(idx);
+	return k;
+}
+
 int tui_wall_mechanism(const struct tui *t, const char **joint,
 		       const double **vel, char *label, size_t len, int w)
 {
 	const struct tui_run *r = &t->run;
 	const struct tally *ta = &r->tally;
-	if (t->mech_sel > 0 && ta->nmech > 0) {
-		int *idx = malloc(sizeof(int) * (size_t)ta->nmech);
-		int n = idx ? tally_top(ta, idx, ta->nmech) : 0;
-		int k = t->mech_sel - 1;
-		if (k < n) {
-			const struct tally_mech *mm = &ta->mech[idx[k]];
-			*joint = mm->joint;
-			*vel = mm->vel;
-			/* the long form if it fits the pane, else shorter;
-			 * the numbers whole */
-			double pc = ta->accepted ? 100.0 * (double)mm->count /
-							   (double)ta->accepted
-						 : 0.0;
-			const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
-			char pcs[32];
-			tui_pct(pcs, sizeof pcs, pc / 100);
-			for (int form = 0; form < 3; form++) {
-				snprintf(label, len,
-					 "mechanism %d/%d: %s%s (%s %.*g..%.*g%s)",
-					 k + 1, n, pcs, form == 0 ? " of accepted" : "",
-					 tui_lam(t), form == 2 ? 3 : 4, mm->lam_lo,
-					 form == 2 ? 3 : 4, mm->lam_hi, unit);
-				if (tui_cols(label) <= w)
-					break;
-			}
-			free(idx);
-			return 1;
+	int f = tui_family_shown(t);
+	if (f >= 0) {
+		/* m/M's family (docs/statistics.md, "Mechanism families"),
+		 * drawn by its most frequent mechanism */
+		const struct family_set *fs = r->fams;
+		const struct family *fa = &fs->fam[f];
+		int mk;
+		family_mechs(fs, ta, f, &mk, 1);
+		const struct tally_mech *mm = &ta->mech[mk];
+		*joint = mm->joint;
+		*vel = mm->vel;
+		char name[256];
+		family_name(fs, fa->moving, name, sizeof name);
+		const char *what = strstr(name, ": ");
+		/* the long form if it fits the pane, else shorter; the
+		 * numbers whole */
+		double pc = ta->accepted ? 100.0 * (double)fa->count /
+					   (double)ta->accepted : 0.0;
+		const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
+		char pcs[32];
+		tui_pct(pcs, sizeof pcs, pc / 100);
+		for (int form = 0; form < 5; form++) {
+			const char *nm = form == 0 ? name : form == 1 && what ?
+					 what + 2 : "";
+			snprintf(label, len,
+				 "family %d/%d: %s%s (%s %.*g..%.*g%s)%s%s",
+				 t->mech_sel, fs->nfam, pcs,
+				 form < 3 ? " of accepted" : "", tui_lam(t),
+				 form == 4 ? 3 : 4, fa->lam_lo, form == 4 ? 3 : 4,
+				 fa->lam_hi, unit, *nm ? ", " : "", nm);
+			if (tui_cols(label) <= w)
+				break;
 		}
-		free(idx);
+		return 1;
 	}
 	if (r->latest_index >= 0) {
 		*joint = r->latest_joint;
@@ -456,18 +490,23 @@ static void tui_wall_browse_label(const struct tui *t,
 				  const struct tui_browse_sample *s,
 				  char *label, size_t len, int w)
 {
-	char lam[48] = "", mech[48] = "";
+	char lam[48] = "", mech[96] = "";
 	const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
-	int n, k = 0;
-	if (s->status == SAMPLE_ACCEPTED)
+	int n, k = 0, nf = 0, kf = 0;
+	if (s->status == SAMPLE_ACCEPTED) {
 		k = tui_browse_mech_rank(t, s->joint, &n);
-	for (int form = 0; form < 3; form++) {
+		kf = tui_family_rank(t, s->joint, &nf);
+	}
+	for (int form = 0; form < 4; form++) {
 		if (s->status == SAMPLE_ACCEPTED || isfinite(s->lam))
 			snprintf(lam, sizeof lam, " %s%s %.*g%s", tui_lam(t),
-				 form < 2 ? "_min" : "", form == 2 ? 3 : 4,
+				 form < 3 ? "_min" : "", form == 3 ? 3 : 4,
 				 tui_load(t, s->lam), unit);
-		if (k > 0)
-			snprintf(mech, sizeof mech, form == 0 ? ", mechanism %d/%d"
+		if (k > 0 && kf > 0 && form == 0)
+			snprintf(mech, sizeof mech, ", mechanism %d/%d, family "
+				 "%d/%d", k, n, kf, nf);
+		else if (k > 0)
+			snprintf(mech, sizeof mech, form < 2 ? ", mechanism %d/%d"
 				 : " mech %d/%d", k, n);
 		snprintf(label, len, "sample %ld: %s%s%s", s->index + 1,
 			 sample_status_name(s->status), lam, mech);

@@ -81,7 +81,7 @@ check "the replay gave the file's loads" grep -q "gave the same loads" "$tmp/r2/
 check "without tests: said in report.md" grep -q "No experimental loads" "$tmp/r2/report.md"
 nm=$(python3 -c 'import json,sys; print(len(json.load(open(sys.argv[1]))["mechanisms"]))' "$tmp/run40.json")
 check "Fig. 6 counts the mechanisms run found ($nm)" \
-	grep -q "($nm distinct in 40 accepted samples)" "$tmp/r2/mechanisms.svg"
+	grep -q "of $nm distinct in 40 accepted samples)" "$tmp/r2/mechanisms.svg"
 check "the seed is not claimed" grep -q "not recorded in the samples file" "$tmp/r2/report.md"
 
 # ---- usage -------------------------------------------------------------------------

@@ -152,10 +152,10 @@ else
 fi
 wait_samples w 5 20
 T send-keys -t t:w m
-if wait_for w 'mechanism 1/[0-9]+: [0-9.]+ % of accepted' 5; then
-	ok "m shows the most frequent mechanism with its frequency"
+if wait_for w 'family 1/[0-9]+: [0-9.]+ % of accepted' 5; then
+	ok "m shows the most frequent mechanism family with its frequency"
 else
-	not_ok "m shows the most frequent mechanism" "$(screen w)"
+	not_ok "m shows the most frequent mechanism family" "$(screen w)"
 fi
 T send-keys -t t:w R
 if wait_for w 'write report to directory:' 5; then

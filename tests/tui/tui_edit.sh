@@ -125,7 +125,7 @@ else
 	not_ok "hjkl move the block cursor and back, no new run ($c0 -> $c1 -> $c2, run $r0 -> $(runno w))" "$(screen w)"
 fi
 T send-keys -t t:w Right Tab
-wait_for w '^latest mechanism|^no mechanism|^mechanism' 5
+wait_for w '^latest mechanism|^no mechanism|^mechanism|^family' 5
 T send-keys -t t:w Tab
 wait_for w '^cursor \(' 5
 c3=$(cursor)

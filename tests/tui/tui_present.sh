@@ -12,7 +12,7 @@
 #   shown sample within 5 s; A pauses it (the number stays 3.5 s) and
 #   resumes it; after Esc (the browser closed) A opens it and plays on;
 #   V again brings the statistics back;
-# - m lights the bins of its mechanism's samples in the histogram: red
+# - m lights the bins of its mechanism family's samples in the histogram: red
 #   bars with colours (capture-pane -e), reverse video with NO_COLOR;
 #   none before m, none again back at the latest mechanism (M).
 #
@@ -200,7 +200,7 @@ lit_a() {	# reverse video in the panes (NO_COLOR)
 for w in u a; do
 	b0=$(lit_$w)
 	T send-keys -t "t:$w" m
-	wait_for "$w" '^mechanism 1/' 5
+	wait_for "$w" '^family 1/' 5
 	sleep 0.3
 	b1=$(lit_$w)
 	T send-keys -t "t:$w" M
@@ -208,9 +208,9 @@ for w in u a; do
 	sleep 0.3
 	b2=$(lit_$w)
 	if [ "$b0" -eq 0 ] && [ "$b1" -gt 0 ] && [ "$b2" -eq 0 ]; then
-		ok "$w: m lights mechanism 1's bins ($b1 lit), M back: none"
+		ok "$w: m lights family 1's bins ($b1 lit), M back: none"
 	else
-		not_ok "$w: m lights mechanism 1's bins" "before $b0, m $b1, M $b2"
+		not_ok "$w: m lights family 1's bins" "before $b0, m $b1, M $b2"
 	fi
 done
 T send-keys -t t:u q

@@ -111,8 +111,8 @@ wait_samples c 5 20
 wait_samples nc 5 20
 T send-keys -t t:c m
 T send-keys -t t:nc m
-wait_for c '^mechanism 1/' 5
-wait_for nc '^mechanism 1/' 5
+wait_for c '^family 1/' 5
+wait_for nc '^family 1/' 5
 if colour_sgr c; then
 	ok "without NO_COLOR the pane has colour escapes"
 else

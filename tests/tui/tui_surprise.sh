@@ -124,7 +124,7 @@ else
 fi
 T send-keys -t t:w q
 wait_for w '^ slipwall \|' 5
-# 300 samples: the rarest mechanism (M from the latest) is a share of
+# 300 samples: the rarest mechanism family (M from the latest) is a share of
 # 300, at least 0.3 %: never "0 %"; nothing in scientific notation
 T send-keys -t t:w n C-u 300 Enter r
 wait_run w 2 done 120
@@ -132,7 +132,7 @@ T send-keys -t t:w M
 sleep 0.5
 label=$(screen w | sed -n 2p)
 if printf '%s\n' "$label" |
-	grep -qE 'mechanism ([0-9]+)/\1: ([1-9][0-9]*|0\.[1-9]|[0-9]+\.[0-9]) % ' &&
+	grep -qE 'family ([0-9]+)/\1: ([1-9][0-9]*|0\.[1-9]|[0-9]+\.[0-9]) % ' &&
    ! screen w | grep -qE '[0-9]e[-+][0-9]'; then
 	ok "the rarest of 300 is not '0 %' (${label%%(*}); no scientific notation"
 else

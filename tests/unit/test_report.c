@@ -303,7 +303,9 @@ static struct wall *load_demo(void)
 
 /* A tally of n accepted samples spread over three made-up mechanisms in
  * the proportions 1/2, 3/10, 1/5 (samples in that order), plus two
- * rejections. */
+ * rejections.  Mechanism k moves one free block, every joint around it
+ * in state "sho"[k], so the three are three families (Fig. 6 draws
+ * families: docs/statistics.md). */
 static void fake_tally(struct tally *t, const struct wall *w, const double *lam,
 		       long n)
 {
@@ -319,8 +321,10 @@ static void fake_tally(struct tally *t, const struct wall *w, const double *lam,
 		memset(it.joint, JOINT_CLOSED, (size_t)w->nifaces);
 		it.joint[w->nifaces] = 0;
 		memset(it.vel, 0, sizeof(double) * 3 * (size_t)w->nblocks);
-		it.joint[k] = "sho"[k];
-		it.joint[k + 3] = JOINT_SLIDES;
+		for (int f = 0; f < w->nifaces; f++)
+			if (w->ifaces[f].a == freeb[k] ||
+			    w->ifaces[f].b == freeb[k])
+				it.joint[f] = "sho"[k];
 		it.vel[3 * freeb[k]] = 1;
 		it.vel[3 * freeb[k] + 2] = 0.3 * k;
 		it.index = i;
