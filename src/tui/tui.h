@@ -100,6 +100,7 @@ struct tui_browse {
 	long cap;		/* slots; 0: none could be kept */
 	long next;		/* the index of the next sample pushed */
 	int nifaces, nblocks, has_mu;
+	int pick;		/* the joint picked with < > (1 first), 0: none */
 	double *lam;		/* cap: lambda_min (not scaled) */
 	signed char *status;	/* cap: enum sample_status */
 	char *joint;		/* cap * (nifaces + 1) */
@@ -411,6 +412,10 @@ void tui_browse_lit_bins(const struct tui *t, const char *joint, double lo,
 void tui_browse_key_toggle(struct tui *t, int ch);	/* S, Esc */
 void tui_browse_key_step(struct tui *t, int ch);	/* [ ] Home End */
 void tui_browse_key_pair(struct tui *t, int ch);	/* = */
+void tui_browse_key_joint(struct tui *t, int ch);	/* < > */
+/* A click on the wall with the browser open: the joint nearest the
+ * point (wall coordinates) is picked. */
+void tui_browse_pick_at(struct tui *t, double x, double y);
 
 /* tui_present.c: the presentation mode */
 /* The main screen's panes in presentation mode, rows top .. bottom-1. */

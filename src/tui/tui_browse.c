@@ -19,6 +19,13 @@
  * The mechanism view (m/M, browser closed) lights the bins of the kept
  * samples of the mechanism on show (tui_browse_lit_bins, tui_hist.c).
  *
+ * The joint picked (< >): one interface of the wall, 1 first as the
+ * samples file's xa_k, xb_k and mu_k columns count them; the wall pane
+ * marks it on the sketch and its legend gives the shown sample's
+ * friction μ there (tui_wall.c), so that a joint can be pointed at and
+ * its draw read (docs/workbench.md, "The sample browser").  It stays
+ * picked across runs while the wall has that many joints.
+ *
  * The pair (=): among the kept accepted samples with the shown one's
  * joint states (the same mechanism), the ones of the least and of the
  * largest load; = shows one, then the other.
@@ -77,6 +84,8 @@ void tui_browse_reset(struct tui *t)
 	b->nblocks = w->nblocks;
 	b->has_mu = w->mu_cov > 0;
 	b->at = LONG_MAX;	/* the latest, until a key chooses one */
+	if (b->pick > w->nifaces)
+		b->pick = 0;
 	size_t per = sizeof(double) + 1 + (size_t)w->nifaces + 1 +
 		     (2 + (b->has_mu ? 1 : 0)) * sizeof(double) * (size_t)w->nifaces +
 		     3 * sizeof(double) * (size_t)w->nblocks;
@@ -165,7 +174,7 @@ void tui_browse_key_toggle(struct tui *t, int ch)
 	if (b->cap <= 0)
 		tui_message(t, 1, "sample browser: no memory to keep samples");
 	else
-		tui_message(t, 0, "sample browser: [ ] step, Home End, = pair, "
+		tui_message(t, 0, "sample browser: [ ] step, Home End, = pair, < > joint, "
 			    "S or Esc closes");
 }
 
@@ -258,6 +267,46 @@ void tui_browse_key_pair(struct tui *t, int ch)
 			    "%ld) .. %.4g%s (sample %ld); = alternates", k, n,
 			    tui_lam(t), tui_load(t, llo), unit, lo + 1,
 			    tui_load(t, lhi), unit, hi + 1);
+}
+
+void tui_browse_key_joint(struct tui *t, int ch)
+{
+	struct tui_browse *b = &t->browse;
+	int n = t->w->nifaces;
+	if (!b->open)
+		tui_browse_key_toggle(t, 'S');
+	if (n <= 0) {
+		tui_message(t, 1, "joint: the wall has no joints");
+		return;
+	}
+	/* from none: > the first joint, < the last; around at the ends */
+	if (ch == '>')
+		b->pick = b->pick >= n ? 1 : b->pick + 1;
+	else
+		b->pick = b->pick <= 1 ? n : b->pick - 1;
+}
+
+void tui_browse_pick_at(struct tui *t, double x, double y)
+{
+	const struct wall *w = t->w;
+	double best = INFINITY;
+	int k = -1;
+	for (int i = 0; i < w->nifaces; i++) {
+		const struct wall_interface *f = &w->ifaces[i];
+		double dx = f->p2[0] - f->p1[0], dy = f->p2[1] - f->p1[1];
+		double l2 = dx * dx + dy * dy, u = 0;
+		if (l2 > 0)
+			u = fmin(1, fmax(0, ((x - f->p1[0]) * dx +
+					     (y - f->p1[1]) * dy) / l2));
+		double d = hypot(x - f->p1[0] - u * dx, y - f->p1[1] - u * dy);
+		if (d < best) {
+			best = d;
+			k = i;
+		}
+	}
+	if (k < 0)
+		return;
+	t->browse.pick = k + 1;
 }
 
 int tui_browse_sample_at(const struct tui *t, long i,

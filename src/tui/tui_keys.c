@@ -117,7 +117,8 @@ static void tui_keys_tab(struct tui *t, int ch)
 }
 
 /* A click on the wall: the left button selects the block under it (the
- * block cursor goes there), the right one moves the load to the nearest
+ * block cursor goes there; with the sample browser open, the joint
+ * nearest it: tui_browse.c), the right one moves the load to the nearest
  * place of the outline (an edit, as the arrows make). */
 static void tui_keys_mouse(struct tui *t, int ch)
 {
@@ -127,7 +128,10 @@ static void tui_keys_mouse(struct tui *t, int ch)
 	if (getmouse(&ev) != OK || !tui_wall_point(t, ev.y, ev.x, &x, &y) ||
 	    ev.x >= t->cols * 55 / 100)
 		return;
-	if (ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
+	if ((ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) &&
+	    t->browse.open) {
+		tui_browse_pick_at(t, x, y);	/* the joint there */
+	} else if (ev.bstate & (BUTTON1_PRESSED | BUTTON1_CLICKED)) {
 		int k = wedit_block_at(t->w, x, y);
 		if (k < 0) {
 			tui_message(t, 0, "no block there");
@@ -179,11 +183,11 @@ static const struct tui_key tui_keys[] = {
 	 .help = "this help (Tab: what the numbers mean; any other key\n"
 		 "returns)",
 	 BAR(MAIN, "? help", 2), BAR(CURSOR, "? help", 6),
-	 BAR(BROWSE, "? help", 6), BAR(PRESENT, "? help", 4)},
+	 BAR(BROWSE, "? help", 7), BAR(PRESENT, "? help", 4)},
 	{.ch = {'q', 'Q'}, .name = "q, Q", .fn = tui_keys_quit,
 	 .help = "quit: print the history and every file written",
 	 BAR(MAIN, "q quit", 1), BAR(CURSOR, "q quit", 7),
-	 BAR(BROWSE, "q quit", 5), BAR(PRESENT, "q quit", 5)},
+	 BAR(BROWSE, "q quit", 6), BAR(PRESENT, "q quit", 5)},
 	{.ch = {' ', 'p'}, .name = "space, p", .fn = tui_keys_pause,
 	 .help = "pause / resume sampling (resume continues the same run)",
 	 BAR(MAIN, "spc pause", 3)},
@@ -218,6 +222,10 @@ static const struct tui_key tui_keys[] = {
 	 .help = "sample browser: the same mechanism's least and largest\n"
 		 "load, one then the other",
 	 BAR(BROWSE, "= pair", 4)},
+	{.ch = {'<', '>'}, .name = "< / >", .fn = tui_browse_key_joint,
+	 .help = "sample browser: previous / next joint, marked on the wall;\n"
+		 "the legend gives its friction in the sample shown",
+	 BAR(BROWSE, "</> joint", 5)},
 	{.ch = {KEY_F(5), 'V'}, .name = "F5, V", .fn = tui_present_key_toggle,
 	 .help = "presentation mode on / off: wall, histogram, the sample's\n"
 		 "load and p05 in large digits, auto-play",
@@ -285,8 +293,9 @@ static const struct tui_key tui_keys[] = {
 	{.ch = {12}, .name = "Ctrl-L", .fn = tui_keys_redraw,
 	 .help = "redraw"},
 	{.ch = {KEY_MOUSE}, .name = "mouse", .fn = tui_keys_mouse,
-	 .help = "left click: select the block under it (block cursor);\n"
-		 "right click: move the load to the nearest face there"},
+	 .help = "left click: select the block under it (block cursor; in\n"
+		 "the sample browser: pick the nearest joint); right click:\n"
+		 "move the load to the nearest face there"},
 	{.help = NULL},
 
 	{.help = "In a prompt:"},

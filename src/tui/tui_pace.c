@@ -6,11 +6,12 @@
  * worker takes at least as long as its oldest sample" only grows while
  * the first samples run ("> 53 s", "> 14:08", "> 35:10" when the run
  * takes five hours).  So the pane shows an estimate instead: the
- * a-priori time of a sample (mc_sample_seconds) counted as one sample
+ * a-priori time of a sample (mc_sample_seconds) counted as w samples
  * already taken, blended with the worker-seconds the finished samples
  * took:
  *
- *   s    = (e0 + (E T - A)) / (1 + d)     seconds of one sample
+ *   w    = max(0, 1 - d / P),  P = min(T, N)
+ *   s    = (w e0 + (E T - A)) / (w + d)   seconds of one sample
  *   left = max(0, (N - d) s - min(A, b s)) / min(T, N - d)
  *
  * e0 the a-priori seconds of a sample, E the seconds this run has
@@ -21,6 +22,17 @@
  * total E + left stays where it was: it moves only when a sample ends
  * (towards the measured time) or when the samples in progress have
  * outlived s (it was too low).
+ *
+ * Why w fades: e0 was fitted to a worker's first sample with its
+ * workspace's set-up on a loaded machine (mc.c), which on
+ * walls/large.yaml is 10 to 40 times a later sample.  Counted as one
+ * sample for the whole run it kept the total several times too long
+ * for the first hundreds of samples (by docs/performance.md's figures,
+ * a 23 s set-up and 9.2 s a sample on an idle core: about 4 times the
+ * true total after 75 s on two threads, the bound of
+ * tests/tui/tui_pace_large.sh being 3); once every worker
+ * has finished a sample (d >= P), the measured time, set-ups included,
+ * is the better figure, and it only falls as they are amortised.
  */
 #include <math.h>
 
@@ -46,7 +58,9 @@ int tui_pace_left(struct tui *t, double *left, double *total)
 	double spent = E * T - pg.total;
 	if (!(spent > 0))
 		spent = 0;
-	double s = (e0 + spent) / (1 + d);
+	double P = fmin(T, N);
+	double w = d < P ? 1 - d / P : 0;
+	double s = (w * e0 + spent) / (w + d);
 	double work = (N - d) * s - fmin(pg.total, pg.busy * s);
 	double par = fmin(T, N - d);
 	*left = fmax(0, work) / (par > 0 ? par : 1);

@@ -484,6 +484,33 @@ static void tui_wall_contacts(const struct tui *t, struct tui_canvas *cv,
 	}
 }
 
+/* The browser's picked joint (< >): its cells in reverse video, and a
+ * diamond at its middle unless a mark is there already. */
+static void tui_wall_pick(const struct tui *t, struct tui_canvas *cv,
+			  const struct tui_map *m, int k)
+{
+	const struct wall_interface *f = &t->w->ifaces[k];
+	int c1 = (int)lround(tui_wall_col(m, f->p1[0]));
+	int r1 = (int)lround(tui_wall_row(m, f->p1[1]));
+	int c2 = (int)lround(tui_wall_col(m, f->p2[0]));
+	int r2 = (int)lround(tui_wall_row(m, f->p2[1]));
+	int n = abs(c2 - c1) > abs(r2 - r1) ? abs(c2 - c1) : abs(r2 - r1);
+	for (int j = 0; j <= n; j++) {
+		int c = n ? c1 + (c2 - c1) * j / n : c1;
+		int r = n ? r1 + (r2 - r1) * j / n : r1;
+		if (!tui_wall_in(cv, c, r))
+			continue;
+		int i = r * cv->w + c;
+		if (!cv->glyph[i] && !cv->conn[i])
+			cv->glyph[i] = " ";
+		cv->attr[i] |= A_REVERSE | A_BOLD;
+	}
+	int c = (c1 + c2) / 2, r = (r1 + r2) / 2;
+	if (tui_wall_in(cv, c, r) && (!cv->glyph[r * cv->w + c] ||
+				      !strcmp(cv->glyph[r * cv->w + c], " ")))
+		cv->glyph[r * cv->w + c] = t->utf8 ? "◆" : "@";
+}
+
 /* The browser's label: the sample, its status, its load, its
  * mechanism's number (m/M's), in the longest form that fits. */
 static void tui_wall_browse_label(const struct tui *t,
@@ -515,18 +542,47 @@ static void tui_wall_browse_label(const struct tui *t,
 	}
 }
 
-/* The browser's legend: the joints' friction (random friction), the
- * contact marker, the joint states of the sample. */
+/* The picked joint's state in the sample, in words ("" when closed or
+ * the sample has no mechanism). */
+static const char *tui_wall_state(int c)
+{
+	switch (c) {
+	case JOINT_SLIDES: return " slides";
+	case JOINT_HINGES: return " hinges";
+	case JOINT_HINGE_SLIDES: return " hinges+slides";
+	case JOINT_OPENS: return " opens";
+	default: return "";
+	}
+}
+
+/* The browser's legend: the picked joint (< >) and its friction in
+ * the sample, else the joints' least and largest friction (random
+ * friction); the contact marker; the joint states of the sample.  A
+ * picked joint's part comes whole; what follows it only if it fits in
+ * w columns. */
 static void tui_wall_browse_legend(const struct tui *t,
 				   const struct tui_browse_sample *s,
-				   char *buf, size_t len)
+				   char *buf, size_t len, int w)
 {
-	const struct wall *w = t->w;
-	int n = 0;
-	n += snprintf(buf, len, "x contact");
-	if (s->mu && w->nifaces > 0) {
+	const struct wall *wall = t->w;
+	int n = 0, k = t->browse.pick - 1;
+	if (k >= 0 && k < wall->nifaces) {
+		const struct wall_interface *f = &wall->ifaces[k];
+		n = snprintf(buf, len, "joint %d/%d %s|%s %s %s %.3g%s", k + 1,
+			     wall->nifaces, wall->blocks[f->a].id,
+			     wall->blocks[f->b].id, f->kind == JOINT_BED ? "bed"
+			     : f->kind == JOINT_HEAD ? "head" : "other",
+			     tui_mu(t), s->mu ? s->mu[k] : wall_iface_mu(wall, k),
+			     s->status == SAMPLE_ACCEPTED
+			     ? tui_wall_state(s->joint[k]) : "");
+		if ((size_t)n >= len || tui_cols(buf) + 11 > w)
+			return;
+		n += snprintf(buf + n, len - (size_t)n, "  ");
+	}
+	n += snprintf(buf + n, len - (size_t)n, "x contact");
+	if (s->mu && wall->nifaces > 0 && k < 0) {
 		double lo = INFINITY, hi = -INFINITY;
-		for (int i = 0; i < w->nifaces; i++) {
+		for (int i = 0; i < wall->nifaces; i++) {
 			lo = fmin(lo, s->mu[i]);
 			hi = fmax(hi, s->mu[i]);
 		}
@@ -676,6 +732,8 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 		tui_wall_mech(t, &cv, &m, joint, vel, moving);
 	if (browse)
 		tui_wall_contacts(t, &cv, &m, &bs);
+	if (browse && t->browse.pick > 0 && t->browse.pick <= wall->nifaces)
+		tui_wall_pick(t, &cv, &m, t->browse.pick - 1);
 	tui_wall_loads(t, &cv, &m);
 	if (t->cursor_mode)
 		tui_wall_glyph(&cv, (int)lround(tui_wall_col(&m, t->cur_x)),
@@ -698,7 +756,7 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 		}
 	if (browse) {
 		char legend[512];
-		tui_wall_browse_legend(t, &bs, legend, sizeof legend);
+		tui_wall_browse_legend(t, &bs, legend, sizeof legend, w);
 		tui_text(y0 + h - 1, x0, w, legend);
 	} else {
 		tui_text(y0 + h - 1, x0, w,
