@@ -404,10 +404,6 @@ long tui_browse_first(const struct tui *t);
 /* Sample i, kept (tui_browse_first .. browse.next - 1): 1, else 0. */
 int tui_browse_sample_at(const struct tui *t, long i,
 			 struct tui_browse_sample *s);
-/* The bins of nb, width from lo, that hold a kept accepted sample of the
- * mechanism joint: lit[b] = 1 (m/M's lit bins in the histogram). */
-void tui_browse_lit_bins(const struct tui *t, const char *joint, double lo,
-			 double width, int nb, unsigned char *lit);
 /* The browser's keys (tui_keys.c's table): */
 void tui_browse_key_toggle(struct tui *t, int ch);	/* S, Esc */
 void tui_browse_key_step(struct tui *t, int ch);	/* [ ] Home End */

@@ -17,7 +17,8 @@
  * write error, and costs no parsing of a file being written.
  *
  * The mechanism view (m/M, browser closed) lights the bins of the kept
- * samples of the mechanism on show (tui_browse_lit_bins, tui_hist.c).
+ * samples of the family on show (tui_hist.c reads them through
+ * tui_browse_sample_at).
  *
  * The joint picked (< >): one interface of the wall, 1 first as the
  * samples file's xa_k, xb_k and mu_k columns count them; the wall pane
@@ -317,19 +318,4 @@ int tui_browse_sample_at(const struct tui *t, long i,
 		return 0;
 	tui_browse_get(t, i, s);
 	return 1;
-}
-
-/* m/M's lit bins: the kept samples of the mechanism, as the browser's
- * one sample lights its bin (tui_hist.c).  Only the kept ones: on a
- * large wall the ring holds the latest samples of the run. */
-void tui_browse_lit_bins(const struct tui *t, const char *joint, double lo,
-			 double width, int nb, unsigned char *lit)
-{
-	struct tui_browse_sample s;
-	long first = tui_browse_first(t);
-	for (long i = first; first >= 0 && i < t->browse.next; i++) {
-		tui_browse_get(t, i, &s);
-		if (s.status == SAMPLE_ACCEPTED && !strcmp(s.joint, joint))
-			lit[stats_bin(tui_load(t, s.lam), lo, width, nb)] = 1;
-	}
 }
