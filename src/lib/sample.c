@@ -40,7 +40,6 @@
 
 #include "sample_ws.h"
 
-#define VW_TOL 1e-8
 /* The default SLP (slp_piece_path, docs/method.md "The SLP's answer"):
  * the joints' classification must hold this many iterations before the
  * piece's fixed point is solved (measured: 2 keeps the plain iteration's
@@ -207,6 +206,7 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->r = sw_xcalloc(3 * m + 1, sizeof(double));
 	ws->c2 = sw_xcalloc(5 * m + (size_t)ws->R + 2, sizeof(double));
 	ws->basic = sw_xcalloc(4 * m + 1, 1);
+	ws->kfree = sw_xcalloc((size_t)m + 1, 1);
 	ws->start = c->start;
 	sws_build(ws);
 	canonical_bases(ws);
@@ -270,6 +270,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->r);
 	free(ws->c2);
 	free(ws->basic);
+	free(ws->kfree);
 	for (int p = 0; p < ROLES; p++)
 		lp_basis_free(&ws->canon[p]);
 	sws_note_memory(ws);
@@ -319,11 +320,11 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 static void finish(struct sample_ws *ws, enum sample_status st,
 		   struct sample_result *r)
 {
-	double S = ws->st.S;
+	double S = ws->st.S, allow = 0;
 	if (st == SAMPLE_ACCEPTED) {
 		st = sws_lp_min(ws, LP_DUAL, r);
 		if (st == SAMPLE_ACCEPTED)
-			r->vw_residual = sws_virtual_work(ws, r->lambda_min);
+			r->vw_residual = sws_virtual_work(ws, r->lambda_min, &allow);
 		/* a residual above VW_TOL is the LP's precision (GLPK's
 		 * bound tolerance is 1e-7) as often as a wrong answer: it is
 		 * not believed from a warm start, but re-checked from the
@@ -334,16 +335,16 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 		 * way was measured and changes no status on Ferris & Tin-Loi
 		 * wall 2, seed 1, 1,000 samples from any start: not done, so
 		 * that an LP that fails costs its sample, test_faults.) */
-		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= VW_TOL)) {
+		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= allow)) {
 			lp_reset_basis(ws->lp[KIN]);
 			lp_reset_basis(ws->lp[AMIN]);
 			st = sws_mechanism(ws, r);
 			if (st == SAMPLE_ACCEPTED)
 				st = sws_lp_min(ws, LP_PRIMAL, r);
 			if (st == SAMPLE_ACCEPTED)
-				r->vw_residual = sws_virtual_work(ws, r->lambda_min);
+				r->vw_residual = sws_virtual_work(ws, r->lambda_min, &allow);
 		}
-		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= VW_TOL))
+		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= allow))
 			st = SAMPLE_NUMERICAL;
 	}
 	if (st == SAMPLE_ACCEPTED)
@@ -375,16 +376,11 @@ enum sample_status sample_pattern(struct sample_ws *ws,
 				  struct sample_result *r)
 {
 	begin(ws, d, 1, r);
-	struct lp *K = ws->lp[KIN];
-	for (int k = 0; k < ws->m; k++) {
-		for (int e = 0; e < 2; e++)
-			lp_set_row_bounds(K, 3 * k + e, 0,
-					  open[2 * k + e] ? HUGE_VAL : 0);
-		lp_set_col_bounds(K, KCOL_SP(ws, k), 0,
-				  slip[k] & SAMPLE_SLIP_POS ? HUGE_VAL : 0);
-		lp_set_col_bounds(K, KCOL_SM(ws, k), 0,
-				  slip[k] & SAMPLE_SLIP_NEG ? HUGE_VAL : 0);
-	}
+	for (int k = 0; k < ws->m; k++)
+		sws_kin_allow(ws, k, (open[2 * k] ? KIN_OPEN_A : 0) |
+				     (open[2 * k + 1] ? KIN_OPEN_B : 0) |
+				     (slip[k] & SAMPLE_SLIP_POS ? KIN_SLIP_POS : 0) |
+				     (slip[k] & SAMPLE_SLIP_NEG ? KIN_SLIP_NEG : 0));
 	finish(ws, sws_mechanism(ws, r), r);
 	return r->status;
 }
@@ -400,6 +396,9 @@ void sample_export(struct sample_ws *ws, const double *v, const double *x,
 	ws->forces = 1;
 	memcpy(ws->v, v, sizeof(double) * (size_t)ws->R);
 	memcpy(ws->x, x, sizeof(double) * 3 * (size_t)ws->m);
+	/* rates of v itself, every one free (not a KIN answer) */
+	memset(ws->kfree, KIN_OPEN_A | KIN_OPEN_B | KIN_SLIP_POS | KIN_SLIP_NEG,
+	       (size_t)ws->m);
 	for (int k = 0; k < ws->m; k++) {
 		ws->dn[2 * k] = statics_rate(&ws->st, 3 * k, ws->v);
 		ws->dn[2 * k + 1] = statics_rate(&ws->st, 3 * k + 1, ws->v);

@@ -92,6 +92,11 @@ struct sample_ws {
 	double *r;
 	double *c2;		/* a tie-break objective (scratch) */
 	unsigned char *basic;	/* the support basis's columns (scratch) */
+	/* m: which of interface k's rates in dn, dt may be motion (KIN_*):
+	 * what KIN's bounds let it do (sws_kin_allow), for a rate KIN
+	 * holds at 0 is 0 whatever round-off it reads; all of them for
+	 * rates not from KIN (sample_export) */
+	unsigned char *kfree;
 	enum sample_start start;	/* SLIPWALL_LP_START */
 	int large;		/* `auto` takes its large-wall starts */
 	int setup;		/* solving the canonical sample */
@@ -119,6 +124,12 @@ static inline double sws_capacity(const struct sample_ws *ws, int k)
 	return ws->st.mu[k] * fmax(ws->c[k], 0);
 }
 
+/* What the kinematic LP may do at an interface (sample_ws.kfree). */
+#define KIN_OPEN_A 1u	/* point q_a may open */
+#define KIN_OPEN_B 2u	/* point q_b may open */
+#define KIN_SLIP_POS 4u	/* slip > 0 allowed */
+#define KIN_SLIP_NEG 8u	/* slip < 0 allowed */
+
 /* sample_lp.c: the LPs' formulation, every solve, and the memory errors
  * they meet */
 void sws_note_memory(struct sample_ws *ws);
@@ -144,6 +155,9 @@ enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
 enum lp_status sws_lp2_tiebreak(struct sample_ws *ws, struct sample_result *r);
 enum lp_status sws_kin_tiebreak(struct sample_ws *ws, struct sample_result *r);
 
+/* sample_onset.c: KIN's bounds at interface k (KIN_* bits) */
+void sws_kin_allow(struct sample_ws *ws, int k, unsigned bits);
+
 /* sample_slp.c: step 2b, the SLP */
 enum sample_status sws_slp(struct sample_ws *ws, const struct sample_opts *o,
 			   struct sample_result *r);
@@ -158,7 +172,7 @@ enum sample_status sws_onset(struct sample_ws *ws, const struct sample_opts *o,
 			     struct sample_result *r);
 enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
 			      struct sample_result *r);
-double sws_virtual_work(const struct sample_ws *ws, double lam);
+double sws_virtual_work(const struct sample_ws *ws, double lam, double *allow);
 void sws_export(struct sample_ws *ws, struct sample_result *r);
 
 #endif
