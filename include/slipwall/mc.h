@@ -43,6 +43,11 @@ struct mc_config {
 	struct sample_opts opts;
 	/* replay: n rows of draws (or NULL to draw them) */
 	const struct draw_table *replay;
+	/* the set-up to start every worker from, when it fits the wall
+	 * (sample_setup_fits); NULL or another shape: the pool solves it
+	 * once, in one worker, and the others start from it (mc_setup).
+	 * Read until mc_free. */
+	const struct sample_setup *setup;
 };
 void mc_config_default(struct mc_config *c, const struct wall *w);
 
@@ -98,8 +103,16 @@ void mc_free(struct mc *m);
 struct mc_counters {
 	long solves, iterations, held;
 	double lp_seconds;	/* inside the LP solver, summed over workers */
+	int setups;		/* canonical samples solved: 1, or 0 when
+				 * config.setup fitted (docs/design.md,
+				 * "The shared set-up") */
 };
 void mc_counters(const struct mc *m, struct mc_counters *c);
+/* The pool's set-up (a copy for the caller to free: sample_setup_free),
+ * once it is there (config.setup, or the one its worker 0 solved);
+ * NULL before, or if it was interrupted.  For the next pool of a wall of
+ * the same shape (the workbench, tui_run.c). */
+struct sample_setup *mc_setup(struct mc *m);
 /* Wait until every worker has exited: after mc_pop returned -1 (or
  * after mc_stop), so that mc_counters covers every worker. */
 void mc_wait(struct mc *m);

@@ -183,6 +183,37 @@ struct sample_ws *sample_ws_new_start(const struct wall *w,
 struct sample_ws *sample_ws_new_auto_large(const struct wall *w);
 void sample_ws_free(struct sample_ws *ws);
 
+/* The set-up of a wall (docs/design.md, "The shared set-up"): every
+ * role's canonical basis (the basis it ended at on the canonical sample,
+ * which a workspace solves when it is made: 23 s on walls/large.yaml),
+ * as plain data, row and column statuses, so that another thread's
+ * workspace of the same wall can start from it without solving the
+ * canonical sample again.  A function of the wall's shape and the start
+ * option alone: a workspace made from it takes exactly the bases it
+ * would have solved for (the sampler's workers share one, mc.c).  The
+ * workbench also gives it to the next wall of the same shape after an
+ * edit (same blocks, supports and interfaces; friction, depth, loads
+ * may differ): there it is only a start, which a sample's answer does
+ * not depend on (docs/method.md, "One answer per sample").  Immutable
+ * once made: any number of threads may read one. */
+struct sample_setup;
+/* The workspace's set-up (a new copy), or NULL if its canonical sample
+ * was interrupted (sample_lp_config.stop). */
+struct sample_setup *sample_ws_setup(const struct sample_ws *ws);
+struct sample_setup *sample_setup_copy(const struct sample_setup *s);
+void sample_setup_free(struct sample_setup *s);
+/* Can a workspace of w with the configuration c (NULL: the defaults)
+ * start from s?  The same shape (blocks, supports, interfaces and their
+ * bodies) and the same start option; 0 for a NULL s. */
+int sample_setup_fits(const struct sample_setup *s, const struct wall *w,
+		      const struct sample_lp_config *c);
+/* sample_ws_new_config, but the canonical bases are s's when s fits w
+ * and c (no canonical sample is solved); otherwise as
+ * sample_ws_new_config. */
+struct sample_ws *sample_ws_new_setup(const struct wall *w,
+				      const struct sample_lp_config *c,
+				      const struct sample_setup *s);
+
 
 /* Steps 2-6 of docs/method.md ("One sample") for the draw d (contact
  * points, friction).  Fills r (which must have been sample_result_init'ed
@@ -231,11 +262,13 @@ void sample_ws_stats(const struct sample_ws *ws,
 
 /* What the workspace's LP solver did since it was made: LPs solved,
  * simplex iterations, LPs answered by the basis the solver held, seconds
- * inside the solver, and internal errors that were the solver running
- * out of memory. */
+ * inside the solver, internal errors that were the solver running out
+ * of memory, and whether it solved its canonical sample (setups). */
 struct sample_lp_counters {
 	long solves, iterations, held, memory_errors;
 	double seconds;
+	int setups;	/* canonical samples solved: 0 (made from a
+			 * sample_setup) or 1 */
 };
 void sample_ws_counters(const struct sample_ws *ws,
 			struct sample_lp_counters *c);

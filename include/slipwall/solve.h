@@ -51,6 +51,13 @@ struct solve_opts {
 	/* Non-zero *stop ends the solve (SW_EINTR; see above).  NULL:
 	 * never (the default). */
 	const atomic_int *stop;
+	/* The set-up to start from (the workbench's solve thread, across
+	 * its solves and edits; docs/design.md, "The shared set-up"): when
+	 * *setup fits the wall (sample_setup_fits) the workspace starts
+	 * from it and solves no canonical sample; otherwise it solves its
+	 * own, which replaces *setup (the old one freed).  The caller owns
+	 * *setup.  NULL: none (the default; the batch commands). */
+	struct sample_setup **setup;
 };
 void solve_opts_default(struct solve_opts *o, enum solve_method m);
 /* "standard" -> SOLVE_STANDARD; -1 for an unknown name. */

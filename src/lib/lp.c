@@ -219,6 +219,16 @@ void lp_basis_load(struct lp *p, const struct lp_basis *b)
 		T(p)->set_col_stat(p, j, (enum lp_var_stat)b->stat[p->nrows + j]);
 }
 
+void lp_basis_copy(struct lp_basis *dst, const struct lp_basis *src)
+{
+	lp_basis_free(dst);
+	if (src->n <= 0)
+		return;
+	dst->stat = sw_xmalloc(sizeof(int) * (size_t)(src->n + 1));
+	memcpy(dst->stat, src->stat, sizeof(int) * (size_t)src->n);
+	dst->n = src->n;
+}
+
 unsigned long lp_basis_hash(const struct lp *p)
 {
 	if (!lp_alive(p))

@@ -168,6 +168,9 @@ struct lp_basis {
 void lp_basis_save(const struct lp *p, struct lp_basis *b);
 void lp_basis_load(struct lp *p, const struct lp_basis *b);
 void lp_basis_free(struct lp_basis *b);
+/* dst becomes a copy of src (plain data: another thread's problem of
+ * the same shape may load it) */
+void lp_basis_copy(struct lp_basis *dst, const struct lp_basis *src);
 /* A hash of the current basis (every row's and column's status): two
  * solves that end with the same hash almost surely ended at the same
  * basis. */

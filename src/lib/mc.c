@@ -25,6 +25,20 @@
  * this project's (loaded, shared) build machine: see the constants.
  * It is a guide to tell seconds from minutes, not a promise.
  *
+ * The set-up (docs/design.md, "The shared set-up").  Every worker's
+ * workspace starts its samples from the canonical bases, which cost one
+ * sample's LPs at the classical contact (23 s on walls/large.yaml).  The
+ * pool solves them once: the worker that takes id 0 makes its
+ * workspace, which solves them, and publishes them as plain data
+ * (sample_ws_setup: row and column statuses; GLPK's state is the
+ * thread's own) under the mutex; the others wait for it (timed waits, so
+ * that a stop is noticed) and make theirs from it (sample_ws_new_setup),
+ * which are then the workspaces they would have made themselves: the
+ * bases are a function of the wall alone, and the CSV stays the same
+ * whatever the thread count.  A set-up given in the config that fits
+ * the wall (the workbench's previous wall after an edit, or the same
+ * wall after a pause) is used by every worker and none is solved.
+ *
  * The workers are named "sw-mc" (pthread_setname_np, on Linux), so that
  * a test or a person can count them (/proc/PID/task/TID/comm, top -H).
  */
@@ -80,6 +94,12 @@ struct mc {
 	 * setup counts in its first one), 0 when idle; for mc_progress */
 	double *since;
 	int nextid;
+	/* the set-up every worker starts from (see the top): 0 while
+	 * worker 0 solves it, 1 when setup is there, -1 if it was
+	 * interrupted (the workers end) */
+	pthread_cond_t cv_setup;
+	int setup_state;
+	struct sample_setup *setup;
 };
 
 void mc_config_default(struct mc_config *c, const struct wall *w)
@@ -114,6 +134,36 @@ static void deadline(struct timespec *ts, int ms)
 	}
 }
 
+/* Worker id's workspace, from the pool's set-up (see the top): worker
+ * 0 solves it if the config gave none that fits, the others wait for
+ * it.  NULL when the set-up was interrupted (a stop). */
+static struct sample_ws *worker_ws(struct mc *m, int id,
+				   const struct sample_lp_config *lpc)
+{
+	const struct wall *w = m->cfg.w;
+	pthread_mutex_lock(&m->mu);
+	if (m->setup_state == 0 && id == 0) {
+		pthread_mutex_unlock(&m->mu);
+		struct sample_ws *ws = sample_ws_new_config(w, lpc);
+		struct sample_setup *s = sample_ws_setup(ws);
+		pthread_mutex_lock(&m->mu);
+		m->setup = s;
+		m->setup_state = s ? 1 : -1;
+		pthread_cond_broadcast(&m->cv_setup);
+		pthread_mutex_unlock(&m->mu);
+		return ws;
+	}
+	while (m->setup_state == 0 && !atomic_load(&m->stop)) {
+		struct timespec ts;
+		deadline(&ts, 100);
+		pthread_cond_timedwait(&m->cv_setup, &m->mu, &ts);
+	}
+	int ready = m->setup_state == 1;
+	pthread_mutex_unlock(&m->mu);
+	/* published: immutable until mc_free, which joins the workers */
+	return ready ? sample_ws_new_setup(w, lpc, m->setup) : NULL;
+}
+
 static void *worker(void *arg)
 {
 	struct mc *m = arg;
@@ -129,13 +179,13 @@ static void *worker(void *arg)
 	 * (on a large wall one LP can take minutes) */
 	struct sample_lp_config lpc = m->cfg.opts.lp;
 	lpc.stop = &m->stop;
-	struct sample_ws *ws = sample_ws_new_config(w, &lpc);
+	struct sample_ws *ws = worker_ws(m, id, &lpc);
 	struct sample_result r;
 	struct record it;
 	sample_result_init(&r, w);
 	record_init(&it, w);
 
-	for (;;) {
+	while (ws) {
 		pthread_mutex_lock(&m->mu);
 		while (!atomic_load(&m->stop) && m->next_index < m->count &&
 		       m->next_index >= m->next_out + m->window) {
@@ -178,7 +228,9 @@ static void *worker(void *arg)
 	}
 
 	struct sample_lp_counters lc;
-	sample_ws_counters(ws, &lc);
+	memset(&lc, 0, sizeof lc);
+	if (ws)
+		sample_ws_counters(ws, &lc);
 	sample_result_free(&r);
 	record_free(&it);
 	sample_ws_free(ws);
@@ -188,6 +240,7 @@ static void *worker(void *arg)
 	m->counters.iterations += lc.iterations;
 	m->counters.held += lc.held;
 	m->counters.lp_seconds += lc.seconds;
+	m->counters.setups += lc.setups;
 	m->since[id] = 0;
 	m->running--;
 	pthread_cond_broadcast(&m->cv_ready);
@@ -224,6 +277,11 @@ struct mc *mc_start(const struct mc_config *c, char *err)
 	pthread_mutex_init(&m->mu, NULL);
 	pthread_cond_init(&m->cv_space, NULL);
 	pthread_cond_init(&m->cv_ready, NULL);
+	pthread_cond_init(&m->cv_setup, NULL);
+	if (sample_setup_fits(c->setup, c->w, &c->opts.lp)) {
+		m->setup = sample_setup_copy(c->setup);
+		m->setup_state = 1;
+	}
 	atomic_init(&m->stop, 0);
 	if (pipe(m->pipe) != 0) {
 		sw_fail(err, SW_EIO, "cannot create a pipe: %s", strerror(errno));
@@ -347,6 +405,15 @@ void mc_counters(const struct mc *m, struct mc_counters *c)
 	pthread_mutex_unlock((pthread_mutex_t *)&m->mu);
 }
 
+struct sample_setup *mc_setup(struct mc *m)
+{
+	pthread_mutex_lock(&m->mu);
+	struct sample_setup *s = m->setup_state == 1 ?
+				 sample_setup_copy(m->setup) : NULL;
+	pthread_mutex_unlock(&m->mu);
+	return s;
+}
+
 void mc_wait(struct mc *m)
 {
 	pthread_mutex_lock(&m->mu);
@@ -380,6 +447,8 @@ void mc_free(struct mc *m)
 	pthread_mutex_destroy(&m->mu);
 	pthread_cond_destroy(&m->cv_space);
 	pthread_cond_destroy(&m->cv_ready);
+	pthread_cond_destroy(&m->cv_setup);
+	sample_setup_free(m->setup);
 	free(m);
 }
 

@@ -19,7 +19,8 @@
  * The work is split by job, a file each.  This file holds the workspace
  * (new, free, counters), the statuses, options and results, a sample's
  * begin (set_points writes its draw into the problems) and finish, the
- * canonical bases, the public entry points (sample_run, sample_pattern,
+ * canonical bases and the set-up that shares them (struct sample_setup:
+ * docs/design.md, "The shared set-up"), the public entry points (sample_run, sample_pattern,
  * sample_standard, sample_export), and the roles' names; the others, each
  * below the ones that call it (none calls up into this file):
  *
@@ -169,8 +170,94 @@ static void canonical_bases(struct sample_ws *ws)
 	sample_result_free(&r);
 }
 
+/* The set-up of a wall (slipwall/sample.h): the canonical bases as
+ * plain data, with what they were solved for. */
+struct sample_setup {
+	unsigned long shape;	/* setup_shape() */
+	enum sample_start start;
+	int large;
+	struct lp_basis canon[ROLES];
+};
+
+/* A hash of what decides the LPs' rows and columns: the blocks (which
+ * are supports), the interfaces and the bodies each one joins.  Two
+ * walls with the same hash have problems of the same shape, whose bases
+ * are interchangeable as starts. */
+static unsigned long setup_shape(const struct wall *w)
+{
+	unsigned long long h = 1469598103934665603ULL;	/* FNV-1a */
+#define MIX(x) (h = (h ^ (unsigned long long)(unsigned)(x)) * 1099511628211ULL)
+	MIX(w->nblocks);
+	MIX(w->nifaces);
+	for (int i = 0; i < w->nblocks; i++)
+		MIX(w->blocks[i].fixed);
+	for (int k = 0; k < w->nifaces; k++) {
+		MIX(w->ifaces[k].a);
+		MIX(w->ifaces[k].b);
+	}
+#undef MIX
+	return (unsigned long)h;
+}
+
+static int large_wall(const struct wall *w)
+{
+	return w->nifaces > AUTO_LARGE_IFACES;
+}
+
+struct sample_setup *sample_ws_setup(const struct sample_ws *ws)
+{
+	if (lp_solver_interrupted(ws->solver))
+		return NULL;	/* the canonical sample may be incomplete */
+	struct sample_setup *s = sw_xcalloc(1, sizeof *s);
+	s->shape = setup_shape(ws->w);
+	s->start = ws->start;
+	s->large = ws->large;
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_copy(&s->canon[p], &ws->canon[p]);
+	return s;
+}
+
+struct sample_setup *sample_setup_copy(const struct sample_setup *s)
+{
+	if (!s)
+		return NULL;
+	struct sample_setup *t = sw_xcalloc(1, sizeof *t);
+	t->shape = s->shape;
+	t->start = s->start;
+	t->large = s->large;
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_copy(&t->canon[p], &s->canon[p]);
+	return t;
+}
+
+void sample_setup_free(struct sample_setup *s)
+{
+	if (!s)
+		return;
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_free(&s->canon[p]);
+	free(s);
+}
+
+static int setup_fits(const struct sample_setup *s, const struct wall *w,
+		      enum sample_start start, int large)
+{
+	return s && s->shape == setup_shape(w) && s->start == start &&
+	       s->large == large;
+}
+
+int sample_setup_fits(const struct sample_setup *s, const struct wall *w,
+		      const struct sample_lp_config *c)
+{
+	return setup_fits(s, w, c ? c->start : SAMPLE_START_DEFAULT,
+			  large_wall(w));
+}
+
+/* A workspace of w; its canonical bases are those of s when s fits,
+ * else solved here (canonical_bases). */
 static struct sample_ws *ws_new(const struct wall *w,
-				const struct sample_lp_config *c, int large)
+				const struct sample_lp_config *c, int large,
+				const struct sample_setup *s)
 {
 	sw_init();	/* GSL's handler off before anderson_step can run */
 	struct sample_ws *ws = sw_xcalloc(1, sizeof *ws);
@@ -209,7 +296,15 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->kfree = sw_xcalloc((size_t)m + 1, 1);
 	ws->start = c->start;
 	sws_build(ws);
-	canonical_bases(ws);
+	if (setup_fits(s, w, ws->start, large)) {
+		/* a basis of another length (none should be) is not
+		 * loaded: lp_basis_load */
+		for (int p = 0; p < ROLES; p++)
+			lp_basis_copy(&ws->canon[p], &s->canon[p]);
+	} else {
+		canonical_bases(ws);
+		ws->setups = 1;
+	}
 	return ws;
 }
 
@@ -221,7 +316,19 @@ struct sample_ws *sample_ws_new_config(const struct wall *w,
 		sample_lp_config_default(&d);
 		c = &d;
 	}
-	return ws_new(w, c, w->nifaces > AUTO_LARGE_IFACES);
+	return ws_new(w, c, large_wall(w), NULL);
+}
+
+struct sample_ws *sample_ws_new_setup(const struct wall *w,
+				      const struct sample_lp_config *c,
+				      const struct sample_setup *s)
+{
+	struct sample_lp_config d;
+	if (!c) {
+		sample_lp_config_default(&d);
+		c = &d;
+	}
+	return ws_new(w, c, large_wall(w), s);
 }
 
 struct sample_ws *sample_ws_new(const struct wall *w)
@@ -243,7 +350,7 @@ struct sample_ws *sample_ws_new_auto_large(const struct wall *w)
 	struct sample_lp_config c;
 	sample_lp_config_default(&c);
 	c.start = SAMPLE_START_AUTO;
-	return ws_new(w, &c, 1);
+	return ws_new(w, &c, 1, NULL);
 }
 
 void sample_ws_free(struct sample_ws *ws)
@@ -288,6 +395,7 @@ void sample_ws_counters(const struct sample_ws *ws,
 	c->held = lc.held;
 	c->memory_errors = lc.memory_errors;
 	c->seconds = lc.seconds;
+	c->setups = ws->setups;
 }
 
 int sample_ws_interrupted(const struct sample_ws *ws)

@@ -100,6 +100,7 @@ struct sample_ws {
 	enum sample_start start;	/* SLIPWALL_LP_START */
 	int large;		/* `auto` takes its large-wall starts */
 	int setup;		/* solving the canonical sample */
+	int setups;		/* canonical samples solved (0 or 1) */
 	int forces;		/* this sample reports its stress field */
 	/* LPs by role, since the workspace was made (sample_ws_stats) */
 	struct sample_lp_stats stats[SAMPLE_ROLE_COUNT];

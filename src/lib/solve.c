@@ -106,7 +106,17 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		c.progress = progress;
 		c.progress_ctx = &prog;
 	}
-	struct sample_ws *ws = sample_ws_new_config(w, &c);
+	struct sample_ws *ws;
+	if (o->setup && sample_setup_fits(*o->setup, w, &c)) {
+		ws = sample_ws_new_setup(w, &c, *o->setup);
+	} else {
+		ws = sample_ws_new_config(w, &c);
+		struct sample_setup *s = o->setup ? sample_ws_setup(ws) : NULL;
+		if (s) {
+			sample_setup_free(*o->setup);
+			*o->setup = s;
+		}
+	}
 	/* the classical contact, the wall's (mean) friction */
 	struct sample_draw d;
 	draw_init(&d, w);

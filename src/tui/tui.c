@@ -312,6 +312,8 @@ int tui_main(const char *path, const struct sample_lp_config *lp)
 	tui_loop(t);
 	tui_run_end(t);
 	tui_solve_free(t->solve);
+	sample_setup_free(t->setup);
+	t->setup = NULL;
 	endwin();
 	delscreen(scr);
 	tui_fatal_end();	/* what was written to stderr, to stderr */

@@ -184,6 +184,10 @@ struct tui {
 	void (*run_ended)(struct tui *t);
 
 	struct tui_solve *solve;/* the solve thread (standard, gilbert) */
+	/* the last pool's set-up (mc_setup): the next pool's starts while
+	 * the wall keeps its shape (tui_run.c; docs/design.md, "The shared
+	 * set-up") */
+	struct sample_setup *setup;
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */

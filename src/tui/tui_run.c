@@ -18,6 +18,15 @@
  * so, the run pauses for good ("write error"), and reset (r) starts a
  * new one; no sample is counted without its row.
  *
+ * The set-up (every worker's canonical sample: docs/design.md, "The
+ * shared set-up") is solved once by a pool; its bases (mc_setup) are
+ * kept in t->setup when the pool is freed and given to the next pool,
+ * which starts from them, without solving its own, when the wall has
+ * the same shape: after a pause, and after an edit that keeps the
+ * blocks and interfaces (friction, depth, a load, cov).  A sample's
+ * answer does not depend on its start (docs/method.md, "One answer per
+ * sample"), only its cost.
+ *
  * tui_run_end() is called before the wall changes and at exit: it
  * drains the pool the same way, so every computed sample has its row,
  * and closes the file (which stays on disk); then t->run_ended (the
@@ -38,8 +47,16 @@ static void tui_run_free_pool(struct tui *t)
 	if (!r->mc)
 		return;
 	tui_signal_watch(NULL);
+	/* the pool's set-up, for the next pool (after a pause, or an edit
+	 * that keeps the wall's shape); the pool reads t->setup until
+	 * mc_free */
+	struct sample_setup *s = mc_setup(r->mc);
 	mc_free(r->mc);
 	r->mc = NULL;
+	if (s) {
+		sample_setup_free(t->setup);
+		t->setup = s;
+	}
 	r->active += sys_now() - r->t_start;
 }
 
@@ -95,6 +112,9 @@ static void tui_run_spawn(struct tui *t)
 	r->cfg.threads = t->threads;
 	r->cfg.first = r->done;		/* resume where the file ends */
 	r->cfg.n = r->target;
+	/* the last pool's set-up: used when this wall has its shape
+	 * (mc.c, sample_setup_fits), else the pool solves its own */
+	r->cfg.setup = t->setup;
 	r->mc = mc_start(&r->cfg, err);
 	if (!r->mc) {
 		tui_message(t, 1, "cannot start the sampler: %s", err);

@@ -14,6 +14,11 @@
  * it: holding a key that edits solves the first wall (briefly) and the
  * last one, never the ones between, and never two at a time.
  *
+ * The standard solution and gilbert's each make a workspace; the
+ * second starts from the set-up (canonical bases) the first solved, and
+ * the next wall's from the last one's while the shape stays the same
+ * (solve_opts.setup; docs/design.md, "The shared set-up").
+ *
  * The thread works on its copy of the wall and writes its values under
  * the mutex; everything else belongs to the UI thread.  It blocks every
  * signal, like the sampler's workers.  tui_solve_free() (quit) stops the
@@ -37,6 +42,10 @@ struct tui_solve {
 	atomic_int stop;	/* read by the thread's LPs */
 	struct wall *w;		/* the thread's wall (its copy) */
 	struct wall *next;	/* the wall to solve next, or NULL */
+	/* the set-up of the last wall solved (solve_opts.setup): the
+	 * next solve's starts while the wall keeps its shape; the
+	 * thread's while it runs, threads never overlap */
+	struct sample_setup *setup;
 	/* under mu: written by the thread once, when it ends */
 	int finished;
 	int has_std, has_gil;
@@ -55,6 +64,7 @@ static int tui_solve_one(struct tui_solve *s, enum solve_method m,
 	solve_opts_default(&o, m);
 	o.sample.lp = tui_lp;
 	o.stop = &s->stop;
+	o.setup = &s->setup;
 	ok = solve_run(s->w, &o, &r, err) == SW_OK &&
 	     r.status == SAMPLE_ACCEPTED;
 	if (ok)
@@ -173,6 +183,7 @@ void tui_solve_free(struct tui_solve *s)
 	}
 	wall_free(s->w);
 	wall_free(s->next);
+	sample_setup_free(s->setup);
 	pthread_mutex_destroy(&s->mu);
 	free(s);
 }

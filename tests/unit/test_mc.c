@@ -6,7 +6,9 @@
  * that computes a share (first, first + stride, ...: an MPI rank's)
  * gives exactly those samples of the whole run; and the positions scale
  * with the depth (the common random numbers of compare --fit-depth);
- * a million samples of one run draw from a million distinct streams.
+ * a million samples of one run draw from a million distinct streams;
+ * the set-up is solved once per pool, and not at all from a set-up given
+ * that fits the wall.
  * mc_free of a running pool can fail only by not returning: a watchdog
  * thread turns a hang into a failing TAP line within WATCHDOG_SECONDS
  * (and the watchdog itself is tested first, on a call that hangs).
@@ -149,11 +151,13 @@ struct run {
 	double *xi;		/* N * 2 * nifaces */
 	char *joint;		/* N * (nifaces + 1) */
 	struct mc_counters c;
+	struct sample_setup *setup;	/* the pool's (mc_setup) */
 };
 
-static void run(const struct wall *w, int threads,
-		const struct draw_table *replay,
-		struct run *r)
+/* A pool of w from the set-up given (NULL: its own), N samples. */
+static void run_from(const struct wall *w, int threads,
+		     const struct draw_table *replay,
+		     const struct sample_setup *setup, struct run *r)
 {
 	char err[SW_ERRLEN];
 	size_t nxi = 2 * (size_t)w->nifaces, nj = (size_t)w->nifaces + 1;
@@ -163,6 +167,7 @@ static void run(const struct wall *w, int threads,
 	cfg.seed = 12345;
 	cfg.threads = threads;
 	cfg.replay = replay;
+	cfg.setup = setup;
 	memset(r, 0, sizeof *r);
 	r->xi = calloc(N * nxi, sizeof(double));
 	r->joint = calloc(N * nj, 1);
@@ -195,8 +200,16 @@ static void run(const struct wall *w, int threads,
 	       "-1 at the end", threads);
 	mc_wait(m);
 	mc_counters(m, &r->c);
+	r->setup = mc_setup(m);
 	record_free(&it);
 	mc_free(m);
+}
+
+static void run(const struct wall *w, int threads,
+		const struct draw_table *replay,
+		struct run *r)
+{
+	run_from(w, threads, replay, NULL, r);
 }
 
 static int same(const struct run *a, const struct run *b, size_t nxi,
@@ -221,6 +234,46 @@ static void free_run(struct run *r)
 {
 	free(r->xi);
 	free(r->joint);
+	sample_setup_free(r->setup);
+}
+
+/* The set-up (docs/design.md, "The shared set-up"): a pool solves the
+ * canonical sample once, whatever its threads, and a pool given a set-up
+ * that fits solves none, with the same samples bit for bit (the same
+ * bases); one of another shape is not used. */
+static void test_setup(const struct wall *w)
+{
+	size_t nxi = 2 * (size_t)w->nifaces, nj = (size_t)w->nifaces + 1;
+	struct run r1, r2, rs;
+	run(w, 1, NULL, &r1);
+	run(w, 2, NULL, &r2);
+	tap_ok(r1.c.setups == 1 && r2.c.setups == 1 && r2.setup,
+	       "the set-up is solved once per pool: %d with 1 thread, %d "
+	       "with 2", r1.c.setups, r2.c.setups);
+	run_from(w, 2, NULL, r2.setup, &rs);
+	tap_ok(rs.c.setups == 0 && rs.n == N && same(&r1, &rs, nxi, nj),
+	       "a pool given its wall's set-up solves none (%d) and computes "
+	       "the same samples bit for bit", rs.c.setups);
+	/* another shape */
+	char err[SW_ERRLEN];
+	struct wall *one;
+	if (wallfile_load(SRCDIR "/walls/single-block.yaml", &one, err) !=
+	    SW_OK) {
+		tap_ok(0, "single-block.yaml: %s", err);
+	} else {
+		struct run ro;
+		tap_ok(!sample_setup_fits(r2.setup, one, NULL),
+		       "the demo's set-up does not fit the single block");
+		run_from(one, 2, NULL, r2.setup, &ro);
+		tap_ok(ro.c.setups == 1 && ro.n == N,
+		       "a pool given a set-up of another shape solves its own "
+		       "(%d)", ro.c.setups);
+		free_run(&ro);
+		wall_free(one);
+	}
+	free_run(&r1);
+	free_run(&r2);
+	free_run(&rs);
 }
 
 static void test_order(const struct wall *w)
@@ -534,6 +587,7 @@ int main(void)
 	test_watchdog();
 	test_order(w);
 	test_stop(w);
+	test_setup(w);
 	test_share(w);
 	test_depth(w);
 	test_streams();

@@ -5,7 +5,10 @@
  * different basis (SLIPWALL_LP_START's values: the default `auto`, the
  * slack basis by the primal and by the dual simplex, GLPK's crash basis,
  * the canonical bases, the previous sample's bases, the support basis;
- * and `auto` as it starts walls of more than 1,000 interfaces), and must
+ * `auto` as it starts walls of more than 1,000 interfaces; and `auto`
+ * from the set-up of another wall of the same shape, the workbench's
+ * start after an edit: the wall with its friction scaled by 0.7,
+ * docs/design.md "The shared set-up"), and must
  * give the same status, the same lambda_min (1e-9 relative) and the
  * same mechanism (the joint classification of every interface).
  * Without the tie-breaks, changing
@@ -25,10 +28,13 @@
 #include "walls.h"
 
 /* the starts, the default first: ws[s] starts from start_of[s]; the
- * last is `auto` as it starts a wall of more than 1,000 interfaces
- * (sample_ws_new_auto_large) */
-#define NSTART (SAMPLE_START_COUNT + 1)
-static const enum sample_start start_of[NSTART - 1] = {
+ * last two are `auto` as it starts a wall of more than 1,000 interfaces
+ * (sample_ws_new_auto_large) and `auto` from an edited wall's set-up
+ * (sample_ws_new_setup) */
+#define NSTART (SAMPLE_START_COUNT + 2)
+#define AUTO_LARGE (NSTART - 2)
+#define EDITED (NSTART - 1)
+static const enum sample_start start_of[NSTART - 2] = {
 	SAMPLE_START_DEFAULT, SAMPLE_START_SLACK_PRIMAL, SAMPLE_START_SLACK_DUAL,
 	SAMPLE_START_CRASH, SAMPLE_START_CANONICAL, SAMPLE_START_PREVIOUS,
 	SAMPLE_START_SUPPORT,
@@ -36,7 +42,9 @@ static const enum sample_start start_of[NSTART - 1] = {
 
 static const char *start_name(int s)
 {
-	return s == NSTART - 1 ? "auto (large walls)" : start_name(s);
+	return s == AUTO_LARGE ? "auto (large walls)" :
+	       s == EDITED ? "auto (an edited wall's set-up)" :
+	       sample_start_name(start_of[s]);
 }
 
 struct tally {
@@ -97,12 +105,32 @@ static void one(struct sample_ws **ws, const struct wall *w,
 	draw_free(&dr);
 }
 
+/* workspaces opened from an edited wall's set-up, and those that used
+ * it (solved no canonical sample) */
+static long edited_opened, edited_used;
+
 /* The workspaces of w, the default start first. */
 static void open_all(struct sample_ws **ws, const struct wall *w)
 {
-	for (int s = 0; s < NSTART - 1; s++)
+	for (int s = 0; s < AUTO_LARGE; s++)
 		ws[s] = sample_ws_new_start(w, start_of[s]);
-	ws[NSTART - 1] = sample_ws_new_auto_large(w);
+	ws[AUTO_LARGE] = sample_ws_new_auto_large(w);
+	/* the workbench after a friction edit: the previous wall's
+	 * canonical bases, a start of the right shape that is not this
+	 * wall's */
+	struct wall *e = wall_copy(w);
+	e->mu_bed *= 0.7;
+	e->mu_head *= 0.7;
+	struct sample_ws *we = sample_ws_new(e);
+	struct sample_setup *su = sample_ws_setup(we);
+	sample_ws_free(we);
+	ws[EDITED] = sample_ws_new_setup(w, NULL, su);
+	struct sample_lp_counters c;
+	sample_ws_counters(ws[EDITED], &c);
+	edited_opened++;
+	edited_used += sample_setup_fits(su, w, NULL) && c.setups == 0;
+	sample_setup_free(su);
+	wall_free(e);
 }
 
 static void close_all(struct sample_ws **ws)
@@ -212,5 +240,8 @@ int main(void)
 	wall_file("walls/ferris-tinloi-1.yaml", 100);
 	wall_file("walls/ferris-tinloi-2.yaml", 60);
 	random_walls();
+	tap_ok(edited_opened > 0 && edited_used == edited_opened,
+	       "every workspace opened from an edited wall's set-up started "
+	       "from it (%ld of %ld)", edited_used, edited_opened);
 	return tap_done();
 }
