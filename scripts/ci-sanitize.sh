@@ -60,7 +60,7 @@ for job in $jobs; do
 		rm -f "$dir"/san-report.*
 		log=$(pwd)/$dir/san-report
 		set +e
-		SLIPWALL_SIZE_SECONDS=20 SLIPWALL_INVARIANCE_SAMPLES=300 \
+		SLIPWALL_SIZE_SECONDS=20 SLIPWALL_INVARIANCE_SAMPLES=300 SLIPWALL_PACE_LARGE_CAP=900 \
 		ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:log_path=$log \
 		LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0 \
 		UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:log_path=$log \
