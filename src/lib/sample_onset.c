@@ -288,10 +288,10 @@ enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
  * motion (below the motion threshold, or held at 0 by KIN) it costs
  * their work, |N dn| and |T dt + mu N |dt||, at most the threshold
  * times the forces.  That work is the wall's own (it grows with its
- * forces and joints: 3e-8 of the load's work on a 310-block wall, 1e-14
- * on the paper's walls), so it is added to the allowance, which is
- * VW_TOL for the rest: an LP-min field off its bounds or out of
- * equilibrium, a mechanism off its rows, still fail. */
+ * forces and joints: 1.5e-8 to 1.2e-7 of the load's work on a
+ * 310-block wall, 1e-14 on the paper's walls), so it is added to the
+ * allowance, which is VW_TOL for the rest: an LP-min field off its
+ * bounds or out of equilibrium, a mechanism off its rows, still fail. */
 double sws_virtual_work(const struct sample_ws *ws, double lam, double *allow)
 {
 	double fl = 0, fd = 0, diss = 0, still = 0;
