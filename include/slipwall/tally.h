@@ -58,6 +58,17 @@ int tally_find(const struct tally *t, const char *joint);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */
 int tally_top(const struct tally *t, int *idx, int max);
+/* A count and the index it ranks (qsort has no context argument, so the
+ * count travels with its index); tally_ranked sorts r (n entries) by
+ * count, most first, equal counts by index (first appearance first: an
+ * order that does not depend on the thread count), and copies up to max
+ * of the indices into idx; returns how many.  tally_top's order, and
+ * the families' (family.c). */
+struct tally_rank {
+	long count;
+	int k;
+};
+int tally_ranked(struct tally_rank *r, int n, int *idx, int max);
 /* Summary statistics of the accepted loads (stats_summarise_conf at
  * ci_conf). */
 void tally_summary(const struct tally *t, struct stats_summary *s);

@@ -207,41 +207,18 @@ void family_update(struct family_set *fs, const struct tally *t)
 	}
 }
 
-/* A sort key that carries its count (qsort has no context argument). */
-struct rank {
-	long count;
-	int k;
-};
-
-static int by_count(const void *a, const void *b)
-{
-	const struct rank *ra = a, *rb = b;
-	if (ra->count != rb->count)
-		return ra->count > rb->count ? -1 : 1;
-	return (ra->k > rb->k) - (ra->k < rb->k);
-}
-
-/* Sort r (n entries) and copy up to max of its indices into idx. */
-static int ranked(struct rank *r, int n, int *idx, int max)
-{
-	qsort(r, (size_t)n, sizeof *r, by_count);
-	int m = n < max ? n : max;
-	for (int i = 0; i < m; i++)
-		idx[i] = r[i].k;
-	free(r);
-	return m < 0 ? 0 : m;
-}
-
 int family_top(const struct family_set *fs, int *idx, int max)
 {
 	if (max <= 0 || fs->nfam == 0)
 		return 0;
-	struct rank *r = sw_xmalloc(sizeof *r * (size_t)fs->nfam);
+	struct tally_rank *r = sw_xmalloc(sizeof *r * (size_t)fs->nfam);
 	for (int f = 0; f < fs->nfam; f++) {
 		r[f].count = fs->fam[f].count;
 		r[f].k = f;	/* families are numbered by first appearance */
 	}
-	return ranked(r, fs->nfam, idx, max);
+	int n = tally_ranked(r, fs->nfam, idx, max);
+	free(r);
+	return n;
 }
 
 int family_mechs(const struct family_set *fs, const struct tally *t, int f,
@@ -249,14 +226,16 @@ int family_mechs(const struct family_set *fs, const struct tally *t, int f,
 {
 	if (max <= 0 || fs->nseen == 0)
 		return 0;
-	struct rank *r = sw_xmalloc(sizeof *r * (size_t)fs->nseen);
+	struct tally_rank *r = sw_xmalloc(sizeof *r * (size_t)fs->nseen);
 	int n = 0;
 	for (int k = 0; k < fs->nseen; k++)
 		if (fs->of[k] == f) {
 			r[n].count = t->mech[k].count;
 			r[n++].k = k;
 		}
-	return ranked(r, n, idx, max);
+	n = tally_ranked(r, n, idx, max);
+	free(r);
+	return n;
 }
 
 /* Append a formatted string to buf (len bytes, *used of them used);

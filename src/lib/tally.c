@@ -68,13 +68,11 @@ static void rehash(struct tally *t)
 	t->hashcap = cap;
 }
 
-/* The index of mechanism `joint` in t->mech, adding it if new. */
-static int find_or_add(struct tally *t, const char *joint, const double *vel,
-		       double lam)
+/* The index of mechanism `joint` in t->mech, or -1 with *slot the free
+ * slot of the index where it would go (t->hashcap > 0). */
+static int probe(const struct tally *t, const char *joint, int *slot)
 {
 	size_t len = (size_t)t->nifaces;
-	if (2 * (t->nmech + 1) > t->hashcap)
-		rehash(t);
 	uint64_t s = fnv1a(joint, len);
 	int i = (int)(s & (uint64_t)(t->hashcap - 1));
 	while (t->hash[i] >= 0) {
@@ -83,6 +81,20 @@ static int find_or_add(struct tally *t, const char *joint, const double *vel,
 			return k;
 		i = (i + 1) & (t->hashcap - 1);
 	}
+	*slot = i;
+	return -1;
+}
+
+/* The index of mechanism `joint` in t->mech, adding it if new. */
+static int find_or_add(struct tally *t, const char *joint, const double *vel,
+		       double lam)
+{
+	size_t len = (size_t)t->nifaces;
+	if (2 * (t->nmech + 1) > t->hashcap)
+		rehash(t);
+	int i, k = probe(t, joint, &i);
+	if (k >= 0)
+		return k;
 	if (t->nmech == t->capmech) {
 		t->capmech = t->capmech ? 2 * t->capmech : 16;
 		t->mech = sw_xrealloc(t->mech, sizeof *t->mech * (size_t)t->capmech);
@@ -101,18 +113,8 @@ static int find_or_add(struct tally *t, const char *joint, const double *vel,
 
 int tally_find(const struct tally *t, const char *joint)
 {
-	size_t len = (size_t)t->nifaces;
-	if (t->hashcap == 0)
-		return -1;
-	uint64_t s = fnv1a(joint, len);
-	int i = (int)(s & (uint64_t)(t->hashcap - 1));
-	while (t->hash[i] >= 0) {
-		int k = t->hash[i];
-		if (!memcmp(t->mech[k].joint, joint, len))
-			return k;
-		i = (i + 1) & (t->hashcap - 1);
-	}
-	return -1;
+	int slot;
+	return t->hashcap == 0 ? -1 : probe(t, joint, &slot);
 }
 
 void tally_add(struct tally *t, const struct record *it)
@@ -142,16 +144,9 @@ void tally_add(struct tally *t, const struct record *it)
 		m->lam_hi = lam;
 }
 
-/* A mechanism's sort key: qsort has no context argument, so the count
- * travels with the index (no file-static state). */
-struct rank {
-	long count;
-	int k;
-};
-
 static int by_count(const void *a, const void *b)
 {
-	const struct rank *ra = a, *rb = b;
+	const struct tally_rank *ra = a, *rb = b;
 	if (ra->count != rb->count)
 		return ra->count > rb->count ? -1 : 1;
 	/* equal counts: first appearance first (a stable order that does
@@ -159,19 +154,25 @@ static int by_count(const void *a, const void *b)
 	return (ra->k > rb->k) - (ra->k < rb->k);
 }
 
+int tally_ranked(struct tally_rank *r, int n, int *idx, int max)
+{
+	qsort(r, (size_t)n, sizeof *r, by_count);
+	int m = n < max ? n : max;
+	for (int i = 0; i < m; i++)
+		idx[i] = r[i].k;
+	return m < 0 ? 0 : m;
+}
+
 int tally_top(const struct tally *t, int *idx, int max)
 {
 	if (max <= 0 || t->nmech == 0)
 		return 0;
-	struct rank *r = sw_xmalloc(sizeof *r * (size_t)t->nmech);
+	struct tally_rank *r = sw_xmalloc(sizeof *r * (size_t)t->nmech);
 	for (int k = 0; k < t->nmech; k++) {
 		r[k].count = t->mech[k].count;
 		r[k].k = k;
 	}
-	qsort(r, (size_t)t->nmech, sizeof *r, by_count);
-	int n = t->nmech < max ? t->nmech : max;
-	for (int i = 0; i < n; i++)
-		idx[i] = r[i].k;
+	int n = tally_ranked(r, t->nmech, idx, max);
 	free(r);
 	return n;
 }
