@@ -569,7 +569,7 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 				st = SW_EINPUT;
 			break;
 		}
-		int status;
+		int status = -1;	/* check_row sets it */
 		if ((st = check_row(&r, m, &status, err)) != SW_OK ||
 		    (st = too_many(&r, r.lineno, 0, err)) != SW_OK)
 			break;

@@ -55,7 +55,8 @@ static int tui_edit_apply(struct tui *t, struct wall *nw, const char *what)
 		return -1;
 	}
 	undo_edit(&t->undo, t->w);
-	snprintf(t->next_what, sizeof t->next_what, "%s", what);
+	snprintf(t->next_what, sizeof t->next_what, "%.*s",
+		 (int)sizeof t->next_what - 1, what);	/* cut to fit */
 	tui_edit_set_wall(t, nw);
 	return 0;
 }
