@@ -204,30 +204,30 @@ static int large_wall(const struct wall *w)
 	return w->nifaces > AUTO_LARGE_IFACES;
 }
 
+/* A set-up holding copies of the bases canon[ROLES]. */
+static struct sample_setup *setup_new(unsigned long shape,
+				      enum sample_start start, int large,
+				      const struct lp_basis *canon)
+{
+	struct sample_setup *s = sw_xcalloc(1, sizeof *s);
+	s->shape = shape;
+	s->start = start;
+	s->large = large;
+	for (int p = 0; p < ROLES; p++)
+		lp_basis_copy(&s->canon[p], &canon[p]);
+	return s;
+}
+
 struct sample_setup *sample_ws_setup(const struct sample_ws *ws)
 {
 	if (lp_solver_interrupted(ws->solver))
 		return NULL;	/* the canonical sample may be incomplete */
-	struct sample_setup *s = sw_xcalloc(1, sizeof *s);
-	s->shape = setup_shape(ws->w);
-	s->start = ws->start;
-	s->large = ws->large;
-	for (int p = 0; p < ROLES; p++)
-		lp_basis_copy(&s->canon[p], &ws->canon[p]);
-	return s;
+	return setup_new(setup_shape(ws->w), ws->start, ws->large, ws->canon);
 }
 
 struct sample_setup *sample_setup_copy(const struct sample_setup *s)
 {
-	if (!s)
-		return NULL;
-	struct sample_setup *t = sw_xcalloc(1, sizeof *t);
-	t->shape = s->shape;
-	t->start = s->start;
-	t->large = s->large;
-	for (int p = 0; p < ROLES; p++)
-		lp_basis_copy(&t->canon[p], &s->canon[p]);
-	return t;
+	return s ? setup_new(s->shape, s->start, s->large, s->canon) : NULL;
 }
 
 void sample_setup_free(struct sample_setup *s)
