@@ -198,7 +198,6 @@ int main(int argc, char **argv)
 		if (threads[k] < 1)
 			return usage();
 
-	char err[SW_ERRLEN];
 	struct wall *w;
 	if (wallfile_load(path, &w, err) != SW_OK) {
 		fprintf(stderr, "%s\n", err);
