@@ -17,7 +17,7 @@
  * --friction without ':') apply to every value.
  *
  * Output: a table (value, accepted, p05 and its 99 % interval, p50, p95,
- * mechanisms), or --json; --csv FILE writes the table's rows; --out DIR
+ * mechanisms, families), or --json; --csv FILE writes the table's rows; --out DIR
  * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).  The output
  * policy (outfile.h): --csv and --out are checked before the first
  * value; --csv is never the wall and is written whole (or into a
@@ -42,6 +42,7 @@
 #include "slipwall/report.h"
 #include "slipwall/stats.h"
 #include "slipwall/run.h"
+#include "slipwall/family.h"
 #include "slipwall/tally.h"
 
 #define CMD "sweep"
@@ -93,7 +94,8 @@ static void usage(FILE *f)
 		"                          change the wall for every value, as for 'run'\n"
 		"\n"
 		"The table: value, accepted samples, p05 and its 99 %% interval, p50,\n"
-		"p95, and the number of distinct mechanisms.\n");
+		"p95, the number of distinct mechanisms and of their families\n"
+		"(the sets of blocks that move).\n");
 }
 
 /* "a:b:c" into its three fields (in buf, len bytes); 0 on success. */
@@ -273,6 +275,7 @@ struct point {
 	long samples, accepted;
 	struct stats_summary s;
 	int mechanisms;
+	int families;	/* docs/statistics.md, "Mechanism families" */
 };
 
 /* The wall for value k: the fixed overrides and the value's own. */
@@ -326,6 +329,11 @@ static enum sw_status run_value(const struct mc_config *cfg, struct point *p,
 	p->samples = t.samples;
 	p->accepted = t.accepted;
 	p->mechanisms = t.nmech;
+	struct family_set fs;
+	family_set_init(&fs, cfg->w);
+	family_update(&fs, &t);
+	p->families = fs.nfam;
+	family_set_free(&fs);
 	tally_summary(&t, &p->s);
 	tally_free(&t);
 	return rc;
@@ -366,8 +374,8 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 		printf("%-10s %-10s %-10s", "distance", "x", "y");
 	else
 		printf("%-10s", param_name(a->param));
-	printf(" %-9s %-11s %-25s %-11s %-11s %s\n", "accepted", "p05",
-	       "99 % interval of p05", "p50", "p95", "mechanisms");
+	printf(" %-9s %-11s %-25s %-11s %-11s %-10s %s\n", "accepted", "p05",
+	       "99 % interval of p05", "p50", "p95", "mechanisms", "families");
 	for (int k = 0; k < a->nval; k++) {
 		const struct point *p = &pt[k];
 		char ci[64];
@@ -381,8 +389,9 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 			       p->at[1]);
 		else
 			printf("%-10.4g", p->value);
-		printf(" %-9ld %-11.5g %-25s %-11.5g %-11.5g %d\n", p->accepted,
-		       p->s.p05, ci, p->s.p50, p->s.p95, p->mechanisms);
+		printf(" %-9ld %-11.5g %-25s %-11.5g %-11.5g %-10d %d\n",
+		       p->accepted, p->s.p05, ci, p->s.p50, p->s.p95,
+		       p->mechanisms, p->families);
 	}
 }
 
@@ -441,6 +450,8 @@ static void print_json(const struct sweep_args *a, const struct wall *w,
 		json_double(&j, p->s.p95);
 		json_key(&j, "mechanisms");
 		json_int(&j, p->mechanisms);
+		json_key(&j, "families");
+		json_int(&j, p->families);
 		json_object_end(&j);
 	}
 	json_array_end(&j);
@@ -463,16 +474,17 @@ static int write_csv(const struct sweep_args *a, const struct point *pt)
 	}
 	FILE *f = o.f;
 	fprintf(f, "%s,%ssamples,accepted,p05,p05_lo,p05_hi,p50,p95,"
-		"mechanisms\n", a->param == SW_LOAD_AT ? "distance" :
+		"mechanisms,families\n", a->param == SW_LOAD_AT ? "distance" :
 		param_name(a->param), a->param == SW_LOAD_AT ? "x,y," : "");
 	for (int k = 0; k < a->nval; k++) {
 		const struct point *p = &pt[k];
 		fprintf(f, "%.17g,", p->value);
 		if (a->param == SW_LOAD_AT)
 			fprintf(f, "%.17g,%.17g,", p->at[0], p->at[1]);
-		fprintf(f, "%ld,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n",
+		fprintf(f, "%ld,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n",
 			p->samples, p->accepted, p->s.p05, p->s.p05_lo,
-			p->s.p05_hi, p->s.p50, p->s.p95, p->mechanisms);
+			p->s.p05_hi, p->s.p50, p->s.p95, p->mechanisms,
+			p->families);
 	}
 	if (outfile_commit(&o, err) != SW_OK) {
 		cli_errorf("slipwall sweep: %s", err);

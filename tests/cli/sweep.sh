@@ -54,6 +54,7 @@ p = json.load(open(sys.argv[1]))["points"][int(sys.argv[3])]
 r = json.load(open(sys.argv[2]))
 lam = r["lambda"]
 ok = p["accepted"] == r["accepted"] and p["mechanisms"] == len(r["mechanisms"])
+ok = ok and p["families"] == len(r["families"]) and 1 <= p["families"] <= p["mechanisms"]
 ok = ok and all(p[k] == lam[k] for k in ("p05", "p50", "p95"))
 if not ok: print("#", p, lam)
 sys.exit(not ok)' "$tmp/$sj" "$tmp/run.json" "$idx"
@@ -86,11 +87,11 @@ sys.exit(not all(p[i]["p05"] >= p[i + 1]["p05"] for i in range(len(p) - 1)))' "$
 "$bin" sweep $block --friction 0.4:0.6:0.1 -n 100 --load-at 0,0.1 \
 	--csv "$tmp/s.csv" --out "$tmp/fig" >"$tmp/table.txt" 2>&1
 rc=$?
-check "the table: a row per value with accepted, p05, its interval, p50, p95, mechanisms" \
-	eval '[ $rc = 0 ] && grep -qE "^friction +accepted +p05 +99 % interval of p05 +p50 +p95 +mechanisms" "$tmp/table.txt" &&
+check "the table: a row per value with accepted, p05, its interval, p50, p95, mechanisms, families" \
+	eval '[ $rc = 0 ] && grep -qE "^friction +accepted +p05 +99 % interval of p05 +p50 +p95 +mechanisms +families" "$tmp/table.txt" &&
 	      [ "$(grep -cE "^0\.[456] +100 " "$tmp/table.txt")" = 3 ]'
 check "--csv: the header and 3 rows" \
-	eval '[ "$(head -n 1 "$tmp/s.csv")" = "friction,samples,accepted,p05,p05_lo,p05_hi,p50,p95,mechanisms" ] && [ "$(wc -l <"$tmp/s.csv")" = 4 ]'
+	eval '[ "$(head -n 1 "$tmp/s.csv")" = "friction,samples,accepted,p05,p05_lo,p05_hi,p50,p95,mechanisms,families" ] && [ "$(wc -l <"$tmp/s.csv")" = 4 ]'
 check "--out: sweep.svg, sweep.pdf, sweep.png, the SVG labelled" \
 	eval '[ -s "$tmp/fig/sweep.svg" ] && [ -s "$tmp/fig/sweep.pdf" ] && [ -s "$tmp/fig/sweep.png" ] && grep -q "99 % interval of p05" "$tmp/fig/sweep.svg" && grep -q "friction coefficient" "$tmp/fig/sweep.svg"'
 
