@@ -96,11 +96,14 @@ static enum sample_status slp_map(struct sample_ws *ws,
 {
 	int m = ws->m;
 	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
+	ws->map_failed = 1;
 	for (int k = 0; k < m; k++)
 		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
 	/* LP1: the maximum load with fixed capacities (only bounds changed
 	 * since the last LP1: a few dual simplex pivots) */
 	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
+	if (s == LP_UNBOUNDED || s == LP_INFEASIBLE)
+		ws->map_failed = 0;	/* a verdict (sws_solve's fixed path) */
 	if (s == LP_UNBOUNDED)
 		return SAMPLE_UNBOUNDED;
 	if (s == LP_INFEASIBLE)
@@ -118,10 +121,13 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	if (o->stabilise && !lp_unique(P, TOL_FACE)) {
 		face_bounds(ws);
 		s = sws_solve(ws, LP2, LP_DUAL, r);
+		if (s == LP_UNBOUNDED || s == LP_INFEASIBLE)
+			ws->map_failed = 0;
 		if (s != LP_OPTIMAL)
 			return SAMPLE_NUMERICAL;
 		if (sws_lp2_tiebreak(ws, r) != LP_OPTIMAL)
 			return SAMPLE_NUMERICAL;
+		ws->map_failed = 0;
 		/* on the face the load is LP1's but for the columns whose
 		 * reduced costs count as zero (measured: 2e-9) */
 		double lam2 = lp_col(Q, COL_LAMBDA(ws));
@@ -131,6 +137,7 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		X = Q;
 		ws->slp_lp = LP2;
 	}
+	ws->map_failed = 0;
 	*diff = 0;
 	for (int j = 0; j < 3 * m; j++)
 		ws->x[j] = lp_col(X, j);
@@ -358,9 +365,11 @@ static int piece_jump(struct sample_ws *ws)
  * affine piece (piece_jump; a negative capacity is 0), and the next
  * evaluation of the map verifies it: max |N(c*) - c*| <= PIECE_VERIFY,
  * round-off, means c* is a fixed point of the map itself, and the sample
- * is converged there.  Otherwise the iteration goes back to the iterate
- * before the jump and takes its plain step, and the classification is
- * counted afresh (going on from c* instead was measured: on the demo
+ * is converged there.  Otherwise (also when the map has no value at c*:
+ * an LP of it infeasible or unbounded, or LP2's load off LP1's; a solver
+ * failure, ws->map_failed, still ends the sample) the iteration goes
+ * back to the iterate before the jump and takes its plain step, and the
+ * classification is counted afresh (going on from c* instead was measured: on the demo
  * wall, seed 1, 1,000 samples, 15.6 iterations a sample against 13.1,
  * one sample more not converged, and 5 of the 22 samples whose load
  * differs from the plain iteration's above it, against none).  A failed
@@ -400,18 +409,23 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			lam_prev = NAN;
 		}
 		enum sample_status st = slp_map(ws, o, r, &lam, &diff);
-		if (st != SAMPLE_ACCEPTED)
+		if (st != SAMPLE_ACCEPTED && (!jumped || ws->map_failed))
 			return st;
-		r->lambda_max = lam;
-		if (jumped && diff <= PIECE_VERIFY) {
+		if (st == SAMPLE_ACCEPTED)
+			r->lambda_max = lam;
+		if (jumped && st == SAMPLE_ACCEPTED && diff <= PIECE_VERIFY) {
 			r->converged = 1;
 			return SAMPLE_ACCEPTED;
 		}
 		if (jumped) {
-			/* not a fixed point: back to the iterate before
-			 * the jump, and its plain step (so a failed jump
-			 * leaves the path as it was); no jump again while
-			 * the classification stays the one it failed on */
+			/* not a fixed point, or the map has no value at c*
+			 * (an LP of it infeasible or unbounded there, or
+			 * LP2 off LP1's load: c* is off the plain path, and
+			 * its verdicts are not the sample's): back to the
+			 * iterate before the jump, and its plain step (so a
+			 * failed jump leaves the path as it was); no jump
+			 * again while the classification stays the one it
+			 * failed on */
 			memcpy(ws->c, ws->fallback, sizeof(double) * (size_t)m);
 			jumped = 0;
 			settled = 0;

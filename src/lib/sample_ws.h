@@ -79,6 +79,8 @@ struct sample_ws {
 	double *cstar;		/* m: a piece's fixed point (sws_slp) */
 	double *fallback;	/* m: where a failed jump goes on (sws_slp) */
 	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
+	int map_failed;		/* slp_map stopped on a solver failure (not
+				 * on an LP's verdict or a check) */
 	struct slp_history hist;	/* sws_slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for its restarts */
 	double *x;		/* 3m: stress field of the last SLP LP */

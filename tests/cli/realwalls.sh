@@ -7,6 +7,7 @@
 # `numerical` and 0 `not_converged` rejections (the engine's own
 # failures, docs/method.md "Tolerances"); every accepted sample's
 # lambda_min positive and finite; the count of samples what was asked.
+# Then three replays of samples that were rejected as `numerical`.
 # (That every walls/*.yaml passes `slipwall check`: tests/cli/check.sh.)
 #
 # Not in the fast tier, nor in the sanitizer job (scripts/ci-sanitize.sh
@@ -86,4 +87,15 @@ realwall walls/facade.yaml
 check "body-300, seed 1, samples 1 and 4 (numerical before): both accepted, 0 < lambda_min <= lambda_max" \
 	awk -F, 'NR > 1 { n++; if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + 1e-9)) bad = 1 }
 		END { exit bad || n != 2 }' "$tmp/replay.csv"
+# A 105-block body-loaded wall with friction 1.0, seed 1, sample 18
+# (tests/data/body-105-mu1.yaml): the SLP's jump reached a c* at which
+# LP2 was infeasible on LP1's face, and that rejected the sample as
+# `numerical`; a failed jump now goes back to the plain path
+# (docs/method.md, "The SLP's answer", rule 4).  Its iteration wanders
+# for the whole 1,000 iterations (not_converged), or converges.
+"$bin" run tests/data/body-105-mu1.yaml --replay tests/data/body-105-mu1-seed1-s18.csv \
+	--threads 1 --samples "$tmp/mu1.csv" >/dev/null 2>&1
+check "friction 1.0, seed 1, sample 18 (numerical before): accepted, or not_converged after 1,000 iterations" \
+	awk -F, 'NR > 1 { n++; if (!($2 == "accepted" || ($2 == "not_converged" && $5 == 1000))) bad = 1 }
+		END { exit bad || n != 1 }' "$tmp/mu1.csv"
 tap_end
