@@ -98,7 +98,7 @@ for sig in TERM HUP INT; do
 	wait $pid
 	rc=$?
 	rows=$(grep -c '^0\.[0-9]* \|^1  ' "$tmp/sig.out")
-	csv=$(awk -F, 'NF == 9 { n++ } END { print n + 0 }' "$tmp/sig.csv" 2>/dev/null)
+	csv=$(awk -F, 'NF == 10 { n++ } END { print n + 0 }' "$tmp/sig.csv" 2>/dev/null)
 	tmps=$(ls -a "$tmp" "$tmp/sigfig" 2>/dev/null | grep -c 'tmp$')
 	if [ $rc = 1 ] && grep -q "^slipwall sweep: interrupted" "$tmp/sig.err" &&
 	   [ "$rows" = 1000 ] && [ "$csv" = 1001 ] && [ "$tmps" = 0 ]; then
