@@ -423,14 +423,16 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 	set_points(ws, d);
 }
 
-/* After step 3 found a mechanism (st accepted): LP-min, the virtual work
- * check and the export; loads to the user's units, the status into r. */
-static void finish(struct sample_ws *ws, enum sample_status st,
-		   struct sample_result *r)
+/* After step 3 found a mechanism (st accepted): LP-min and the virtual
+ * work check; the status.  *amin: LP-min's first verdict (LP_OPTIMAL if
+ * it did not run). */
+static enum sample_status check(struct sample_ws *ws, enum sample_status st,
+				struct sample_result *r, enum lp_status *amin)
 {
-	double S = ws->st.S, allow = 0;
+	double allow = 0;
+	*amin = LP_OPTIMAL;
 	if (st == SAMPLE_ACCEPTED) {
-		st = sws_lp_min(ws, LP_DUAL, r);
+		st = sws_lp_min(ws, LP_DUAL, r, amin);
 		if (st == SAMPLE_ACCEPTED)
 			r->vw_residual = sws_virtual_work(ws, r->lambda_min, &allow);
 		/* a residual above VW_TOL is the LP's precision (GLPK's
@@ -448,13 +450,22 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 			lp_reset_basis(ws->lp[AMIN]);
 			st = sws_mechanism(ws, r);
 			if (st == SAMPLE_ACCEPTED)
-				st = sws_lp_min(ws, LP_PRIMAL, r);
+				st = sws_lp_min(ws, LP_PRIMAL, r, NULL);
 			if (st == SAMPLE_ACCEPTED)
 				r->vw_residual = sws_virtual_work(ws, r->lambda_min, &allow);
 		}
 		if (st == SAMPLE_ACCEPTED && !(r->vw_residual <= allow))
 			st = SAMPLE_NUMERICAL;
 	}
+	return st;
+}
+
+/* The export of an accepted sample; loads to the user's units, the
+ * status into r. */
+static void finish(struct sample_ws *ws, enum sample_status st,
+		   struct sample_result *r)
+{
+	double S = ws->st.S;
 	if (st == SAMPLE_ACCEPTED)
 		sws_export(ws, r);
 	r->lambda_lpmax *= S;
@@ -472,8 +483,21 @@ void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		st = sws_standing(ws, r);
 	if (st == SAMPLE_ACCEPTED)
 		st = sws_slp(ws, o, r);
+	enum lp_status amin = LP_OPTIMAL;
 	if (st == SAMPLE_ACCEPTED)
-		st = sws_onset(ws, o, r);
+		st = check(ws, sws_onset(ws, o, SWS_ZERO_DYING, r), r, &amin);
+	/* LP-min infeasible: the mechanism opened a point whose normal
+	 * force, below the first force zero, equilibrium needs (Ferris &
+	 * Tin-Loi wall 2, seed 1, sample 291: 1.7e-6 block weights; docs/
+	 * method.md, "One sample", step 3).  Once more with the strict force
+	 * zero; only an accepted sample replaces the first verdict. */
+	if (st == SAMPLE_NUMERICAL && amin == LP_INFEASIBLE) {
+		st = check(ws, sws_onset(ws, o, SWS_ZERO_STRICT, r), r, &amin);
+		if (st != SAMPLE_ACCEPTED) {
+			st = SAMPLE_NUMERICAL;
+			r->lambda_min = r->vw_residual = NAN;
+		}
+	}
 	finish(ws, st, r);
 }
 
@@ -489,7 +513,8 @@ enum sample_status sample_pattern(struct sample_ws *ws,
 				     (open[2 * k + 1] ? KIN_OPEN_B : 0) |
 				     (slip[k] & SAMPLE_SLIP_POS ? KIN_SLIP_POS : 0) |
 				     (slip[k] & SAMPLE_SLIP_NEG ? KIN_SLIP_NEG : 0));
-	finish(ws, sws_mechanism(ws, r), r);
+	enum lp_status amin;
+	finish(ws, check(ws, sws_mechanism(ws, r), r, &amin), r);
 	return r->status;
 }
 

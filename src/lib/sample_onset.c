@@ -183,15 +183,18 @@ enum sample_status sws_mechanism(struct sample_ws *ws,
 }
 
 /* Step 3: a mechanism complementary to the stress field ws->x with
- * capacities mu c.  Fills ws->v, ws->dn, ws->dt. */
+ * capacities mu c.  Fills ws->v, ws->dn, ws->dt.  A normal force below
+ * the force zero counts as 0: with SWS_ZERO_DYING, max(TOL_FORCE,
+ * 100 tol), for an interface whose capacity is dying away decays
+ * geometrically (by omega per iteration) and still carries ~ tol when
+ * the SLP stops; with SWS_ZERO_STRICT, TOL_FORCE (sample.c's retry when
+ * LP-min finds the first mechanism's fixings infeasible). */
 enum sample_status sws_onset(struct sample_ws *ws,
 			       const struct sample_opts *o,
-			       struct sample_result *r)
+			       enum sws_force_zero z, struct sample_result *r)
 {
-	/* a force below this is zero: an interface whose capacity is dying
-	 * away decays geometrically (by omega per iteration) and still
-	 * carries ~ tol when the SLP stops */
-	double fzero = fmax(TOL_FORCE, 100 * o->tol);
+	double fzero = z == SWS_ZERO_STRICT ? TOL_FORCE :
+		       fmax(TOL_FORCE, 100 * o->tol);
 	int m = ws->m;
 	for (int k = 0; k < m; k++) {
 		unsigned bits = 0;
@@ -237,7 +240,7 @@ static double motion_threshold(const struct sample_ws *ws)
  * at their limits, by the simplex method m from the basis AMIN holds.
  * Leaves the stress field in ws->x. */
 enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
-				 struct sample_result *r)
+				 struct sample_result *r, enum lp_status *lps)
 {
 	int m = ws->m;
 	double thr = motion_threshold(ws);
@@ -257,6 +260,8 @@ enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
 		}
 	}
 	enum lp_status s = sws_solve(ws, AMIN, method, r);
+	if (lps)
+		*lps = s;
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
 	r->lambda_min = lp_obj(P);

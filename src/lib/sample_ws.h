@@ -171,10 +171,15 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 			      double *v);
 enum sample_status sws_standing(struct sample_ws *ws, struct sample_result *r);
 enum sample_status sws_mechanism(struct sample_ws *ws, struct sample_result *r);
+/* the force zero of the onset check: the first (a dying contact's force
+ * is zero) and the strict one of its retry (docs/method.md, "One
+ * sample", step 3) */
+enum sws_force_zero { SWS_ZERO_DYING, SWS_ZERO_STRICT };
 enum sample_status sws_onset(struct sample_ws *ws, const struct sample_opts *o,
-			     struct sample_result *r);
+			     enum sws_force_zero z, struct sample_result *r);
+/* LP-min; its LP's verdict also in *lps (may be NULL) */
 enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
-			      struct sample_result *r);
+			      struct sample_result *r, enum lp_status *lps);
 double sws_virtual_work(const struct sample_ws *ws, double lam, double *allow);
 void sws_export(struct sample_ws *ws, struct sample_result *r);
 

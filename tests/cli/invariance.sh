@@ -91,6 +91,18 @@ replay() {
 replay walls/ferris-tinloi-2.yaml tests/data/ftl2-seed1-traced.csv f2 \
 	"Ferris & Tin-Loi 2's traced samples"
 
+# Ferris & Tin-Loi wall 2, seed 1, sample 291 (tests/data/
+# ftl2-seed1-s291.csv): its mechanism opened a point whose normal force,
+# 1.7e-6 block weights, was below the force zero and needed by
+# equilibrium; LP-min was infeasible and the sample `numerical`.  Now
+# the onset check runs again with the strict force zero (docs/method.md,
+# "One sample", step 5): accepted, lambda_min 0.5206766, from every start.
+replay walls/ferris-tinloi-2.yaml tests/data/ftl2-seed1-s291.csv s291 \
+	"Ferris & Tin-Loi 2's sample 291"
+check "Ferris & Tin-Loi 2, seed 1, sample 291 (numerical before): accepted, lambda_min 0.5206766" \
+	awk -F, 'NR == 2 { ok = $2 == "accepted" && $4 > 0.52067650 && $4 < 0.52067660 } END { exit !ok }' \
+	"$tmp/s291-auto.csv"
+
 # The demo's samples that wander (docs/method.md, "The SLP's answer":
 # no settled piece and a residual above 1e-3 after 100 iterations), in
 # tests/data/demo-wandering.csv: seed 1's 616 and 723, seed 2's 1470 and
