@@ -17,10 +17,10 @@
  * --friction without ':') apply to every value.
  *
  * Output: a table (value, accepted, p05 and its 99 % interval, p50, p95,
- * mechanisms, families), or --json; --csv FILE writes the table's rows; --out DIR
- * draws sweep.svg/.pdf/.png (report.c, report_write_sweep).  The output
- * policy (outfile.h): --csv and --out are checked before the first
- * value; --csv is never the wall and is written whole (or into a
+ * mechanisms, families), or --json; --csv FILE writes the table's rows;
+ * --out DIR draws sweep.svg/.pdf/.png (report.c, report_write_sweep).
+ * The output policy (outfile.h): --csv and --out are checked before the
+ * first value; --csv is never the wall and is written whole (or into a
  * stream); the signal handlers stay through the writing, which finishes
  * the table and the CSV and cancels the figure.  A value that stops the
  * sweep (a load point off the wall, a run that fails) keeps the values

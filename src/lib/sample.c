@@ -489,7 +489,7 @@ void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 	/* LP-min infeasible: the mechanism opened a point whose normal
 	 * force, below the first force zero, equilibrium needs (Ferris &
 	 * Tin-Loi wall 2, seed 1, sample 291: 1.7e-6 block weights; docs/
-	 * method.md, "One sample", step 3).  Once more with the strict force
+	 * method.md, "One sample", step 5).  Once more with the strict force
 	 * zero; only an accepted sample replaces the first verdict. */
 	if (st == SAMPLE_NUMERICAL && amin == LP_INFEASIBLE) {
 		st = check(ws, sws_onset(ws, o, SWS_ZERO_STRICT, r), r, &amin);

@@ -88,28 +88,31 @@ static void face_bounds(struct sample_ws *ws)
  * converged stress field in ws->x and the load factor in r->lambda_max. */
 /* One evaluation of the SLP's map at the capacities ws->c: LP1, and LP2
  * unless LP1's optimum is unique.  Leaves N(c)'s stress field in ws->x,
- * the load factor in *lam and max_k |N_k - c_k| in *diff. */
+ * the load factor in *lam and max_k |N_k - c_k| in *diff.  *failed is 1
+ * when it stopped on a solver failure (an LP without a verdict), not on
+ * an LP's verdict or a check. */
 static enum sample_status slp_map(struct sample_ws *ws,
 				  const struct sample_opts *o,
 				  struct sample_result *r, double *lam,
-				  double *diff)
+				  double *diff, int *failed)
 {
 	int m = ws->m;
 	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
-	ws->map_failed = 1;
+	*failed = 0;
 	for (int k = 0; k < m; k++)
 		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
 	/* LP1: the maximum load with fixed capacities (only bounds changed
 	 * since the last LP1: a few dual simplex pivots) */
 	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
-	if (s == LP_UNBOUNDED || s == LP_INFEASIBLE)
-		ws->map_failed = 0;	/* a verdict (sws_solve's fixed path) */
+	/* infeasible and unbounded are verdicts (sws_solve's fixed path) */
 	if (s == LP_UNBOUNDED)
 		return SAMPLE_UNBOUNDED;
 	if (s == LP_INFEASIBLE)
 		return SAMPLE_NOT_CONVERGED;
-	if (s != LP_OPTIMAL)
+	if (s != LP_OPTIMAL) {
+		*failed = 1;
 		return SAMPLE_NUMERICAL;
+	}
 	*lam = lp_obj(P);
 	struct lp *X = P;	/* where the stress field is read */
 	ws->slp_lp = LP1;
@@ -121,13 +124,14 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	if (o->stabilise && !lp_unique(P, TOL_FACE)) {
 		face_bounds(ws);
 		s = sws_solve(ws, LP2, LP_DUAL, r);
-		if (s == LP_UNBOUNDED || s == LP_INFEASIBLE)
-			ws->map_failed = 0;
-		if (s != LP_OPTIMAL)
+		if (s != LP_OPTIMAL) {
+			*failed = s != LP_UNBOUNDED && s != LP_INFEASIBLE;
 			return SAMPLE_NUMERICAL;
-		if (sws_lp2_tiebreak(ws, r) != LP_OPTIMAL)
+		}
+		if (sws_lp2_tiebreak(ws, r) != LP_OPTIMAL) {
+			*failed = 1;
 			return SAMPLE_NUMERICAL;
-		ws->map_failed = 0;
+		}
 		/* on the face the load is LP1's but for the columns whose
 		 * reduced costs count as zero (measured: 2e-9) */
 		double lam2 = lp_col(Q, COL_LAMBDA(ws));
@@ -137,7 +141,6 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		X = Q;
 		ws->slp_lp = LP2;
 	}
-	ws->map_failed = 0;
 	*diff = 0;
 	for (int j = 0; j < 3 * m; j++)
 		ws->x[j] = lp_col(X, j);
@@ -276,7 +279,8 @@ enum sample_status sws_slp(struct sample_ws *ws,
 			trial = 0;
 			lam_prev = NAN;
 		}
-		enum sample_status st = slp_map(ws, o, r, &lam, &diff);
+		int lp_failed;
+		enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
 		if (st != SAMPLE_ACCEPTED)
 			return st;
 		unsigned long pc = slp_piece(ws);
@@ -367,9 +371,9 @@ static int piece_jump(struct sample_ws *ws)
  * round-off, means c* is a fixed point of the map itself, and the sample
  * is converged there.  Otherwise (also when the map has no value at c*:
  * an LP of it infeasible or unbounded, or LP2's load off LP1's; a solver
- * failure, ws->map_failed, still ends the sample) the iteration goes
- * back to the iterate before the jump and takes its plain step, and the
- * classification is counted afresh (going on from c* instead was measured: on the demo
+ * failure still ends the sample) the iteration goes back to the iterate
+ * before the jump and takes its plain step, and the classification is
+ * counted afresh (going on from c* instead was measured: on the demo
  * wall, seed 1, 1,000 samples, 15.6 iterations a sample against 13.1,
  * one sample more not converged, and 5 of the 22 samples whose load
  * differs from the plain iteration's above it, against none).  A failed
@@ -408,8 +412,9 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			cls = failed = 0;
 			lam_prev = NAN;
 		}
-		enum sample_status st = slp_map(ws, o, r, &lam, &diff);
-		if (st != SAMPLE_ACCEPTED && (!jumped || ws->map_failed))
+		int lp_failed;
+		enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		if (st != SAMPLE_ACCEPTED && (!jumped || lp_failed))
 			return st;
 		if (st == SAMPLE_ACCEPTED)
 			r->lambda_max = lam;

@@ -79,8 +79,6 @@ struct sample_ws {
 	double *cstar;		/* m: a piece's fixed point (sws_slp) */
 	double *fallback;	/* m: where a failed jump goes on (sws_slp) */
 	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
-	int map_failed;		/* slp_map stopped on a solver failure (not
-				 * on an LP's verdict or a check) */
 	struct slp_history hist;	/* sws_slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for its restarts */
 	double *x;		/* 3m: stress field of the last SLP LP */
@@ -172,8 +170,8 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 enum sample_status sws_standing(struct sample_ws *ws, struct sample_result *r);
 enum sample_status sws_mechanism(struct sample_ws *ws, struct sample_result *r);
 /* the force zero of the onset check: the first (a dying contact's force
- * is zero) and the strict one of its retry (docs/method.md, "One
- * sample", step 3) */
+ * is zero) and the strict one of its retry after LP-min (docs/method.md,
+ * "One sample", step 5) */
 enum sws_force_zero { SWS_ZERO_DYING, SWS_ZERO_STRICT };
 enum sample_status sws_onset(struct sample_ws *ws, const struct sample_opts *o,
 			     enum sws_force_zero z, struct sample_result *r);
