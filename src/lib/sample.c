@@ -362,6 +362,8 @@ void sample_ws_free(struct sample_ws *ws)
 	statics_free(&ws->st);
 	free(ws->c);
 	free(ws->c0);
+	lp_basis_free(&ws->slp_start[0]);
+	lp_basis_free(&ws->slp_start[1]);
 	free(ws->cstar);
 	free(ws->fallback);
 	for (int i = 0; i <= SLP_MEMORY; i++) {

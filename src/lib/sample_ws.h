@@ -81,6 +81,7 @@ struct sample_ws {
 	int slp_lp;		/* LP1 or LP2: where slp_map read the field */
 	struct slp_history hist;	/* sws_slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for its restarts */
+	struct lp_basis slp_start[2];	/* LP1's, LP2's bases there */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */
 	double *dn, *dt;	/* 2m, m: joint rates */
