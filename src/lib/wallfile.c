@@ -54,6 +54,7 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1078,6 +1079,42 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
 	return STEP_ON;
 }
 
+/* material.friction given as one number, with a key under it (--set
+ * material.friction.bed=0.3): the number is the friction of both kinds of
+ * joint, so the value becomes {bed: it, head: it} (the same node twice,
+ * as an alias would make it, so that a message about it still points
+ * at the file) and the key is set in that mapping (docs/wall-format.md,
+ * "Overrides").  friction is the scalar node, parent the mapping that
+ * holds it under the key "friction".  The new mapping's id, or 0 (out
+ * of memory). */
+static int edit_friction_mapping(struct reader *r, int k, int parent,
+				 int friction)
+{
+	int map = yaml_document_add_mapping(&r->doc, NULL,
+					    YAML_FLOW_MAPPING_STYLE);
+	if (!map)
+		return 0;
+	edit_mark(r, map, k);
+	static const char *const kinds[] = {"bed", "head"};
+	for (int i = 0; i < 2; i++) {
+		int kc = yaml_document_add_scalar(&r->doc, NULL,
+			(yaml_char_t *)kinds[i], -1, YAML_PLAIN_SCALAR_STYLE);
+		if (!kc || !yaml_document_append_mapping_pair(&r->doc, map, kc,
+							      friction))
+			return 0;
+		edit_mark(r, kc, k);
+	}
+	yaml_node_t *p = yaml_document_get_node(&r->doc, parent);
+	for (yaml_node_pair_t *q = p->data.mapping.pairs.start;
+	     q < p->data.mapping.pairs.top; q++) {
+		yaml_node_t *kn = yaml_document_get_node(&r->doc, q->key);
+		if (q->value == friction && kn->type == YAML_SCALAR_NODE &&
+		    key_is(kn, "friction"))
+			q->value = map;
+	}
+	return map;
+}
+
 /* Apply edit k: parse its value, find or make the path, put the value
  * there. */
 static int edit_apply(struct reader *r, int k)
@@ -1114,19 +1151,27 @@ static int edit_apply(struct reader *r, int k)
 
 	/* walk the path; make the mappings it lacks */
 	snprintf(key, sizeof key, "%s", e->key);
-	int cur = 1;		/* the root */
+	int cur = 1, parent = 0;	/* the root, and the node above */
 	char *save = NULL;
 	char *comp = strtok_r(key, ".", &save);
 	while (comp) {
 		char *next = strtok_r(NULL, ".", &save);
 		yaml_node_t *n = yaml_document_get_node(&r->doc, cur);
 		enum edit_step st;
+		int from = cur;
 		if (n->type == YAML_MAPPING_NODE) {
 			st = edit_step_mapping(r, k, &val, cur, comp, !next,
 					       &cur);
 		} else if (n->type == YAML_SEQUENCE_NODE) {
 			st = edit_step_sequence(r, k, &val, cur, comp, !next,
 						&cur);
+		} else if (comp - key == (ptrdiff_t)strlen("material.friction.") &&
+			   !strncmp(e->key, "material.friction.", (size_t)(comp - key))) {
+			from = edit_friction_mapping(r, k, parent, cur);
+			if (!from)
+				goto oom;
+			st = edit_step_mapping(r, k, &val, from, comp, !next,
+					       &cur);
 		} else {
 			sw_fail(r->err, SW_EINPUT, "%s: '%s' is inside a "
 				"single value, which has no keys", e->label,
@@ -1139,6 +1184,7 @@ static int edit_apply(struct reader *r, int k)
 			rc = st == STEP_DONE ? 0 : -1;
 			goto out;
 		}
+		parent = from;
 		comp = next;
 	}
 	sw_fail(r->err, SW_EINPUT, "%s: not a key of a wall file", e->label);

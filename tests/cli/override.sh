@@ -51,6 +51,8 @@ same "--friction 0.45" $block 's/^  friction: 0.6$/  friction: 0.45/' \
 	--friction 0.45
 same "--friction 0.3,0.5 (bed, head)" $stack \
 	's/^  friction: 0.6$/  friction: {bed: 0.3, head: 0.5}/' --friction 0.3,0.5
+same "--set material.friction.bed=0.3 on a file with one friction (head keeps 0.6)" $stack \
+	's/^  friction: 0.6$/  friction: {bed: 0.3, head: 0.6}/' --set material.friction.bed=0.3
 same "--load-at 0,0.1" $block 's/at: \[0, 0.6\]/at: [0, 0.1]/' --load-at 0,0.1
 same "--load-direction 1,0.5 (a point load)" $block \
 	's/direction: \[1, 0\], magnitude/direction: [1, 0.5], magnitude/' \
@@ -141,7 +143,9 @@ bad "--load-direction 0,0" "^--load-direction 0,0: direction must be a non-zero"
 bad "--set without =" "--set: 'material.friction'" run $block --set material.friction
 bad "--set an unknown key" "^--set material.frict=1: unknown key 'frict' in material" run $block --set material.frict=1
 bad "--set a list item out of range" "not an item of a list of 1" run $block --set 'loads.2.point.at=[0,0]'
-bad "--set a key inside a number" "inside a single value" run $block --set material.friction.bed=1
+bad "--set a key inside a number" "^--set material.unit_weight.x=1: 'x' is inside a single value" run $block --set material.unit_weight.x=1
+bad "--set a key inside one friction's bed" "^--set material.friction.bed.x=1: 'x' is inside a single value" run $block --set material.friction.bed.x=1
+bad "--set material.friction.bed=-1 on one friction (the reader's range check)" "^--set material.friction.bed=-1: friction .bed. must be >= 0" run $block --set material.friction.bed=-1
 bad "--set a value that is not YAML" "not a YAML value" run $block --set 'material.friction=[1'
 bad "--set analysis.samples=0 (range)" "^--set analysis.samples=0: samples" run $block --set analysis.samples=0
 bad "--friction without a value" "needs a value" run $block --friction
