@@ -31,6 +31,7 @@ struct history_row {
 	char wall[128];		/* the wall's name */
 	char what[96];		/* what the run changed */
 	double mu_bed, mu_head;
+	double mu_cov;		/* friction's cov, 0: not random */
 	double depth;
 	int anywhere;		/* contacts.positions: anywhere */
 	int load;		/* 0 point, 1 body, -1 none: the first load */

@@ -27,8 +27,12 @@
 
 #define HISTORY_HEADER                                                      \
 	"session\trun\twall\twhat\tmu_bed\tmu_head\tdepth\tanywhere\tload\t" \
-	"x\ty\tdx\tdy\tsamples\taccepted\tp05\tp05_lo\tp05_hi\tp50\tp95\tfile\n"
-#define HISTORY_COLS 21
+	"x\ty\tdx\tdy\tsamples\taccepted\tp05\tp05_lo\tp05_hi\tp50\tp95\tfile\t" \
+	"mu_cov\n"
+/* columns of a row; the rows of an index written before mu_cov (the
+ * last column, so that they are the first 21 of a row) have one less,
+ * and are read with mu_cov 0 (friction not random) */
+#define HISTORY_COLS 22
 #define HISTORY_MAX_BYTES (4L << 20)	/* read at most the last 4 MiB */
 
 /* Open path with flags (O_NONBLOCK added); -1 and err unless it is a
@@ -103,13 +107,13 @@ enum sw_status history_append(const char *path, const struct history_row *r,
 	int n = snprintf(line, sizeof line,
 			 "%s\t%d\t%s\t%s\t%.17g\t%.17g\t%.17g\t%d\t%s\t"
 			 "%.17g\t%.17g\t%.17g\t%.17g\t%ld\t%ld\t"
-			 "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%s\n",
+			 "%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%s\t%.17g\n",
 			 r->session, r->run, wall, what, r->mu_bed, r->mu_head,
 			 r->depth, r->anywhere,
 			 r->load == 0 ? "point" : r->load == 1 ? "body" : "none",
 			 r->at[0], r->at[1], r->dir[0], r->dir[1], r->samples,
 			 r->accepted, r->p05, r->p05_lo, r->p05_hi, r->p50,
-			 r->p95, file);
+			 r->p95, file, r->mu_cov);
 	if (n < 0 || (size_t)n >= sizeof line)
 		return sw_fail(err, SW_EIO, "%s: history line too long", path);
 	int fd = history_open(path, O_WRONLY | O_APPEND | O_CREAT, NULL, err);
@@ -173,9 +177,13 @@ static int history_parse(char *line, struct history_row *r)
 {
 	char *f[HISTORY_COLS + 1];
 	long run, any, samples, accepted;
-	if (history_split(line, f, HISTORY_COLS + 1) != HISTORY_COLS)
+	int cols = history_split(line, f, HISTORY_COLS + 1);
+	if (cols != HISTORY_COLS && cols != HISTORY_COLS - 1)
 		return -1;
 	memset(r, 0, sizeof *r);
+	if (cols == HISTORY_COLS &&
+	    (history_num(f[21], &r->mu_cov) || !(r->mu_cov >= 0)))
+		return -1;
 	if (strlen(f[0]) >= sizeof r->session || history_long(f[1], &run) ||
 	    history_long(f[7], &any) || history_long(f[13], &samples) ||
 	    history_long(f[14], &accepted))

@@ -281,9 +281,14 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 		return;
 	const struct history_row *A = h[c->a], *B = h[c->b];
 	attron(A_BOLD);
-	snprintf(buf, sizeof buf, "compare: A run %d (%s %.3g/%.3g)  B run %d "
-		 "(%s %.3g/%.3g)", A->run, tui_mu(t), A->mu_bed, A->mu_head,
-		 B->run, tui_mu(t), B->mu_bed, B->mu_head);
+	char ca[32] = "", cb[32] = "";	/* random friction: the cov */
+	if (A->mu_cov > 0)
+		snprintf(ca, sizeof ca, " cov %.3g", A->mu_cov);
+	if (B->mu_cov > 0)
+		snprintf(cb, sizeof cb, " cov %.3g", B->mu_cov);
+	snprintf(buf, sizeof buf, "compare: A run %d (%s %.3g/%.3g%s)  B run %d "
+		 "(%s %.3g/%.3g%s)", A->run, tui_mu(t), A->mu_bed, A->mu_head,
+		 ca, B->run, tui_mu(t), B->mu_bed, B->mu_head, cb);
 	tui_text(y0, 0, C, buf);
 	attroff(A_BOLD);
 	if (c->err[0]) {

@@ -241,6 +241,21 @@ if within 10 cov_gone; then
 else
 	not_ok "u: fixed friction again, no cov in the title" "$(title w)"
 fi
+# run r1 has ended (the undo): its history row keeps the cov, on the H
+# screen and in history.tsv (its last column, mu_cov)
+T send-keys -t t:w H
+if wait_for w "/[0-9.]+ cov 0\.2  depth" 5; then
+	ok "H: run $r1's row shows the friction's cov"
+else
+	not_ok "H: run $r1's row shows the friction's cov" "$(screen w)"
+fi
+T send-keys -t t:w Escape
+if awk -F'\t' -v r="$r1" '$2 == r && $NF == "0.20000000000000001" { found = 1 } END { exit !found }' \
+	"$SLIPWALL_RUNS/history.tsv"; then
+	ok "history.tsv: run $r1's row ends with its mu_cov, 0.2"
+else
+	not_ok "history.tsv: run $r1's row ends with its mu_cov, 0.2" "$(tail -n 3 "$SLIPWALL_RUNS/history.tsv")"
+fi
 
 T send-keys -t t:w q
 wait_for w '^samples: ' 10
