@@ -426,13 +426,14 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 }
 
 /* After step 3 found a mechanism (st accepted): LP-min and the virtual
- * work check; the status.  *amin: LP-min's first verdict (LP_OPTIMAL if
- * it did not run). */
+ * work check; the status.  *amin, unless amin is NULL: LP-min's first
+ * verdict (LP_OPTIMAL if it did not run). */
 static enum sample_status check(struct sample_ws *ws, enum sample_status st,
 				struct sample_result *r, enum lp_status *amin)
 {
 	double allow = 0;
-	*amin = LP_OPTIMAL;
+	if (amin)
+		*amin = LP_OPTIMAL;
 	if (st == SAMPLE_ACCEPTED) {
 		st = sws_lp_min(ws, LP_DUAL, r, amin);
 		if (st == SAMPLE_ACCEPTED)
@@ -515,8 +516,7 @@ enum sample_status sample_pattern(struct sample_ws *ws,
 				     (open[2 * k + 1] ? KIN_OPEN_B : 0) |
 				     (slip[k] & SAMPLE_SLIP_POS ? KIN_SLIP_POS : 0) |
 				     (slip[k] & SAMPLE_SLIP_NEG ? KIN_SLIP_NEG : 0));
-	enum lp_status amin;
-	finish(ws, check(ws, sws_mechanism(ws, r), r, &amin), r);
+	finish(ws, check(ws, sws_mechanism(ws, r), r, NULL), r);
 	return r->status;
 }
 
