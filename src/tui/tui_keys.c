@@ -220,7 +220,8 @@ static const struct tui_key tui_keys[] = {
 	 BAR(BROWSE, "Home/End", 3)},
 	{.ch = {'='}, .name = "=", .fn = tui_browse_key_pair,
 	 .help = "sample browser: the same mechanism's least and largest\n"
-		 "load, one then the other",
+		 "load, one then the other (the same family's where the\n"
+		 "sample is the only one of its mechanism)",
 	 BAR(BROWSE, "= pair", 4)},
 	{.ch = {'<', '>'}, .name = "< / >", .fn = tui_browse_key_joint,
 	 .help = "sample browser: previous / next joint, marked on the wall;\n"

@@ -9,7 +9,8 @@
 # the pair of its mechanism, the least and the largest load, the two
 # samples with the same mechanism number and their rows' loads; Esc
 # closes the browser.  With random friction (v 0.2: run 2) the legend
-# gives the shown sample's least and largest mu.
+# gives the shown sample's least and largest mu.  On walls/body-100.yaml
+# (20 samples), = on a sample alone in its mechanism pairs its family.
 #
 # Usage (from the source root): bash tests/tui/tui_browse.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -134,4 +135,64 @@ else
 	not_ok "random friction: the sample's mu range in the legend" "$(screen b)"
 fi
 T send-keys -t t:b q
+
+# = on a wall of real size: walls/body-100.yaml (105 blocks), 20
+# samples.  Nearly every sample has joint states of its own; on one
+# that is the only one of its mechanism, = pairs its family instead
+# (the same moving blocks): the least and the largest load of the
+# family's samples.  Which sample that is, and its family, come from
+# `run --replay` of run 1's samples file (its JSON's mechanisms: count
+# 1, and the family number).
+export SLIPWALL_RUNS=$tmp/runs-body
+sed -e 's/^  samples: .*/  samples: 20/' walls/body-100.yaml >"$tmp/body.yaml"
+start f LANG=C LC_ALL=C -- "$tmp/body.yaml"
+if wait_run f 1 done 300; then
+	ok "body-100: run 1 done"
+else
+	not_ok "body-100: run 1 done" "$(screen f)"
+fi
+bcsv=$(run_csv 1)
+"$bin" run "$tmp/body.yaml" --replay "$bcsv" --threads 2 --json >"$tmp/body.json" 2>/dev/null
+# "INDEX FAMILY LO_SAMPLE LO HI_SAMPLE HI": a sample (1 first) alone in
+# its mechanism, its family, and that family's least and largest load
+# (%.4g) with their samples (the earliest of equal loads)
+read -r one fam plo llo phi lhi <<<"$(python3 - "$bcsv" "$tmp/body.json" <<'PY'
+import csv, json, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["status"] == "accepted"]
+d = json.load(open(sys.argv[2]))
+lam = {int(r["sample"]): float(r["lambda_min"]) for r in rows}
+for m in d["mechanisms"]:
+    if m["count"] != 1:
+        continue
+    one = [i for i, x in lam.items() if x == m["lambda_lo"]]
+    if len(one) != 1:
+        continue
+    # its family (0 first in the JSON, by frequency, as the workbench's
+    # numbers are 1 first) and that family's least and largest loads
+    f = d["families"][m["family"]]
+    lo = min(i for i, x in lam.items() if x == f["lambda_lo"])
+    hi = min(i for i, x in lam.items() if x == f["lambda_hi"])
+    print(one[0] + 1, m["family"] + 1, lo + 1, "%.4g" % lam[lo], hi + 1, "%.4g" % lam[hi])
+    break
+PY
+)"
+T send-keys -t t:f S
+wait_for f '^sample 20: ' 5
+T send-keys -t t:f Home
+wait_for f '^sample 1: ' 5
+for ((i = 1; i < ${one:-1}; i++)); do
+	T send-keys -t t:f ']'
+	wait_for f "^sample $((i + 1)): " 5
+done
+T send-keys -t t:f '='
+wait_for f '^pair: ' 5
+msg=$(screen f | grep '^pair: ')
+if [ -n "$one" ] && [ "$plo" != "$phi" ] &&
+   printf '%s\n' "$msg" | grep -qE "^pair: family $fam/[0-9]+, lam_min $llo \(sample $plo\) \.\. $lhi \(sample $phi\); = alternates"; then
+	ok "body-100, sample $one (alone in its mechanism): = pairs family $fam, samples $plo and $phi"
+else
+	not_ok "body-100: = on a sample alone in its mechanism pairs its family" \
+		"'$msg'; expected family $fam, $llo (sample $plo) .. $lhi (sample $phi), from sample $one"
+fi
+T send-keys -t t:f q
 tap_end
