@@ -1083,8 +1083,8 @@ static enum edit_step edit_step_sequence(struct reader *r, int k,
  * material.friction.bed=0.3): the number is the friction of both kinds of
  * joint, so the value becomes {bed: it, head: it} (the same node twice,
  * as an alias would make it, so that a message about it still points
- * at the file) and the key is set in that mapping (docs/wall-format.md,
- * "Overrides").  friction is the scalar node, parent the mapping that
+ * at the file) and the key is set in that mapping (docs/run.md, the
+ * overrides).  friction is the scalar node, parent the mapping that
  * holds it under the key "friction".  The new mapping's id, or 0 (out
  * of memory). */
 static int edit_friction_mapping(struct reader *r, int k, int parent,

@@ -223,11 +223,11 @@ int tui_browse_mech_rank(const struct tui *t, const char *joint, int *n)
 	return k;
 }
 
-/* The family of a kept sample's mechanism (an index into the run's
- * family set), or -1. */
-static int tui_browse_family(const struct tui *t, const char *joint)
+/* The family in fs (the run's, up to date: tui_run_families) of a kept
+ * sample's mechanism, or -1. */
+static int tui_browse_family(const struct tui *t, const struct family_set *fs,
+			     const char *joint)
 {
-	const struct family_set *fs = tui_run_families(t);
 	int m = fs ? tally_find(&t->run.tally, joint) : -1;
 	return m >= 0 && m < fs->nseen ? fs->of[m] : -1;
 }
@@ -239,6 +239,7 @@ static void tui_browse_range(const struct tui *t, long i,
 			     const struct tui_browse_sample *s, int f,
 			     long *lo, long *hi, double *llo, double *lhi)
 {
+	const struct family_set *fs = f >= 0 ? tui_run_families(t) : NULL;
 	struct tui_browse_sample o;
 	*lo = *hi = i;
 	*llo = *lhi = s->lam;
@@ -246,7 +247,7 @@ static void tui_browse_range(const struct tui *t, long i,
 		tui_browse_get(t, j, &o);
 		if (o.status != SAMPLE_ACCEPTED)
 			continue;
-		if (f >= 0 ? tui_browse_family(t, o.joint) != f
+		if (f >= 0 ? tui_browse_family(t, fs, o.joint) != f
 			   : strcmp(o.joint, s->joint) != 0)
 			continue;
 		if (o.lam < *llo || (o.lam == *llo && j < *lo)) {
@@ -285,7 +286,8 @@ void tui_browse_key_pair(struct tui *t, int ch)
 	double llo, lhi;
 	int f = -1, n, k;
 	tui_browse_range(t, i, &s, -1, &lo, &hi, &llo, &lhi);
-	if (lo == hi && (f = tui_browse_family(t, s.joint)) >= 0) {
+	if (lo == hi &&
+	    (f = tui_browse_family(t, tui_run_families(t), s.joint)) >= 0) {
 		tui_browse_range(t, i, &s, f, &lo, &hi, &llo, &lhi);
 		k = tui_family_rank(t, s.joint, &n);
 	} else {
