@@ -16,6 +16,8 @@
  *                (tui_run.c reaches it only through t->run_ended)
  *   tui_compare.c two runs of H compared, a run's wall kept and reopened,
  *                p05 against the previous run
+ *   tui_pair.c   the sample browser's = (the pair of a mechanism, or of
+ *                a family): it reads the browser, the run and the panes
  *   tui_io.c     the keys that read and write files: save, open, report
  *   tui_edit.c   the edits of the wall (through src/lib/wedit.c), undo
  *   tui_wall.c   the wall pane: sketch, mechanism, load, block cursor
@@ -411,8 +413,9 @@ int tui_browse_sample_at(const struct tui *t, long i,
 /* The browser's keys (tui_keys.c's table): */
 void tui_browse_key_toggle(struct tui *t, int ch);	/* S, Esc */
 void tui_browse_key_step(struct tui *t, int ch);	/* [ ] Home End */
-void tui_browse_key_pair(struct tui *t, int ch);	/* = */
 void tui_browse_key_joint(struct tui *t, int ch);	/* < > */
+/* The pair of the shown sample's mechanism, or family (tui_pair.c): = */
+void tui_pair_key(struct tui *t, int ch);
 /* A click on the wall with the browser open: the joint nearest the
  * point (wall coordinates) is picked. */
 void tui_browse_pick_at(struct tui *t, double x, double y);

@@ -27,12 +27,7 @@
  * its draw read (docs/workbench.md, "The sample browser").  It stays
  * picked across runs while the wall has that many joints.
  *
- * The pair (=): among the kept accepted samples with the shown one's
- * joint states (the same mechanism), the ones of the least and of the
- * largest load; = shows one, then the other.  Where the shown sample is
- * the only one kept of its mechanism, as nearly every sample of a wall
- * of real size is (each has its own joint states), the pair is of its
- * family (the same moving blocks) instead.
+ * The pair (=) is tui_pair.c's.
  */
 #include <limits.h>
 #include <math.h>
@@ -221,91 +216,6 @@ int tui_browse_mech_rank(const struct tui *t, const char *joint, int *n)
 			k = j + 1;
 	free(idx);
 	return k;
-}
-
-/* The family in fs (the run's, up to date: tui_run_families) of a kept
- * sample's mechanism, or -1. */
-static int tui_browse_family(const struct tui *t, const struct family_set *fs,
-			     const char *joint)
-{
-	int m = fs ? tally_find(&t->run.tally, joint) : -1;
-	return m >= 0 && m < fs->nseen ? fs->of[m] : -1;
-}
-
-/* Of the kept accepted samples that match s (its mechanism, or its
- * family f when f >= 0), the least load's (*lo) and the largest's (*hi),
- * the earlier sample on a tie; s is sample i. */
-static void tui_browse_range(const struct tui *t, long i,
-			     const struct tui_browse_sample *s, int f,
-			     long *lo, long *hi, double *llo, double *lhi)
-{
-	const struct family_set *fs = f >= 0 ? tui_run_families(t) : NULL;
-	struct tui_browse_sample o;
-	*lo = *hi = i;
-	*llo = *lhi = s->lam;
-	for (long j = tui_browse_first(t); j < t->browse.next; j++) {
-		tui_browse_get(t, j, &o);
-		if (o.status != SAMPLE_ACCEPTED)
-			continue;
-		if (f >= 0 ? tui_browse_family(t, fs, o.joint) != f
-			   : strcmp(o.joint, s->joint) != 0)
-			continue;
-		if (o.lam < *llo || (o.lam == *llo && j < *lo)) {
-			*llo = o.lam;
-			*lo = j;
-		}
-		if (o.lam > *lhi || (o.lam == *lhi && j < *hi)) {
-			*lhi = o.lam;
-			*hi = j;
-		}
-	}
-}
-
-void tui_browse_key_pair(struct tui *t, int ch)
-{
-	struct tui_browse *b = &t->browse;
-	struct tui_browse_sample s;
-	(void)ch;
-	if (!b->open)
-		tui_browse_key_toggle(t, 'S');
-	long first = tui_browse_first(t);
-	long i = tui_browse_index(t);
-	if (first < 0)
-		return;
-	/* the mechanism: the shown sample's, else the latest accepted one */
-	for (; i >= first; i--) {
-		tui_browse_get(t, i, &s);
-		if (s.status == SAMPLE_ACCEPTED)
-			break;
-	}
-	if (i < first) {
-		tui_message(t, 1, "pair: no accepted sample kept");
-		return;
-	}
-	long lo, hi;
-	double llo, lhi;
-	int f = -1, n, k;
-	tui_browse_range(t, i, &s, -1, &lo, &hi, &llo, &lhi);
-	if (lo == hi &&
-	    (f = tui_browse_family(t, tui_run_families(t), s.joint)) >= 0) {
-		tui_browse_range(t, i, &s, f, &lo, &hi, &llo, &lhi);
-		k = tui_family_rank(t, s.joint, &n);
-	} else {
-		f = -1;
-		k = tui_browse_mech_rank(t, s.joint, &n);
-	}
-	long shown = tui_browse_index(t);
-	b->at = shown == lo ? hi : lo;
-	const char *unit = strcmp(tui_load_unit(t->w), "N") ? "" : " N";
-	if (lo == hi)
-		tui_message(t, 0, "pair: sample %ld is the only one kept of its "
-			    "mechanism and of its family", lo + 1);
-	else
-		tui_message(t, 0, "pair: %s %d/%d, %s_min %.4g%s (sample "
-			    "%ld) .. %.4g%s (sample %ld); = alternates",
-			    f >= 0 ? "family" : "mechanism", k, n,
-			    tui_lam(t), tui_load(t, llo), unit, lo + 1,
-			    tui_load(t, lhi), unit, hi + 1);
 }
 
 void tui_browse_key_joint(struct tui *t, int ch)

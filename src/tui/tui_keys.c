@@ -218,7 +218,7 @@ static const struct tui_key tui_keys[] = {
 	 .fn = tui_browse_key_step,
 	 .help = "sample browser: first / latest sample kept",
 	 BAR(BROWSE, "Home/End", 3)},
-	{.ch = {'='}, .name = "=", .fn = tui_browse_key_pair,
+	{.ch = {'='}, .name = "=", .fn = tui_pair_key,
 	 .help = "sample browser: the same mechanism's least and largest\n"
 		 "load, one then the other (the same family's where the\n"
 		 "sample is the only one of its mechanism)",
