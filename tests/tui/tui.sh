@@ -327,7 +327,8 @@ if wait_samples b 3 30 && wait_samples c 3 30; then
 	within 10 gone "$(cat "$tmp/b.pid")"
 	within 10 gone "$(cat "$tmp/c.pid")"
 fi
-files=$(awk -F'\t' '$NF ~ /\/twin-[^\/]*$/ { print $NF }' "$SLIPWALL_RUNS/history.tsv" 2>/dev/null)
+files=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "file") c = i; next }
+	c && $c ~ /\/twin-[^\/]*$/ { print $c }' "$SLIPWALL_RUNS/history.tsv" 2>/dev/null)
 fb=$(printf '%s\n' "$files" | sed -n 1p)
 fc=$(printf '%s\n' "$files" | sed -n 2p)
 if [ "$(printf '%s\n' "$files" | grep -c .)" -eq 2 ] && [ "$fb" != "$fc" ] &&
