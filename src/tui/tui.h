@@ -277,6 +277,10 @@ void tui_bar(struct tui *t, int y, const char *text);
 /* The symbols of the locale: "λ" or "lam", "μ" or "mu". */
 const char *tui_lam(const struct tui *t);
 const char *tui_mu(const struct tui *t);
+/* "μ BED/HEAD", and " cov C" when the friction is random (C > 0): the
+ * friction as the home line, the history and compare show it; buf. */
+const char *tui_friction(const struct tui *t, char *buf, size_t len,
+			 double bed, double head, double cov);
 /* "s" unless n is 1: "%d run%s", n, tui_s(n). */
 const char *tui_s(long n);
 /* A probability as a percentage, "0.1 %", "98 %", "< 0.01 %" ("-": NaN). */
@@ -375,6 +379,10 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w);
 /* The run's mechanism families, up to date with its tally (NULL: no
  * run). */
 struct family_set *tui_run_families(const struct tui *t);
+/* The family in fs (tui_run_families') of mechanism joint, or -1 when
+ * the tally does not have it (or fs is NULL). */
+int tui_run_family_of(const struct tui *t, const struct family_set *fs,
+		      const char *joint);
 /* The family of mechanism joint: its place among the most frequent
  * families (m/M's number), 1 .. *n, or 0 when the tally does not have
  * it. */

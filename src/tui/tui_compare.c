@@ -281,14 +281,12 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 		return;
 	const struct history_row *A = h[c->a], *B = h[c->b];
 	attron(A_BOLD);
-	char ca[32] = "", cb[32] = "";	/* random friction: the cov */
-	if (A->mu_cov > 0)
-		snprintf(ca, sizeof ca, " cov %.3g", A->mu_cov);
-	if (B->mu_cov > 0)
-		snprintf(cb, sizeof cb, " cov %.3g", B->mu_cov);
-	snprintf(buf, sizeof buf, "compare: A run %d (%s %.3g/%.3g%s)  B run %d "
-		 "(%s %.3g/%.3g%s)", A->run, tui_mu(t), A->mu_bed, A->mu_head,
-		 ca, B->run, tui_mu(t), B->mu_bed, B->mu_head, cb);
+	char fa[64], fb[64];
+	snprintf(buf, sizeof buf, "compare: A run %d (%s)  B run %d (%s)",
+		 A->run, tui_friction(t, fa, sizeof fa, A->mu_bed, A->mu_head,
+				      A->mu_cov),
+		 B->run, tui_friction(t, fb, sizeof fb, B->mu_bed, B->mu_head,
+				      B->mu_cov));
 	tui_text(y0, 0, C, buf);
 	attroff(A_BOLD);
 	if (c->err[0]) {

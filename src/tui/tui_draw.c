@@ -143,6 +143,16 @@ const char *tui_mu(const struct tui *t)
 	return t->utf8 ? "\u03bc" : "mu";
 }
 
+const char *tui_friction(const struct tui *t, char *buf, size_t len,
+			 double bed, double head, double cov)
+{
+	char c[32] = "";
+	if (cov > 0)	/* random friction: the means and the cov */
+		snprintf(c, sizeof c, " cov %.3g", cov);
+	snprintf(buf, len, "%s %.3g/%.3g%s", tui_mu(t), bed, head, c);
+	return buf;
+}
+
 const char *tui_s(long n)
 {
 	return n == 1 ? "" : "s";

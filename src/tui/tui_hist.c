@@ -218,8 +218,7 @@ static void tui_hist_lit_family(const struct tui *t, double lo, double width,
 		if (!tui_browse_sample_at(t, i, &s) ||
 		    s.status != SAMPLE_ACCEPTED)
 			continue;
-		int m = tally_find(&t->run.tally, s.joint);
-		if (m >= 0 && m < fs->nseen && fs->of[m] == f)
+		if (tui_run_family_of(t, fs, s.joint) == f)
 			lit[stats_bin(tui_load(t, s.lam), lo, width, nb)] = 1;
 	}
 }

@@ -117,7 +117,7 @@ static const char *tui_history_num(char *buf, size_t len, double v)
 void tui_history_lines(const struct tui *t, const struct history_row *h,
 		       char *a, size_t alen, char *b, size_t blen)
 {
-	char d[32], ld[64], p[32], lo[32], hi[32], m[32], q[32], cov[32] = "";
+	char d[32], ld[64], p[32], lo[32], hi[32], m[32], q[32], fr[64];
 	if (h->anywhere)
 		snprintf(d, sizeof d, "anywhere");
 	else
@@ -130,10 +130,9 @@ void tui_history_lines(const struct tui *t, const struct history_row *h,
 			 h->dir[1]);
 	else
 		snprintf(ld, sizeof ld, "no load");
-	if (h->mu_cov > 0)	/* random friction: the means and the cov */
-		snprintf(cov, sizeof cov, " cov %.3g", h->mu_cov);
-	snprintf(a, alen, "%s %.3g/%.3g%s  %s  %s", tui_mu(t), h->mu_bed,
-		 h->mu_head, cov, d, ld);
+	snprintf(a, alen, "%s  %s  %s",
+		 tui_friction(t, fr, sizeof fr, h->mu_bed, h->mu_head,
+			      h->mu_cov), d, ld);
 	tui_history_num(lo, sizeof lo, h->p05_lo);
 	tui_history_num(hi, sizeof hi, h->p05_hi);
 	snprintf(b, blen, "n %ld  acc %ld  p05 %s [%s, %s]  p50 %s  p95 %s %s",

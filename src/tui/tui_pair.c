@@ -19,15 +19,6 @@
 
 #include "tui.h"
 
-/* The family in fs (the run's, up to date: tui_run_families) of a kept
- * sample's mechanism, or -1. */
-static int tui_pair_family(const struct tui *t, const struct family_set *fs,
-			   const char *joint)
-{
-	int m = fs ? tally_find(&t->run.tally, joint) : -1;
-	return m >= 0 && m < fs->nseen ? fs->of[m] : -1;
-}
-
 /* Of the kept accepted samples that match s (its mechanism, or its
  * family f when f >= 0), the least load's (*lo) and the largest's (*hi),
  * the earlier sample on a tie. */
@@ -42,7 +33,7 @@ static void tui_pair_range(const struct tui *t,
 	for (long j = tui_browse_first(t); j >= 0 && j < t->browse.next; j++) {
 		if (!tui_browse_sample_at(t, j, &o) || o.status != SAMPLE_ACCEPTED)
 			continue;
-		if (f >= 0 ? tui_pair_family(t, fs, o.joint) != f
+		if (f >= 0 ? tui_run_family_of(t, fs, o.joint) != f
 			   : strcmp(o.joint, s->joint) != 0)
 			continue;
 		if (o.lam < *llo || (o.lam == *llo && j < *lo)) {
@@ -78,7 +69,7 @@ void tui_pair_key(struct tui *t, int ch)
 	int f = -1, n, k;
 	tui_pair_range(t, &s, -1, &lo, &hi, &llo, &lhi);
 	if (lo == hi &&
-	    (f = tui_pair_family(t, tui_run_families(t), s.joint)) >= 0) {
+	    (f = tui_run_family_of(t, tui_run_families(t), s.joint)) >= 0) {
 		tui_pair_range(t, &s, f, &lo, &hi, &llo, &lhi);
 		k = tui_family_rank(t, s.joint, &n);
 	} else {

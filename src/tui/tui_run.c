@@ -173,6 +173,13 @@ struct family_set *tui_run_families(const struct tui *t)
 	return fs;
 }
 
+int tui_run_family_of(const struct tui *t, const struct family_set *fs,
+		      const char *joint)
+{
+	int m = fs ? tally_find(&t->run.tally, joint) : -1;
+	return m >= 0 && m < fs->nseen ? fs->of[m] : -1;
+}
+
 void tui_run_end(struct tui *t)
 {
 	struct tui_run *r = &t->run;

@@ -346,13 +346,13 @@ int tui_family_rank(const struct tui *t, const char *joint, int *n)
 {
 	struct family_set *fs = tui_run_families(t);
 	*n = fs ? fs->nfam : 0;
-	int m = fs ? tally_find(&t->run.tally, joint) : -1;
-	if (m < 0 || m >= fs->nseen)
+	int f = tui_run_family_of(t, fs, joint);
+	if (f < 0)
 		return 0;
 	int *idx = malloc(sizeof(int) * (size_t)fs->nfam);
 	int nf = idx ? family_top(fs, idx, fs->nfam) : 0, k = 0;
 	for (int i = 0; i < nf && !k; i++)
-		if (idx[i] == fs->of[m])
+		if (idx[i] == f)
 			k = i + 1;
 	free(idx);
 	return k;
