@@ -366,6 +366,7 @@ void sample_ws_free(struct sample_ws *ws)
 	lp_basis_free(&ws->slp_start[1]);
 	free(ws->cstar);
 	free(ws->fallback);
+	free(ws->ends.buf);
 	for (int i = 0; i <= SLP_MEMORY; i++) {
 		free(ws->hist.c[i]);
 		free(ws->hist.f[i]);

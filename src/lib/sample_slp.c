@@ -5,7 +5,8 @@
  * load factor lambda_max.  Its map is LP1 and LP2 (sample_lp.c builds
  * them; LP2's tie-break is sample_tie.c's); the iteration is plain,
  * Anderson-accelerated, or (the default) the piece path, whose jump to
- * an affine piece's fixed point is piece.c's.  sws_capacity is also
+ * an affine piece's fixed point is piece.c's, in up to three attempts
+ * on a large wall (slp_attempts).  sws_capacity is also
  * sample_onset.c's (the onset check reads the shears against it).
  */
 #include <gsl/gsl_linalg.h>
@@ -56,6 +57,11 @@
  * 723 of seed 1 is at 3.4e-7 after 100 iterations, and converges at
  * 101) */
 #define SLP_WANDERING 1e-3
+/* the third attempt's root search (rule 8): bisection steps along the
+ * segment between a phase end's two iterates (to 2^-40 of its length),
+ * then piece jumps from the root, at most this many */
+#define ROOT_BISECT 40
+#define ROOT_JUMPS 8
 
 /* LP2's feasible set: LP1's optimal face.  A column that is non-basic in
  * LP1's optimum with a non-zero reduced cost stays where LP1 left it, the
@@ -360,6 +366,74 @@ static int piece_jump(struct sample_ws *ws)
 	return 0;
 }
 
+/* The phase ends' storage (struct slp_ends): the ring's iterate i,
+ * capacities and normal-force sums, and phase end e's two iterates
+ * (s = 0: the last of the phase, s = 1: the one it is searched against). */
+static double *ring_c(const struct sample_ws *ws, int i)
+{
+	return ws->ends.buf + (size_t)i * (size_t)ws->m;
+}
+
+static double *ring_n(const struct sample_ws *ws, int i)
+{
+	return ring_c(ws, SLP_RING + i);
+}
+
+static double *end_c(const struct sample_ws *ws, int e, int s)
+{
+	return ring_c(ws, 2 * SLP_RING + 2 * e + s);
+}
+
+static double *end_n(const struct sample_ws *ws, int e, int s)
+{
+	return end_c(ws, SLP_ENDS + e, s);
+}
+
+/* An iterate of the plain path and its map, into the ring. */
+static void ends_push(struct sample_ws *ws)
+{
+	if (!ws->ends.on)
+		return;
+	int i = ws->ends.pushed++ % SLP_RING;
+	double *c = ring_c(ws, i), *n = ring_n(ws, i);
+	for (int k = 0; k < ws->m; k++) {
+		c[k] = ws->c[k];
+		n[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+	}
+}
+
+/* A phase ended without converging: keep its last iterate, and of the
+ * ring's others the one whose map is farthest from it (max norm of the
+ * normal-force sums; in a cycle across a steep piece, an iterate on its
+ * other side).  The ring starts again for the next phase. */
+static void ends_mark(struct sample_ws *ws)
+{
+	struct slp_ends *E = &ws->ends;
+	int m = ws->m, p = E->pushed;
+	E->pushed = 0;
+	if (!E->on || E->n >= SLP_ENDS || p < 2)
+		return;
+	int i = (p - 1) % SLP_RING, j = -1;
+	double far = 0;
+	for (int b = 2; b <= SLP_RING && b <= p; b++) {
+		int q = (p - b) % SLP_RING;
+		double d = 0;
+		for (int k = 0; k < m; k++)
+			d = fmax(d, fabs(ring_n(ws, i)[k] - ring_n(ws, q)[k]));
+		if (d > far) {
+			far = d;
+			j = q;
+		}
+	}
+	if (j < 0)
+		return;
+	memcpy(end_c(ws, E->n, 0), ring_c(ws, i), sizeof(double) * (size_t)m);
+	memcpy(end_n(ws, E->n, 0), ring_n(ws, i), sizeof(double) * (size_t)m);
+	memcpy(end_c(ws, E->n, 1), ring_c(ws, j), sizeof(double) * (size_t)m);
+	memcpy(end_n(ws, E->n, 1), ring_n(ws, j), sizeof(double) * (size_t)m);
+	E->n++;
+}
+
 /* Step 2b, the default (SAMPLE_SLP_PIECE): the SLP's answer is the fixed
  * point of the piece the plain iteration settles on (docs/method.md,
  * "The SLP's answer").  Plain steps c <- c + omega (N(c) - c) until the
@@ -406,6 +480,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		    diff > SLP_WANDERING) {
 			/* wandering: again from the start, damped twice as
 			 * much, for twice as many iterations */
+			ends_mark(ws);
 			phase = it - 1;
 			omega /= 2;
 			memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
@@ -419,6 +494,8 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			return st;
 		if (st == SAMPLE_ACCEPTED)
 			r->lambda_max = lam;
+		if (st == SAMPLE_ACCEPTED && !jumped)
+			ends_push(ws);
 		if (jumped && st == SAMPLE_ACCEPTED && diff <= PIECE_VERIFY) {
 			r->converged = 1;
 			return SAMPLE_ACCEPTED;
@@ -458,6 +535,68 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		}
 		plain_step(ws, omega);
 	}
+	ends_mark(ws);
+	return SAMPLE_NOT_CONVERGED;
+}
+
+/* Rule 8's root search at phase end e (docs/method.md, "The SLP's
+ * answer"): the interface K whose normal-force sum differs most between
+ * the end's two iterates; if its residual N_K - c_K changes sign between
+ * them, bisection along the segment for the point where it is 0, and
+ * from there piece jumps, each verified as rule 4's.  Every evaluation
+ * of the map counts in *evals.  A solver failure ends the sample
+ * (`numerical`, as anywhere); anything else that does not verify leaves
+ * it not converged. */
+static enum sample_status slp_cycle_root(struct sample_ws *ws,
+					 const struct sample_opts *o,
+					 struct sample_result *r, int e,
+					 int *evals)
+{
+	int m = ws->m, K = -1, lp_failed;
+	const double *ci = end_c(ws, e, 0), *ni = end_n(ws, e, 0);
+	const double *cj = end_c(ws, e, 1), *nj = end_n(ws, e, 1);
+	double far = 0, lam, diff;
+	for (int k = 0; k < m; k++)
+		if (fabs(ni[k] - nj[k]) > far) {
+			far = fabs(ni[k] - nj[k]);
+			K = k;
+		}
+	if (K < 0)
+		return SAMPLE_NOT_CONVERGED;
+	double fi = ni[K] - ci[K], fj = nj[K] - cj[K];
+	if (!((fi > 0 && fj < 0) || (fi < 0 && fj > 0)))
+		return SAMPLE_NOT_CONVERGED;	/* no root between them */
+	double lo = 0, hi = 1;
+	enum sample_status st;
+	for (int b = 0; b < ROOT_BISECT; b++) {
+		double t = 0.5 * (lo + hi);
+		for (int k = 0; k < m; k++)
+			ws->c[k] = ci[k] + t * (cj[k] - ci[k]);
+		st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		(*evals)++;
+		if (st != SAMPLE_ACCEPTED)
+			return lp_failed ? st : SAMPLE_NOT_CONVERGED;
+		double fk = ws->x[3 * K] + ws->x[3 * K + 1] - ws->c[K];
+		if ((fk > 0) == (fi > 0))
+			lo = t;
+		else
+			hi = t;
+	}
+	for (int jmp = 0; jmp < ROOT_JUMPS; jmp++) {
+		if (piece_jump(ws))
+			return SAMPLE_NOT_CONVERGED;
+		for (int k = 0; k < m; k++)
+			ws->c[k] = fmax(ws->cstar[k], 0);
+		st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		(*evals)++;
+		if (st != SAMPLE_ACCEPTED)
+			return lp_failed ? st : SAMPLE_NOT_CONVERGED;
+		if (diff <= PIECE_VERIFY) {
+			r->lambda_max = lam;
+			r->converged = 1;
+			return SAMPLE_ACCEPTED;
+		}
+	}
 	return SAMPLE_NOT_CONVERGED;
 }
 
@@ -473,7 +612,14 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
  * makes the way longer.  The second attempt's first phase is one
  * iteration per interface: that wall's 3 samples of 20 (seed 1) that
  * the first left not converged are accepted, each at the plain
- * iteration's load.  The iterations of both count in r->iterations. */
+ * iteration's load.  The iterations of both count in r->iterations.
+ * Where both leave the sample not converged, the third attempt (rule 8)
+ * is a root search at each phase end they passed (slp_cycle_root): a
+ * cycle across a steep, thin piece of the map (the facade's sample 2 of
+ * seed 1: dN/dc about -530 over 0.005 block weights), or a spiral
+ * around a fixed point, brackets the fixed point between two of its
+ * iterates, and the zero between them of the residual that differs
+ * most lands on the piece that the plain steps jump over. */
 static enum sample_status slp_attempts(struct sample_ws *ws,
 				       const struct sample_opts *o,
 				       struct sample_result *r)
@@ -486,14 +632,29 @@ static enum sample_status slp_attempts(struct sample_ws *ws,
 	 * that it is the path a sample would take with its first phase m */
 	lp_basis_save(ws->lp[LP1], &ws->slp_start[0]);
 	lp_basis_save(ws->lp[LP2], &ws->slp_start[1]);
+	struct slp_ends *E = &ws->ends;
+	if (!E->buf)
+		E->buf = sw_xmalloc(sizeof(double) * (size_t)m *
+				    (2 * SLP_RING + 4 * SLP_ENDS));
+	E->on = 1;
+	E->n = E->pushed = 0;
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE);
+	if (st == SAMPLE_NOT_CONVERGED) {
+		int its = r->iterations;
+		memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
+		lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
+		lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
+		st = slp_piece_path(ws, o, r, m);
+		r->iterations += its;
+	}
+	E->on = 0;
 	if (st != SAMPLE_NOT_CONVERGED)
 		return st;
-	int its = r->iterations;
-	memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
-	lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
-	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
-	st = slp_piece_path(ws, o, r, m);
-	r->iterations += its;
+	/* the third attempt: the phase ends' root searches, in the order
+	 * the two attempts reached them */
+	int its = r->iterations, evals = 0;
+	for (int e = 0; e < E->n && st == SAMPLE_NOT_CONVERGED; e++)
+		st = slp_cycle_root(ws, o, r, e, &evals);
+	r->iterations = its + evals;
 	return st;
 }

@@ -66,6 +66,22 @@ struct slp_history {
 	double *c[SLP_MEMORY + 1], *f[SLP_MEMORY + 1];	/* c_i, N(c_i) - c_i */
 };
 
+/* The default SLP's phase ends (sample_slp.c, slp_cycle_root;
+ * docs/method.md, "The SLP's answer", rule 8): the last SLP_RING
+ * iterates of the path (capacities c and their maps' normal-force sums
+ * N), and at the end of each phase that did not converge, the two of
+ * them between which the third attempt's root search runs. */
+#define SLP_RING 16
+#define SLP_ENDS 8
+struct slp_ends {
+	double *buf;	/* (2 SLP_RING + 4 SLP_ENDS) m doubles (15 MB on
+			 * tests/wall-10050.yaml's 29,851 interfaces);
+			 * NULL until a large wall's first SLP needs it */
+	int on;		/* record (the first two attempts, m > SLP_PHASE) */
+	int pushed;	/* iterates in the ring since the phase began */
+	int n;		/* phase ends held */
+};
+
 struct sample_ws {
 	const struct wall *w;
 	struct statics st;
@@ -82,6 +98,7 @@ struct sample_ws {
 	struct slp_history hist;	/* sws_slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for its restarts */
 	struct lp_basis slp_start[2];	/* LP1's, LP2's bases there */
+	struct slp_ends ends;		/* the phase ends, for rule 8 */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */
 	double *dn, *dt;	/* 2m, m: joint rates */
