@@ -15,7 +15,9 @@
 # Not in the fast tier, nor in the sanitizer job (scripts/ci-sanitize.sh
 # leaves the suite `realwalls` out): on b7f2664's engine a sample of
 # the 310-block wall takes about 10 s on one thread, and the test 5 min
-# on 2 busy cores.  When this was written the engine failed it (19
+# on 2 busy cores; with the replays of the SLP's third attempt (each a
+# sample of 2,000 iterations and more) it takes about 6 min on 2 idle
+# cores.  When this was written the engine failed it (19
 # `numerical` of 20 on body-300, one `numerical` and one `not_converged`
 # on the facade; docs/walls.md "Measured"): the test is the check of
 # issue 25's engine fix.
