@@ -367,8 +367,9 @@ static int piece_jump(struct sample_ws *ws)
 }
 
 /* The phase ends' storage (struct slp_ends): the ring's iterate i,
- * capacities and normal-force sums, and phase end e's two iterates
- * (s = 0: the last of the phase, s = 1: the one it is searched against). */
+ * capacities and normal-force sums, and phase end e's two iterates'
+ * capacities (s = 0: the last of the phase, s = 1: the one it is
+ * searched against). */
 static double *ring_c(const struct sample_ws *ws, int i)
 {
 	return ws->ends.buf + (size_t)i * (size_t)ws->m;
@@ -382,11 +383,6 @@ static double *ring_n(const struct sample_ws *ws, int i)
 static double *end_c(const struct sample_ws *ws, int e, int s)
 {
 	return ring_c(ws, 2 * SLP_RING + 2 * e + s);
-}
-
-static double *end_n(const struct sample_ws *ws, int e, int s)
-{
-	return end_c(ws, SLP_ENDS + e, s);
 }
 
 /* An iterate of the plain path and its map, into the ring. */
@@ -405,7 +401,8 @@ static void ends_push(struct sample_ws *ws)
 /* A phase ended without converging: keep its last iterate, and of the
  * ring's others the one whose map is farthest from it (max norm of the
  * normal-force sums; in a cycle across a steep piece, an iterate on its
- * other side).  The ring starts again for the next phase. */
+ * other side), with the interface where that norm is reached and its
+ * residual N - c at both.  The ring starts again for the next phase. */
 static void ends_mark(struct sample_ws *ws)
 {
 	struct slp_ends *E = &ws->ends;
@@ -413,25 +410,27 @@ static void ends_mark(struct sample_ws *ws)
 	E->pushed = 0;
 	if (!E->on || E->n >= SLP_ENDS || p < 2)
 		return;
-	int i = (p - 1) % SLP_RING, j = -1;
+	int i = (p - 1) % SLP_RING, j = -1, K = -1;
+	const double *ni = ring_n(ws, i);
 	double far = 0;
 	for (int b = 2; b <= SLP_RING && b <= p; b++) {
 		int q = (p - b) % SLP_RING;
-		double d = 0;
+		const double *nq = ring_n(ws, q);
 		for (int k = 0; k < m; k++)
-			d = fmax(d, fabs(ring_n(ws, i)[k] - ring_n(ws, q)[k]));
-		if (d > far) {
-			far = d;
-			j = q;
-		}
+			if (fabs(ni[k] - nq[k]) > far) {
+				far = fabs(ni[k] - nq[k]);
+				j = q;
+				K = k;
+			}
 	}
 	if (j < 0)
 		return;
-	memcpy(end_c(ws, E->n, 0), ring_c(ws, i), sizeof(double) * (size_t)m);
-	memcpy(end_n(ws, E->n, 0), ring_n(ws, i), sizeof(double) * (size_t)m);
-	memcpy(end_c(ws, E->n, 1), ring_c(ws, j), sizeof(double) * (size_t)m);
-	memcpy(end_n(ws, E->n, 1), ring_n(ws, j), sizeof(double) * (size_t)m);
-	E->n++;
+	int e = E->n++;
+	E->K[e] = K;
+	E->f[e][0] = ni[K] - ring_c(ws, i)[K];
+	E->f[e][1] = ring_n(ws, j)[K] - ring_c(ws, j)[K];
+	memcpy(end_c(ws, e, 0), ring_c(ws, i), sizeof(double) * (size_t)m);
+	memcpy(end_c(ws, e, 1), ring_c(ws, j), sizeof(double) * (size_t)m);
 }
 
 /* Step 2b, the default (SAMPLE_SLP_PIECE): the SLP's answer is the fixed
@@ -540,9 +539,10 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 }
 
 /* Rule 8's root search at phase end e (docs/method.md, "The SLP's
- * answer"): the interface K whose normal-force sum differs most between
- * the end's two iterates; if its residual N_K - c_K changes sign between
- * them, bisection along the segment for the point where it is 0, and
+ * answer"): at the interface K whose normal-force sum differs most
+ * between the end's two iterates (ends_mark), if its residual N_K - c_K
+ * changes sign between them, bisection along the segment for the point
+ * where it is 0, and
  * from there piece jumps, each verified as rule 4's.  Every evaluation
  * of the map counts in *evals.  A solver failure ends the sample
  * (`numerical`, as anywhere); anything else that does not verify leaves
@@ -552,18 +552,9 @@ static enum sample_status slp_cycle_root(struct sample_ws *ws,
 					 struct sample_result *r, int e,
 					 int *evals)
 {
-	int m = ws->m, K = -1, lp_failed;
-	const double *ci = end_c(ws, e, 0), *ni = end_n(ws, e, 0);
-	const double *cj = end_c(ws, e, 1), *nj = end_n(ws, e, 1);
-	double far = 0, lam, diff;
-	for (int k = 0; k < m; k++)
-		if (fabs(ni[k] - nj[k]) > far) {
-			far = fabs(ni[k] - nj[k]);
-			K = k;
-		}
-	if (K < 0)
-		return SAMPLE_NOT_CONVERGED;
-	double fi = ni[K] - ci[K], fj = nj[K] - cj[K];
+	int m = ws->m, K = ws->ends.K[e], lp_failed;
+	const double *ci = end_c(ws, e, 0), *cj = end_c(ws, e, 1);
+	double fi = ws->ends.f[e][0], fj = ws->ends.f[e][1], lam, diff;
 	if (!((fi > 0 && fj < 0) || (fi < 0 && fj > 0)))
 		return SAMPLE_NOT_CONVERGED;	/* no root between them */
 	double lo = 0, hi = 1;
@@ -635,7 +626,7 @@ static enum sample_status slp_attempts(struct sample_ws *ws,
 	struct slp_ends *E = &ws->ends;
 	if (!E->buf)
 		E->buf = sw_xmalloc(sizeof(double) * (size_t)m *
-				    (2 * SLP_RING + 4 * SLP_ENDS));
+				    (2 * SLP_RING + 2 * SLP_ENDS));
 	E->on = 1;
 	E->n = E->pushed = 0;
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE);

@@ -74,12 +74,14 @@ struct slp_history {
 #define SLP_RING 16
 #define SLP_ENDS 8
 struct slp_ends {
-	double *buf;	/* (2 SLP_RING + 4 SLP_ENDS) m doubles (15 MB on
+	double *buf;	/* (2 SLP_RING + 2 SLP_ENDS) m doubles (11 MB on
 			 * tests/wall-10050.yaml's 29,851 interfaces);
 			 * NULL until a large wall's first SLP needs it */
 	int on;		/* record (the first two attempts, m > SLP_PHASE) */
 	int pushed;	/* iterates in the ring since the phase began */
 	int n;		/* phase ends held */
+	int K[SLP_ENDS];	/* each end's interface, and its residual */
+	double f[SLP_ENDS][2];	/* N_K - c_K at the end's two iterates */
 };
 
 struct sample_ws {
