@@ -7,8 +7,10 @@
  * For each thread count, runs N samples of the wall through the real
  * worker pool (mc.c, the code path of `slipwall run`, without the CSV)
  * and prints one line: samples per second, acceptance, LPs per sample,
- * the share of them answered by the basis GLPK held (no simplex: lp.c,
- * "Held bases"), simplex iterations per LP, microseconds per LP, the share of the
+ * the share of them answered by the basis GLPK held (no simplex:
+ * lp_glpk.c, "Held bases"), the share whose dual simplex started from
+ * artificial bounds (lp_glpk.c, "Artificial bounds"), simplex
+ * iterations per LP, microseconds per LP, the share of the
  * workers' time spent inside GLPK's simplex (lp_solve, timed by lp.c per
  * thread), and the p05 so that a speed change that changes the results
  * is noticed.  The last line gives the peak resident memory of the
@@ -83,10 +85,11 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	struct stats_summary s;
 	tally_summary(&t, &s);
 	double ns = (double)t.samples;
-	printf("%-8d %9.2f %7.1f%% %9.1f %6.1f%% %10.1f %9.1f %7.1f%% %7.1f%% %12.6g\n",
+	printf("%-8d %9.2f %7.1f%% %9.1f %6.1f%% %6.1f%% %10.1f %9.1f %7.1f%% %7.1f%% %12.6g\n",
 	       threads, ns / elapsed, 100.0 * (double)t.accepted / ns,
 	       (double)c.solves / ns,
 	       c.solves ? 100.0 * (double)c.held / (double)c.solves : 0.0,
+	       c.solves ? 100.0 * (double)c.art / (double)c.solves : 0.0,
 	       c.solves ? (double)c.iterations / (double)c.solves : 0.0,
 	       c.solves ? 1e6 * c.lp_seconds / (double)c.solves : 0.0,
 	       t.compute_seconds > 0 ? 100.0 * c.lp_seconds /
@@ -210,8 +213,8 @@ int main(int argc, char **argv)
 		wall_free(w);
 		return rc;
 	}
-	printf("%-8s %9s %8s %9s %7s %10s %9s %8s %8s %12s\n", "threads",
-	       "samples/s", "accept", "LPs/smp", "held", "iters/LP", "us/LP",
+	printf("%-8s %9s %8s %9s %7s %7s %10s %9s %8s %8s %12s\n", "threads",
+	       "samples/s", "accept", "LPs/smp", "held", "art", "iters/LP", "us/LP",
 	       "glpk/smp", "glpk/wall", "p05");
 	int rc = 0;
 	for (int k = 0; k < nthreads && !rc; k++)

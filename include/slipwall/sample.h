@@ -261,11 +261,13 @@ void sample_ws_stats(const struct sample_ws *ws,
 		     struct sample_lp_stats out[SAMPLE_ROLE_COUNT]);
 
 /* What the workspace's LP solver did since it was made: LPs solved,
- * simplex iterations, LPs answered by the basis the solver held, seconds
- * inside the solver, internal errors that were the solver running out
- * of memory, and whether it solved its canonical sample (setups). */
+ * simplex iterations, LPs answered by the basis the solver held, LPs
+ * started from artificial bounds (docs/method.md, "Warm starts and held
+ * bases"), seconds inside the solver, internal errors that were the
+ * solver running out of memory, and whether it solved its canonical
+ * sample (setups). */
 struct sample_lp_counters {
-	long solves, iterations, held, memory_errors;
+	long solves, iterations, held, art, memory_errors;
 	double seconds;
 	int setups;	/* canonical samples solved: 0 (made from a
 			 * sample_setup) or 1 */

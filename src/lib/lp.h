@@ -87,6 +87,9 @@ void lp_solver_free(struct lp_solver *s);
  * and internal errors that were the solver running out of memory. */
 struct lp_counters {
 	long solves, iterations, held, memory_errors;
+	/* dual simplex solves started from artificial bounds (lp_glpk.c),
+	 * and those of them that went on without */
+	long art, art_again;
 	double seconds;
 };
 void lp_solver_counters(const struct lp_solver *s, struct lp_counters *c);

@@ -239,6 +239,7 @@ static void *worker(void *arg)
 	m->counters.solves += lc.solves;
 	m->counters.iterations += lc.iterations;
 	m->counters.held += lc.held;
+	m->counters.art += lc.art;
 	m->counters.lp_seconds += lc.seconds;
 	m->counters.setups += lc.setups;
 	m->since[id] = 0;

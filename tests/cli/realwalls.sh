@@ -29,6 +29,14 @@ cd "$(dirname "$0")/../.." || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 N=${SLIPWALL_REALWALLS_SAMPLES:-20}
+# lambda_min <= lambda_max holds to the SLP's precision, not to round-off:
+# lambda_max is LP1's load at capacities within the SLP's tolerance of
+# its fixed point (1e-7, on max |N - c| and on lambda), lambda_min
+# LP-min's to the LPs' own.  Measured: on the facade at friction 1.0,
+# sample 3 of seed 1 has lambda_min 1.3e-9 above lambda_max with the
+# dual simplex's artificial bounds (docs/method.md, "Warm starts and held
+# bases"), 5e-13 below it without.
+LE=1e-7
 
 # realwall WALL: N samples, seed 1, 2 threads
 realwall() {
@@ -84,7 +92,7 @@ realwall walls/facade.yaml
 "$bin" run walls/body-300.yaml --replay tests/data/body-300-seed1.csv \
 	--threads 2 --samples "$tmp/replay.csv" >/dev/null 2>&1
 check "body-300, seed 1, samples 1 and 4 (numerical before): both accepted, 0 < lambda_min <= lambda_max" \
-	awk -F, 'NR > 1 { n++; if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + 1e-9)) bad = 1 }
+	awk -F, -v le=$LE 'NR > 1 { n++; if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }
 		END { exit bad || n != 2 }' "$tmp/replay.csv"
 # A 105-block body-loaded wall with friction 1.0 (tests/data/
 # body-105-mu1.yaml), seed 1, samples 2, 12 and 18.  Their plain
@@ -129,8 +137,8 @@ for s in auto slack-primal support; do
 done
 wait
 check "facade, seed 1, sample 2: accepted by the third attempt from the starts auto, slack-primal, support; lambda_min the same to 1e-9" \
-	python3 - "$tmp"/cycle-auto.csv "$tmp"/cycle-slack-primal.csv "$tmp"/cycle-support.csv <<'PY'
-import csv, sys
+	env LE=$LE python3 - "$tmp"/cycle-auto.csv "$tmp"/cycle-slack-primal.csv "$tmp"/cycle-support.csv <<'PY'
+import csv, os, sys
 rows = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
 ok = all(len(r) == 1 for r in rows)
 if ok:
@@ -138,7 +146,7 @@ if ok:
     for f, r in zip(sys.argv[1:], rows):
         print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_max"], r["lambda_min"], r["iterations"])
     ok = all(r["status"] == "accepted" and int(r["iterations"]) > 2000 and
-             0 < float(r["lambda_min"]) <= float(r["lambda_max"]) * (1 + 1e-9) for r in rows)
+             0 < float(r["lambda_min"]) <= float(r["lambda_max"]) * (1 + float(os.environ["LE"])) for r in rows)
     if ok:
         l0 = float(rows[0]["lambda_min"])
         ok = all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
@@ -147,8 +155,8 @@ PY
 "$bin" run walls/body-300.yaml --friction 0.8 --replay tests/data/body-300-mu08-seed1-cycle.csv \
 	--threads 2 --samples "$tmp/spiral.csv" >/dev/null 2>&1
 check "body-300 at friction 0.8, seed 1, samples 0 and 5: accepted by the third attempt, 0 < lambda_min <= lambda_max" \
-	awk -F, 'NR > 1 { n++; print "#   sample " $1 ": " $2 " " $4 " after " $5 " iterations"
-		if ($2 != "accepted" || !($5 > 2000) || !($4 > 0) || $4 > $3 * (1 + 1e-9)) bad = 1 }
+	awk -F, -v le=$LE 'NR > 1 { n++; print "#   sample " $1 ": " $2 " " $4 " after " $5 " iterations"
+		if ($2 != "accepted" || !($5 > 2000) || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }
 		END { exit bad || n != 2 }' "$tmp/spiral.csv"
 # The facade at friction 1.0, seed 1, samples 3 and 9
 # (tests/data/facade-mu1-seed1-vw.csv): their SLPs converge, and their
@@ -159,7 +167,7 @@ check "body-300 at friction 0.8, seed 1, samples 0 and 5: accepted by the third 
 "$bin" run walls/facade.yaml --friction 1.0 --replay tests/data/facade-mu1-seed1-vw.csv \
 	--threads 2 --samples "$tmp/vw.csv" >/dev/null 2>&1
 check "facade at friction 1.0, seed 1, samples 3 and 9 (numerical before): accepted, 0 < lambda_min <= lambda_max" \
-	awk -F, 'NR > 1 { n++; print "#   sample " $1 ": " $2 " " $4
-		if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + 1e-9)) bad = 1 }
+	awk -F, -v le=$LE 'NR > 1 { n++; print "#   sample " $1 ": " $2 " " $4
+		if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }
 		END { exit bad || n != 2 }' "$tmp/vw.csv"
 tap_end

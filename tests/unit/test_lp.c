@@ -43,6 +43,87 @@ static struct lp *two_by_two(double b1, double b2)
 	return p;
 }
 
+static struct lp_counters counters(void)
+{
+	struct lp_counters c;
+	lp_solver_counters(S, &c);
+	return c;
+}
+
+/* A problem of one row, max x + y s.t. a x + b y <= r, x, y >= 0,
+ * solved with x held at 0 (y basic, x's reduced cost asks it up), then
+ * x freed: a start that is dual infeasible where GLPK cannot flip a
+ * bound, which lp_glpk.c starts from x on an artificial upper bound. */
+static struct lp *one_row(double a, double b, double r)
+{
+	struct lp *p = lp_new(S, 1, 2);
+	int cols[2] = {0, 1};
+	double row[2] = {a, b};
+	lp_set_row(p, 0, 2, cols, row);
+	lp_set_row_bounds(p, 0, -HUGE_VAL, r);
+	lp_set_col_bounds(p, 0, 0, 0);
+	lp_set_col_bounds(p, 1, 0, HUGE_VAL);
+	lp_set_obj(p, 0, 1);
+	lp_set_obj(p, 1, 1);
+	lp_set_maximize(p, 1);
+	return p;
+}
+
+/* Artificial bounds (lp_glpk.c, "Artificial bounds"): the answer is the
+ * problem's own whether the artificial bound is redundant, holds the
+ * optimum (the solve goes on without it), or stands for an unbounded
+ * direction. */
+static void artificial_bounds(void)
+{
+	/* x + 2y <= 4 with 3x + y <= 6 of two_by_two: x freed after y = 2 */
+	struct lp *p = two_by_two(4, 6);
+	lp_set_col_bounds(p, 0, 0, 0);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && fabs(lp_obj(p) - 2) < 1e-12,
+	       "x held at 0: y = 2");
+	struct lp_counters c0 = counters();
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	enum lp_status st = lp_solve(p, LP_DUAL);
+	struct lp_counters c1 = counters();
+	tap_ok(st == LP_OPTIMAL && c1.art == c0.art + 1 &&
+	       c1.art_again == c0.art_again,
+	       "x freed: from an artificial bound, which the optimum leaves");
+	tap_near(lp_col(p, 0), 1.6, 1e-12, "x = (2 b2 - b1)/5 = 1.6");
+	tap_near(lp_col(p, 1), 1.2, 1e-12, "y = (3 b1 - b2)/5 = 1.2");
+	/* the bound put back: x may now go beyond the artificial one */
+	lp_set_row_bounds(p, 0, -HUGE_VAL, 4e4);
+	lp_set_row_bounds(p, 1, -HUGE_VAL, 6e4);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "rows scaled by 1e4: optimal");
+	tap_near(lp_obj(p), 2.8e4, 1e-8, "x's own bound is back: 2.8e4");
+	lp_free(p);
+
+	/* 1e-4 x + 2 y <= 4: the optimum x = 4e4 lies beyond the artificial
+	 * bound (1e3 times the right-hand side 4), which holds the first
+	 * optimum at x = 4e3; the solve goes on without it */
+	p = one_row(1e-4, 2, 4);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "x held at 0: y = 2");
+	c0 = counters();
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	st = lp_solve(p, LP_DUAL);
+	c1 = counters();
+	tap_ok(st == LP_OPTIMAL && c1.art == c0.art + 1 &&
+	       c1.art_again == c0.art_again + 1,
+	       "x freed: the artificial bound holds the optimum, so again without");
+	tap_near(lp_obj(p), 4e4, 1e-6, "optimum x = 4e4, y = 0");
+	lp_free(p);
+
+	/* -x + y <= 1: x unbounded above; from the artificial bound the
+	 * optimum holds x on it, and without it the problem is unbounded */
+	p = one_row(-1, 1, 1);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "x held at 0: y = 1");
+	c0 = counters();
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	st = lp_solve(p, LP_DUAL);
+	c1 = counters();
+	tap_ok(st == LP_UNBOUNDED && c1.art_again == c0.art_again + 1,
+	       "x freed along an unbounded ray: unbounded, not the artificial optimum");
+	lp_free(p);
+}
+
 int main(void)
 {
 	S = lp_solver_new(NULL);
@@ -100,6 +181,8 @@ int main(void)
 	       "y free again: primal feasible but dual infeasible, the simplex");
 	tap_near(lp_obj(p), 6, 1e-12, "optimum back at (0, 6), not 3 at (2, 0)");
 	lp_free(p);
+
+	artificial_bounds();
 
 	/* a stop request while problems are written (the workbench stops
 	 * its workers at every edit): a problem written or made after it is
