@@ -690,10 +690,13 @@ static void var_set_stat(glp_prob *P, int nr, int k, int st)
 
 /* Artificial bounds (see the top): this many times the problem's
  * largest finite bound or right-hand side (at least 1) from the
- * variable's own bound, or from 0 for a free one.  Far beyond any value
- * of an optimum of the wall's problems (forces of at most the wall's
- * weight times a few, in scaled units), and near enough that the basic
- * values it sets are computed to 1e-13 of it. */
+ * variable's own bound, or from 0 for a free one.  The wall's problems'
+ * right-hand sides are its blocks' weights and the SLP's capacities
+ * (normal forces), so an optimum's forces are of their order and far
+ * below the bound; one that is not is caught (art_restore) and solved
+ * without it.  The round-off that a value of that size leaves in the
+ * basic values it moves, about 1e-16 of it (5e-12 on the 1,020-block
+ * wall), is far below the simplex's tolerances (1e-9). */
 #define ART 1e3
 /* a reduced cost of the wrong sign beyond this gets one: below the dual
  * simplex's own test (0.97 tol_dj), so that none it would start its
