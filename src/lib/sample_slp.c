@@ -5,7 +5,7 @@
  * load factor lambda_max.  Its map is LP1 and LP2 (sample_lp.c builds
  * them; LP2's tie-break is sample_tie.c's); the iteration is plain,
  * Anderson-accelerated, or (the default) the piece path, whose jump to
- * an affine piece's fixed point is piece.c's, in up to three attempts
+ * an affine piece's fixed point is piece.c's, in up to four attempts
  * on a large wall (slp_attempts).  sws_capacity is also
  * sample_onset.c's (the onset check reads the shears against it).
  */
@@ -225,6 +225,19 @@ static void history_push(struct slp_history *h, const struct sample_ws *ws)
 	h->len++;
 }
 
+/* The default SLP: on a wall of at most SLP_PHASE interfaces the piece
+ * path alone; on a larger one, slp_round's three attempts, and where
+ * they leave the sample not converged, the fourth (rule 9): the three
+ * again, from the same start, with half the step.  A sample that an
+ * earlier attempt accepts keeps its answer.  The smaller step is what
+ * the phases of rule 6 give a wandering iteration, but there each phase
+ * is cut short and the second attempt's long first phase and the root
+ * searches run at the full step: a 290-block bay with two windows at
+ * friction 0.65 (tests/data/bay-2w-mu065.yaml, seed 11, sample 17)
+ * cycles at omega 0.5 and its root searches land between two pieces
+ * whose fixed points lie in each other's domain; at 0.25 the third
+ * attempt accepts it, at the load the `support` start's first round
+ * reaches. */
 static enum sample_status slp_attempts(struct sample_ws *ws,
 				       const struct sample_opts *o,
 				       struct sample_result *r);
@@ -591,42 +604,32 @@ static enum sample_status slp_cycle_root(struct sample_ws *ws,
 	return SAMPLE_NOT_CONVERGED;
 }
 
-/* The default SLP: its attempts in order, each from LP-max's capacities,
- * until one converges or gives a verdict (docs/method.md, "The SLP's
- * answer", rule 7).  A sample that the first accepts keeps its answer.
- * The second runs only on a wall of more than SLP_PHASE interfaces, and
- * only where the first ends not converged: on a large wall the plain
- * iteration can drift through many pieces with its residual above
- * SLP_WANDERING all the way (150 iterations at omega 0.5 on a 105-block
- * wall of friction 1.0) before it contracts, and each 100-iteration
- * phase restarts it before it is through, with a smaller step that
- * makes the way longer.  The second attempt's first phase is one
- * iteration per interface: that wall's 3 samples of 20 (seed 1) that
- * the first left not converged are accepted, each at the plain
- * iteration's load.  The iterations of both count in r->iterations.
- * Where both leave the sample not converged, the third attempt (rule 8)
- * is a root search at each phase end they passed (slp_cycle_root): a
- * cycle across a steep, thin piece of the map (the facade's sample 2 of
- * seed 1: dN/dc about -530 over 0.005 block weights), or a spiral
- * around a fixed point, brackets the fixed point between two of its
- * iterates, and the zero between them of the residual that differs
- * most lands on the piece that the plain steps jump over. */
-static enum sample_status slp_attempts(struct sample_ws *ws,
-				       const struct sample_opts *o,
-				       struct sample_result *r)
+/* The default SLP's first three attempts on a large wall, with o's step
+ * (docs/method.md, "The SLP's answer", rules 7 and 8), each from
+ * LP-max's capacities (ws->c0) and LP1's and LP2's saved start bases,
+ * until one converges or gives a verdict.  The second runs only where
+ * the first ends not converged: on a large wall the plain iteration can
+ * drift through many pieces with its residual above SLP_WANDERING all
+ * the way (150 iterations at omega 0.5 on a 105-block wall of friction
+ * 1.0) before it contracts, and each 100-iteration phase restarts it
+ * before it is through, with a smaller step that makes the way longer.
+ * The second attempt's first phase is one iteration per interface: that
+ * wall's 3 samples of 20 (seed 1) that the first left not converged are
+ * accepted, each at the plain iteration's load.  Where both leave the
+ * sample not converged, the third (rule 8) is a root search at each
+ * phase end they passed (slp_cycle_root): a cycle across a steep, thin
+ * piece of the map (the facade's sample 2 of seed 1: dN/dc about -530
+ * over 0.005 block weights), or a spiral around a fixed point, brackets
+ * the fixed point between two of its iterates, and the zero between
+ * them of the residual that differs most lands on the piece that the
+ * plain steps jump over.  The iterations of all count in
+ * r->iterations. */
+static enum sample_status slp_round(struct sample_ws *ws,
+				    const struct sample_opts *o,
+				    struct sample_result *r)
 {
 	int m = ws->m;
-	if (m <= SLP_PHASE)
-		return slp_piece_path(ws, o, r, SLP_PHASE);
-	/* the second attempt starts where the first did: the capacities,
-	 * and LP1's and LP2's bases (those the start option gave them), so
-	 * that it is the path a sample would take with its first phase m */
-	lp_basis_save(ws->lp[LP1], &ws->slp_start[0]);
-	lp_basis_save(ws->lp[LP2], &ws->slp_start[1]);
 	struct slp_ends *E = &ws->ends;
-	if (!E->buf)
-		E->buf = sw_xmalloc(sizeof(double) * (size_t)m *
-				    (2 * SLP_RING + 2 * SLP_ENDS));
 	E->on = 1;
 	E->n = E->pushed = 0;
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE);
@@ -647,5 +650,38 @@ static enum sample_status slp_attempts(struct sample_ws *ws,
 	for (int e = 0; e < E->n && st == SAMPLE_NOT_CONVERGED; e++)
 		st = slp_cycle_root(ws, o, r, e, &evals);
 	r->iterations = its + evals;
+	return st;
+}
+
+static enum sample_status slp_attempts(struct sample_ws *ws,
+				       const struct sample_opts *o,
+				       struct sample_result *r)
+{
+	int m = ws->m;
+	if (m <= SLP_PHASE)
+		return slp_piece_path(ws, o, r, SLP_PHASE);
+	/* the second attempt starts where the first did: the capacities,
+	 * and LP1's and LP2's bases (those the start option gave them), so
+	 * that it is the path a sample would take with its first phase m */
+	lp_basis_save(ws->lp[LP1], &ws->slp_start[0]);
+	lp_basis_save(ws->lp[LP2], &ws->slp_start[1]);
+	struct slp_ends *E = &ws->ends;
+	if (!E->buf)
+		E->buf = sw_xmalloc(sizeof(double) * (size_t)m *
+				    (2 * SLP_RING + 2 * SLP_ENDS));
+	enum sample_status st = slp_round(ws, o, r);
+	if (st != SAMPLE_NOT_CONVERGED)
+		return st;
+	/* the fourth attempt: the three again, from the same start
+	 * (slp_piece_path left LP-max's capacities in ws->c0), with half
+	 * the step */
+	int its = r->iterations;
+	struct sample_opts half = *o;
+	half.omega = o->omega / 2;
+	memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
+	lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
+	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
+	st = slp_round(ws, &half, r);
+	r->iterations += its;
 	return st;
 }
