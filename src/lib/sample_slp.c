@@ -225,19 +225,6 @@ static void history_push(struct slp_history *h, const struct sample_ws *ws)
 	h->len++;
 }
 
-/* The default SLP: on a wall of at most SLP_PHASE interfaces the piece
- * path alone; on a larger one, slp_round's three attempts, and where
- * they leave the sample not converged, the fourth (rule 9): the three
- * again, from the same start, with half the step.  A sample that an
- * earlier attempt accepts keeps its answer.  The smaller step is what
- * the phases of rule 6 give a wandering iteration, but there each phase
- * is cut short and the second attempt's long first phase and the root
- * searches run at the full step: a 290-block bay with two windows at
- * friction 0.65 (tests/data/bay-2w-mu065.yaml, seed 11, sample 17)
- * cycles at omega 0.5 and its root searches land between two pieces
- * whose fixed points lie in each other's domain; at 0.25 the third
- * attempt accepts it, at the load the `support` start's first round
- * reaches. */
 static enum sample_status slp_attempts(struct sample_ws *ws,
 				       const struct sample_opts *o,
 				       struct sample_result *r);
@@ -653,6 +640,19 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	return st;
 }
 
+/* The default SLP: on a wall of at most SLP_PHASE interfaces the piece
+ * path alone; on a larger one, slp_round's three attempts, and where
+ * they leave the sample not converged, the fourth (rule 9): the three
+ * again, from the same start, with half the step.  A sample that an
+ * earlier attempt accepts keeps its answer.  The smaller step is what
+ * the phases of rule 6 give a wandering iteration, but there each phase
+ * is cut short and the second attempt's long first phase and the root
+ * searches run at the full step: a 290-block bay with two windows at
+ * friction 0.65 (tests/data/bay-2w-mu065.yaml, seed 11, sample 17)
+ * cycles at omega 0.5 and its root searches land between two pieces
+ * whose fixed points lie in each other's domain; at 0.25 the third
+ * attempt accepts it, at the load the `support` start's first round
+ * reaches. */
 static enum sample_status slp_attempts(struct sample_ws *ws,
 				       const struct sample_opts *o,
 				       struct sample_result *r)
