@@ -206,4 +206,24 @@ check "facade at friction 1.0, seed 1, samples 3 and 9 (numerical before): accep
 	awk -F, -v le=$LE 'NR > 1 { n++; print "#   sample " $1 ": " $2 " " $4
 		if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }
 		END { exit bad || n != 2 }' "$tmp/vw.csv"
+# The facade at friction 0.8, seed 7, sample 0
+# (tests/data/facade-mu08-seed7-s0.csv): at its 4th SLP iteration LP2's
+# load was 1.23e-7 below LP1's, above the fixed 1e-7 that was allowed,
+# and the sample was `numerical` from every start.  LP2 may trade load
+# through the columns whose reduced costs count as zero by up to 1e-9 a
+# unit they move, 5.6e-7 there (docs/method.md, "Tolerances": LP2's
+# load).  Accepted now, from two starts.  Their lambda_min differ
+# (0.3100433 and 0.3099639): on a wall this size the starts part in
+# LP-max's last digits, an open case (docs/method.md, "Path invariance
+# does not hold on the 310-block wall"), so only the status is compared.
+for s in auto slack-primal; do
+	SLIPWALL_LP_START=$s "$bin" run walls/facade.yaml --friction 0.8 \
+		--replay tests/data/facade-mu08-seed7-s0.csv --threads 1 \
+		--samples "$tmp/face-$s.csv" >/dev/null 2>&1 &
+done
+wait
+check "facade at friction 0.8, seed 7, sample 0 (numerical before: LP2's load off LP1's): accepted from auto and slack-primal, 0 < lambda_min <= lambda_max" \
+	awk -F, -v le=$LE 'FNR > 1 { n++; print "#   " FILENAME ": " $2 " " $4
+		if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }
+		END { exit bad || n != 2 }' "$tmp/face-auto.csv" "$tmp/face-slack-primal.csv"
 tap_end
