@@ -42,9 +42,9 @@ limit=${SLIPWALL_PACE_LARGE_SECONDS:-75}
 cap=${SLIPWALL_PACE_LARGE_CAP:-420}
 
 # the total of the "left" line ("left     ~1:05 of ~3:10", "left     about
-# 4:42:07 of 4:42:10 (a priori)") in seconds
+# 4:42:07 of 4:42:10 (a priori)") in seconds, from a screen on stdin
 total() {
-	screen "$1" | sed -n 's/.*left  *[~a-z ]*[0-9:s ]* of ~*\([0-9:]*\( s\)*\).*/\1/p' |
+	sed -n 's/.*left  *[~a-z ]*[0-9:s ]* of ~*\([0-9:]*\( s\)*\).*/\1/p' |
 		head -n 1 | awk -F: '{ sub(/ s$/, ""); v = 0; for (i = 1; i <= NF; i++) v = 60 * v + $i; print v }'
 }
 target=$(sed -n 's/^  samples: *\([0-9]*\).*/\1/p' walls/large.yaml)
@@ -68,10 +68,14 @@ first=
 while :; do
 	now=$(date +%s.%N)
 	el=$(awk -v a="$t0" -v b="$now" 'BEGIN { printf "%.1f", b - a }')
-	tot=$(total l)
-	d=$(samples l)
+	# the total, the count and the a-priori mark from one capture:
+	# three captures could straddle the first sample (a clean-clone CI
+	# read 0 samples, then no "(a priori)" on 27 November 2026)
+	shot=$(screen l)
+	tot=$(printf '%s\n' "$shot" | total)
+	d=$(printf '%s\n' "$shot" | sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1)
 	apr=0
-	screen_has l 'left  .*\(a priori\)' && apr=1
+	printf '%s\n' "$shot" | grep -qE 'left  .*\(a priori\)' && apr=1
 	[ -n "$tot" ] && [ -n "$d" ] && echo "$el $tot $d $apr" >>"$log"
 	[ -z "$first" ] && first=$el
 	# enough: limit s read and 4 samples finished after the first
