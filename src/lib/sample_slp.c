@@ -72,6 +72,11 @@
  * within GLPK's tolerances for 9 % of the samples of Ferris & Tin-Loi
  * wall 2, and any slack on lambda lets LP2 trade load for closeness
  * through columns that are far from optimal (docs/method.md). */
+static int face_fixed(const struct lp *P, int j)
+{
+	return !lp_col_basic(P, j) && fabs(lp_col_dual(P, j)) > TOL_FACE;
+}
+
 static void face_bounds(struct sample_ws *ws)
 {
 	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
@@ -83,7 +88,7 @@ static void face_bounds(struct sample_ws *ws)
 			hi = sws_capacity(ws, j / 3);
 			lo = -hi;
 		}
-		if (!lp_col_basic(P, j) && fabs(lp_col_dual(P, j)) > TOL_FACE)
+		if (face_fixed(P, j))
 			lo = hi = lp_col(P, j);
 		lp_set_col_bounds(Q, j, lo, hi);
 	}
@@ -105,7 +110,7 @@ static double face_drop(const struct sample_ws *ws)
 	const struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
 	double moved = 0;
 	for (int j = 0; j < 3 * ws->m; j++)
-		if (!lp_col_basic(P, j) && !(fabs(lp_col_dual(P, j)) > TOL_FACE))
+		if (!lp_col_basic(P, j) && !face_fixed(P, j))
 			moved += fabs(lp_col(Q, j) - lp_col(P, j));
 	return TOL_FACE * moved;
 }
@@ -612,6 +617,16 @@ static enum sample_status slp_cycle_root(struct sample_ws *ws,
 	return SAMPLE_NOT_CONVERGED;
 }
 
+/* Back to the SLP's start for another attempt: LP-max's capacities
+ * (ws->c0, which slp_piece_path keeps) and LP1's and LP2's bases as
+ * slp_attempts saved them before the first. */
+static void slp_restart(struct sample_ws *ws)
+{
+	memcpy(ws->c, ws->c0, sizeof(double) * (size_t)ws->m);
+	lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
+	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
+}
+
 /* The default SLP's first three attempts on a large wall, with o's step
  * (docs/method.md, "The SLP's answer", rules 7 and 8), each from
  * LP-max's capacities (ws->c0) and LP1's and LP2's saved start bases,
@@ -643,9 +658,7 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE);
 	if (st == SAMPLE_NOT_CONVERGED) {
 		int its = r->iterations;
-		memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
-		lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
-		lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
+		slp_restart(ws);
 		st = slp_piece_path(ws, o, r, m);
 		r->iterations += its;
 	}
@@ -693,15 +706,12 @@ static enum sample_status slp_attempts(struct sample_ws *ws,
 	enum sample_status st = slp_round(ws, o, r);
 	if (st != SAMPLE_NOT_CONVERGED)
 		return st;
-	/* the fourth attempt: the three again, from the same start
-	 * (slp_piece_path left LP-max's capacities in ws->c0), with half
-	 * the step */
+	/* the fourth attempt: the three again, from the same start, with
+	 * half the step */
 	int its = r->iterations;
 	struct sample_opts half = *o;
 	half.omega = o->omega / 2;
-	memcpy(ws->c, ws->c0, sizeof(double) * (size_t)m);
-	lp_basis_load(ws->lp[LP1], &ws->slp_start[0]);
-	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
+	slp_restart(ws);
 	st = slp_round(ws, &half, r);
 	r->iterations += its;
 	return st;

@@ -41,6 +41,46 @@ N=${SLIPWALL_REALWALLS_SAMPLES:-20}
 # bases"), 5e-13 below it without.
 LE=1e-7
 
+# from_starts NAME START... -- RUN-ARGS...: `run RUN-ARGS` once per LP
+# start, one thread each, side by side; samples in $tmp/NAME-START.csv
+from_starts() {
+	local name=$1 s starts=()
+	shift
+	while [ "$1" != "--" ]; do
+		starts+=("$1")
+		shift
+	done
+	shift
+	for s in "${starts[@]}"; do
+		SLIPWALL_LP_START=$s "$bin" run "$@" --threads 1 \
+			--samples "$tmp/$name-$s.csv" >/dev/null 2>&1 &
+	done
+	wait
+}
+
+# one_load FIRST_ITS ALL_ITS FILE...: each file one accepted sample,
+# 0 < lambda_min <= lambda_max (to LE), the first file's iterations above
+# FIRST_ITS and every file's above ALL_ITS, and one lambda_min to 1e-9
+one_load() {
+	env LE=$LE python3 - "$@" <<'PY'
+import csv, os, sys
+first_its, all_its = int(sys.argv[1]), int(sys.argv[2])
+rows = [list(csv.DictReader(open(f))) for f in sys.argv[3:]]
+ok = all(len(r) == 1 for r in rows)
+if ok:
+    rows = [r[0] for r in rows]
+    for f, r in zip(sys.argv[3:], rows):
+        print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_max"], r["lambda_min"], r["iterations"])
+    ok = all(r["status"] == "accepted" and int(r["iterations"]) > all_its and
+             0 < float(r["lambda_min"]) <= float(r["lambda_max"]) * (1 + float(os.environ["LE"])) for r in rows)
+    ok = ok and int(rows[0]["iterations"]) > first_its
+    if ok:
+        l0 = float(rows[0]["lambda_min"])
+        ok = all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
+sys.exit(0 if ok else 1)
+PY
+}
+
 # realwall WALL: N samples, seed 1, 2 threads
 realwall() {
 	local w=$1 name rc summary
@@ -134,27 +174,9 @@ PY
 # (more than the two attempts' 2,000 iterations), its load above 0 and
 # not above lambda_max; the facade's from three LP starts, each with
 # the same lambda_min to 1e-9.
-for s in auto slack-primal support; do
-	SLIPWALL_LP_START=$s "$bin" run walls/facade.yaml --replay tests/data/facade-seed1-s2.csv \
-		--threads 1 --samples "$tmp/cycle-$s.csv" >/dev/null 2>&1 &
-done
-wait
+from_starts cycle auto slack-primal support -- walls/facade.yaml --replay tests/data/facade-seed1-s2.csv
 check "facade, seed 1, sample 2: accepted by the third attempt from the starts auto, slack-primal, support; lambda_min the same to 1e-9" \
-	env LE=$LE python3 - "$tmp"/cycle-auto.csv "$tmp"/cycle-slack-primal.csv "$tmp"/cycle-support.csv <<'PY'
-import csv, os, sys
-rows = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
-ok = all(len(r) == 1 for r in rows)
-if ok:
-    rows = [r[0] for r in rows]
-    for f, r in zip(sys.argv[1:], rows):
-        print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_max"], r["lambda_min"], r["iterations"])
-    ok = all(r["status"] == "accepted" and int(r["iterations"]) > 2000 and
-             0 < float(r["lambda_min"]) <= float(r["lambda_max"]) * (1 + float(os.environ["LE"])) for r in rows)
-    if ok:
-        l0 = float(rows[0]["lambda_min"])
-        ok = all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
-sys.exit(0 if ok else 1)
-PY
+	one_load 2000 2000 "$tmp"/cycle-auto.csv "$tmp"/cycle-slack-primal.csv "$tmp"/cycle-support.csv
 "$bin" run walls/body-300.yaml --friction 0.8 --replay tests/data/body-300-mu08-seed1-cycle.csv \
 	--threads 2 --samples "$tmp/spiral.csv" >/dev/null 2>&1
 check "body-300 at friction 0.8, seed 1, samples 0 and 5: accepted by the third attempt, 0 < lambda_min <= lambda_max" \
@@ -171,29 +193,10 @@ check "body-300 at friction 0.8, seed 1, samples 0 and 5: accepted by the third 
 # (2,139).  The fourth attempt (rule 9: the three again with half the
 # step) accepts it from `auto` (more than two rounds' 4,000
 # iterations), at the load `support` gives, to 1e-9.
-for s in auto support; do
-	SLIPWALL_LP_START=$s "$bin" run tests/data/bay-2w-mu065.yaml \
-		--replay tests/data/bay-2w-mu065-seed11-s17.csv --threads 1 \
-		--samples "$tmp/bay-$s.csv" >/dev/null 2>&1 &
-done
-wait
+from_starts bay auto support -- tests/data/bay-2w-mu065.yaml \
+	--replay tests/data/bay-2w-mu065-seed11-s17.csv
 check "bay with two windows at friction 0.65, seed 11, sample 17: accepted from auto by the fourth attempt, from support, lambda_min the same to 1e-9" \
-	env LE=$LE python3 - "$tmp"/bay-auto.csv "$tmp"/bay-support.csv <<'PY'
-import csv, os, sys
-rows = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
-ok = all(len(r) == 1 for r in rows)
-if ok:
-    rows = [r[0] for r in rows]
-    for f, r in zip(sys.argv[1:], rows):
-        print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_max"], r["lambda_min"], r["iterations"])
-    ok = all(r["status"] == "accepted" and
-             0 < float(r["lambda_min"]) <= float(r["lambda_max"]) * (1 + float(os.environ["LE"])) for r in rows)
-    ok = ok and int(rows[0]["iterations"]) > 4000
-    if ok:
-        l0 = float(rows[0]["lambda_min"])
-        ok = all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
-sys.exit(0 if ok else 1)
-PY
+	one_load 4000 0 "$tmp"/bay-auto.csv "$tmp"/bay-support.csv
 # The facade at friction 1.0, seed 1, samples 3 and 9
 # (tests/data/facade-mu1-seed1-vw.csv): their SLPs converge, and their
 # virtual-work residuals (1.44e-8 of the load's work, on the dual path
@@ -216,12 +219,8 @@ check "facade at friction 1.0, seed 1, samples 3 and 9 (numerical before): accep
 # (0.3100433 and 0.3099639): on a wall this size the starts part in
 # LP-max's last digits, an open case (docs/method.md, "Path invariance
 # does not hold on the 310-block wall"), so only the status is compared.
-for s in auto slack-primal; do
-	SLIPWALL_LP_START=$s "$bin" run walls/facade.yaml --friction 0.8 \
-		--replay tests/data/facade-mu08-seed7-s0.csv --threads 1 \
-		--samples "$tmp/face-$s.csv" >/dev/null 2>&1 &
-done
-wait
+from_starts face auto slack-primal -- walls/facade.yaml --friction 0.8 \
+	--replay tests/data/facade-mu08-seed7-s0.csv
 check "facade at friction 0.8, seed 7, sample 0 (numerical before: LP2's load off LP1's): accepted from auto and slack-primal, 0 < lambda_min <= lambda_max" \
 	awk -F, -v le=$LE 'FNR > 1 { n++; print "#   " FILENAME ": " $2 " " $4
 		if ($2 != "accepted" || !($4 > 0) || $4 > $3 * (1 + le)) bad = 1 }

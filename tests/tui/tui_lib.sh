@@ -74,7 +74,11 @@ title() {
 	screen "$1" | head -n 1
 }
 samples() {
-	screen "$1" | sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1
+	screen "$1" | samples_of
+}
+# ... of a screen on stdin (one capture read for several values)
+samples_of() {
+	sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1
 }
 median() {
 	screen "$1" | sed -n 's/.* p50  *\([0-9.e+-][0-9.e+-]*\).*/\1/p' | head -n 1

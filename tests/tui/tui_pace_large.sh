@@ -73,7 +73,7 @@ while :; do
 	# read 0 samples, then no "(a priori)" on 27 November 2026)
 	shot=$(screen l)
 	tot=$(printf '%s\n' "$shot" | total)
-	d=$(printf '%s\n' "$shot" | sed -n 's/.*samples  *\([0-9][0-9]*\) \/ .*/\1/p' | head -n 1)
+	d=$(printf '%s\n' "$shot" | samples_of)
 	apr=0
 	printf '%s\n' "$shot" | grep -qE 'left  .*\(a priori\)' && apr=1
 	[ -n "$tot" ] && [ -n "$d" ] && echo "$el $tot $d $apr" >>"$log"
