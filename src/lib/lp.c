@@ -374,3 +374,33 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 	t->set_maximize(p, maximize);
 	return st;
 }
+
+enum lp_status lp_tiebreak_floor(struct lp *p, const double *c2, int col,
+				 double lo, int *solved)
+{
+	*solved = 0;
+	if (!lp_alive(p))
+		return LP_ERROR;
+	const struct lp_type *t = T(p);
+	if (!p->tb_obj)
+		p->tb_obj = sw_xmalloc(sizeof(double) * (size_t)(p->ncols + 1));
+	int maximize = t->maximize(p);
+	double lo0, hi0;
+	t->col_bounds(p, col, &lo0, &hi0);
+	for (int j = 0; j < p->ncols; j++) {
+		p->tb_obj[j] = t->obj_coef(p, j);
+		t->set_obj(p, j, c2[j]);
+	}
+	t->set_col_bounds(p, col, lo, hi0);
+	t->set_maximize(p, 0);
+	enum lp_status st = lp_solve(p, LP_PRIMAL);
+	*solved = 1;
+	if (!lp_alive(p))
+		return st;
+	/* a lower bound relaxed: the basis stays primal feasible */
+	t->set_col_bounds(p, col, lo0, hi0);
+	for (int j = 0; j < p->ncols; j++)
+		t->set_obj(p, j, p->tb_obj[j]);
+	t->set_maximize(p, maximize);
+	return st;
+}

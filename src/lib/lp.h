@@ -216,6 +216,16 @@ int lp_unique(const struct lp *p, double tol);
  * (LP_ERROR, LP_STOPPED: as lp_solve). */
 enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 			   int *solved);
+/* The tie-break below an optimum (docs/method.md, "The SLP's start":
+ * LP-max's floor): minimise c2 . x over the feasible points whose
+ * column col is at least lo, by the primal simplex from the basis the
+ * problem holds (the caller chooses it); then col's bounds, the
+ * objective and its sense are put back, and the solution the solver
+ * stores is the tie-break's.  Unlike lp_tiebreak it does not read the
+ * reduced costs of an optimum, so its answer does not depend on which
+ * optimal basis, or how near the optimum, the first solve ended. */
+enum lp_status lp_tiebreak_floor(struct lp *p, const double *c2, int col,
+				 double lo, int *solved);
 /* Simplex iterations of the last solve. */
 int lp_last_iterations(const struct lp *p);
 

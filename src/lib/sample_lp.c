@@ -256,25 +256,47 @@ void sws_refill(struct sample_ws *ws)
 /* One LP of role `role` (or of its tie-break: role + ROLES), counted in
  * r and in the workspace's statistics; the problem is rebuilt after a
  * GLPK error. */
-enum lp_status sws_counted(struct sample_ws *ws, int role, enum lp_method m,
-			      const double *c2, struct sample_result *r)
+static enum lp_status counted_end(struct sample_ws *ws, int role,
+				  const struct lp_counters *c0, int solved,
+				  enum lp_status s, struct sample_result *r)
 {
-	struct lp_counters c0, c1;
-	lp_solver_counters(ws->solver, &c0);
-	int solved = 1;
-	struct lp *p = ws->lp[role % ROLES];
-	enum lp_status s = c2 ? lp_tiebreak(p, c2, TOL_TIE, &solved)
-			      : lp_solve(p, m);
+	struct lp_counters c1;
 	lp_solver_counters(ws->solver, &c1);
 	struct sample_lp_stats *st = &ws->stats[role];
-	st->lps += c1.solves - c0.solves;
-	st->iterations += c1.iterations - c0.iterations;
-	st->seconds += c1.seconds - c0.seconds;
+	st->lps += c1.solves - c0->solves;
+	st->iterations += c1.iterations - c0->iterations;
+	st->seconds += c1.seconds - c0->seconds;
 	r->lps += solved;
 	if (s == LP_ERROR)
 		rebuild(ws);
 	sws_note_memory(ws);
 	return s;
+}
+
+enum lp_status sws_counted(struct sample_ws *ws, int role, enum lp_method m,
+			      const double *c2, struct sample_result *r)
+{
+	struct lp_counters c0;
+	lp_solver_counters(ws->solver, &c0);
+	int solved = 1;
+	struct lp *p = ws->lp[role % ROLES];
+	enum lp_status s = c2 ? lp_tiebreak(p, c2, TOL_TIE, &solved)
+			      : lp_solve(p, m);
+	return counted_end(ws, role, &c0, solved, s, r);
+}
+
+/* The tie-break below an optimum (lp_tiebreak_floor: column col at
+ * least lo), counted as sws_counted counts. */
+enum lp_status sws_counted_floor(struct sample_ws *ws, int role,
+				 const double *c2, int col, double lo,
+				 struct sample_result *r)
+{
+	struct lp_counters c0;
+	lp_solver_counters(ws->solver, &c0);
+	int solved = 1;
+	enum lp_status s = lp_tiebreak_floor(ws->lp[role % ROLES], c2, col,
+					     lo, &solved);
+	return counted_end(ws, role, &c0, solved, s, r);
 }
 
 /* Count the LP and handle a dead environment.  A verdict of "infeasible"

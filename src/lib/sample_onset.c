@@ -106,6 +106,20 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 	return SAMPLE_ACCEPTED;
 }
 
+/* The SLP's start below LP-max's optimum (sws_floor_tiebreak): its
+ * stress field into ws->x and its capacities into ws->c. */
+enum sample_status sws_lp_max_floor(struct sample_ws *ws,
+				    struct sample_result *r)
+{
+	struct lp *P = ws->lp[AMAX];
+	if (sws_floor_tiebreak(ws, r->lambda_lpmax, r) != LP_OPTIMAL)
+		return SAMPLE_NUMERICAL;
+	assoc_field(ws, P, ws->x);
+	for (int k = 0; k < ws->m; k++)
+		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+	return SAMPLE_ACCEPTED;
+}
+
 /* Step 2a, after LP-max: can the wall stand under its own weight on
  * these contact points, is there an admissible field at lambda = 0?  The
  * admissible load factors form an interval that ends at LP-max's, so

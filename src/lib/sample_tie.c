@@ -10,6 +10,7 @@
  * sws_counted).  Called from sample_start.c (weights, LP2's objective),
  * sample_slp.c (LP2) and sample_onset.c (LP-max, LP-min, the mechanism).
  */
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -102,6 +103,42 @@ enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
 		}
 	ws->c2[ACOL_LAMBDA(ws)] = 0;
 	return tiebreak(ws, role, ws->c2, r);
+}
+
+/* LP-max's floor (docs/method.md, "The SLP's start"): the load the
+ * floor's tie-break holds, the optimum lam less one to two steps of a
+ * grid of 2^-TIE_FLOOR_BITS of lam's binary order, so 1e-6 to 2e-6 of
+ * lam below it.  The optimum is known only to the simplex's tolerances
+ * (3e-10 of it between the dual and the primal simplex on the demo);
+ * the grid makes the floor the same double from every start unless the
+ * optimum lies that close to one of its points. */
+#define TIE_FLOOR_BITS 20
+
+static double lpmax_floor(double lam)
+{
+	double g = ldexp(1, ilogb(lam) - TIE_FLOOR_BITS);
+	return (floor(lam / g) - 1) * g;
+}
+
+/* The floor's tie-break: of the stress fields that carry at least
+ * LP-max's floor (its optimum lam, unscaled), the one with the least
+ * sum r_j N_j, by the primal simplex from the canonical basis.  The
+ * bound is the same double, and the start the same basis, from every
+ * start of LP-max, so the field is the sample's (docs/method.md, "The
+ * SLP's start"). */
+enum lp_status sws_floor_tiebreak(struct sample_ws *ws, double lam,
+				  struct sample_result *r)
+{
+	int m = ws->m;
+	for (int k = 0; k < m; k++)
+		for (int e = 0; e < 2; e++) {
+			ws->c2[ACOL_ALPHA(k, e)] = ws->r[2 * k + e];
+			ws->c2[ACOL_BETA(k, e)] = ws->r[2 * k + e];
+		}
+	ws->c2[ACOL_LAMBDA(ws)] = 0;
+	lp_basis_load(ws->lp[AMAX], &ws->canon[AMAX]);
+	return sws_counted_floor(ws, AMAX + ROLES, ws->c2, ACOL_LAMBDA(ws),
+				 lpmax_floor(lam), r);
 }
 
 /* LP2's tie-break, if its weighted optimum is still not unique: the

@@ -160,6 +160,9 @@ void sws_build(struct sample_ws *ws);
 void sws_refill(struct sample_ws *ws);
 enum lp_status sws_counted(struct sample_ws *ws, int role, enum lp_method m,
 			   const double *c2, struct sample_result *r);
+enum lp_status sws_counted_floor(struct sample_ws *ws, int role,
+				 const double *c2, int col, double lo,
+				 struct sample_result *r);
 enum lp_status sws_solve(struct sample_ws *ws, enum role role,
 			 enum lp_method m, struct sample_result *r);
 
@@ -174,6 +177,10 @@ void sws_put_lp2_objective(struct sample_ws *ws);
 enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
 				  struct sample_result *r);
 enum lp_status sws_lp2_tiebreak(struct sample_ws *ws, struct sample_result *r);
+enum lp_status sws_floor_tiebreak(struct sample_ws *ws, double lam,
+				  struct sample_result *r);
+enum sample_status sws_lp_max_floor(struct sample_ws *ws,
+				    struct sample_result *r);
 enum lp_status sws_kin_tiebreak(struct sample_ws *ws, struct sample_result *r);
 
 /* sample_onset.c: KIN's bounds at interface k (KIN_* bits) */

@@ -73,16 +73,17 @@ fi
 # their positions in tests/data/ftl2-seed1-traced.csv), replayed from
 # every start (docs/method.md: the mechanism and LP-min
 # on one fixed path, GLPK's tolerances at 1e-9)
-# replay WALL POSITIONS TAG TEXT: the positions replayed on 1 thread
-# from the default start (into $tmp/TAG-auto.csv) and from every other;
-# one check per start
+# replay WALL POSITIONS TAG TEXT [RUN-ARGS...]: the positions replayed
+# on 1 thread from the default start (into $tmp/TAG-auto.csv) and from
+# every other; one check per start
 replay() {
 	local wall=$1 pos=$2 tag=$3 text=$4 st d
-	"$bin" run "$wall" --positions "$pos" --threads 1 \
+	shift 4
+	"$bin" run "$wall" --positions "$pos" --threads 1 "$@" \
 		--samples "$tmp/$tag-auto.csv" >/dev/null 2>&1
 	for st in slack-primal slack-dual crash canonical previous support; do
 		SLIPWALL_LP_START=$st "$bin" run "$wall" --positions "$pos" \
-			--threads 1 --samples "$tmp/$tag-$st.csv" >/dev/null 2>&1
+			--threads 1 "$@" --samples "$tmp/$tag-$st.csv" >/dev/null 2>&1
 		d=$(same "$tmp/$tag-auto.csv" "$tmp/$tag-$st.csv" 2>"$tmp/why")
 		check "$text, start $st: the same status and lambda_min ($d differ)" [ "$d" = 0 ]
 		[ "$d" = 0 ] || head -5 "$tmp/why" | sed 's/^/# /'
@@ -125,6 +126,19 @@ check "demo seed 1 sample 616 and seed 2 sample 1470: accepted ($s616, $s1470)" 
 	eval '[ "$s616" = accepted ] && [ "$s1470" = accepted ]'
 check "demo seed 1 sample 723, converging at iteration 103: 352.128 N, not restarted ($s723 $l723)" \
 	awk -v s="$s723" -v l="$l723" 'BEGIN { exit !(s == "accepted" && l > 352.1275 && l < 352.1276) }'
+
+# Random friction: the demo at cov 0.2, seed 2, sample 299 (tests/data/
+# demo-cov02-seed2-s299.csv, its positions and frictions).  LP-max's
+# optimal face, read off the reduced costs, differed by a column between
+# the dual simplex's optimum and the primal's, and with it the SLP's
+# start: 69.37 N from slack-primal, 459.94 N from the six other starts.
+# From the floor's field (docs/method.md, "The SLP's start") it is
+# 69.3707 N, --slp plain's load, from every start.
+replay $wall tests/data/demo-cov02-seed2-s299.csv c299 \
+	"the demo at friction cov 0.2, seed 2, sample 299" --cov 0.2
+read -r s299 l299 <<<"$(row "$tmp/c299-auto.csv" 0)"
+check "demo at friction cov 0.2, seed 2, sample 299: 69.3707 N ($s299 $l299)" \
+	awk -v s="$s299" -v l="$l299" 'BEGIN { exit !(s == "accepted" && l > 69.3706 && l < 69.3708) }'
 
 # --slp plain: where it differs from the default, the default is lower
 "$bin" run $wall -n "$ns" --seed 1 --threads 2 --slp plain \
