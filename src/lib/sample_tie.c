@@ -89,19 +89,24 @@ static enum lp_status tiebreak(struct sample_ws *ws, enum role role,
 	return sws_counted(ws, role + ROLES, LP_PRIMAL, c2, r);
 }
 
-/* The tie-break of an associative problem (LP-max, LP-min): of its
- * optimal stress fields, the one with the least sum r_j N_j (N_j = alpha_j
- * + beta_j). */
-enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
-				     struct sample_result *r)
+/* An associative problem's tie-break objective, sum r_j N_j (N_j =
+ * alpha_j + beta_j), into ws->c2. */
+static void assoc_objective(struct sample_ws *ws)
 {
-	int m = ws->m;
-	for (int k = 0; k < m; k++)
+	for (int k = 0; k < ws->m; k++)
 		for (int e = 0; e < 2; e++) {
 			ws->c2[ACOL_ALPHA(k, e)] = ws->r[2 * k + e];
 			ws->c2[ACOL_BETA(k, e)] = ws->r[2 * k + e];
 		}
 	ws->c2[ACOL_LAMBDA(ws)] = 0;
+}
+
+/* The tie-break of an associative problem (LP-max, LP-min): of its
+ * optimal stress fields, the one with the least sum r_j N_j. */
+enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
+				     struct sample_result *r)
+{
+	assoc_objective(ws);
 	return tiebreak(ws, role, ws->c2, r);
 }
 
@@ -129,13 +134,7 @@ static double lpmax_floor(double lam)
 enum lp_status sws_floor_tiebreak(struct sample_ws *ws, double lam,
 				  struct sample_result *r)
 {
-	int m = ws->m;
-	for (int k = 0; k < m; k++)
-		for (int e = 0; e < 2; e++) {
-			ws->c2[ACOL_ALPHA(k, e)] = ws->r[2 * k + e];
-			ws->c2[ACOL_BETA(k, e)] = ws->r[2 * k + e];
-		}
-	ws->c2[ACOL_LAMBDA(ws)] = 0;
+	assoc_objective(ws);
 	lp_basis_load(ws->lp[AMAX], &ws->canon[AMAX]);
 	return sws_counted_floor(ws, AMAX + ROLES, ws->c2, ACOL_LAMBDA(ws),
 				 lpmax_floor(lam), r);
