@@ -299,6 +299,31 @@ static double tb_value(enum lp_var_stat st, double lo, double hi, double x)
 	return st == LP_NU ? hi : lo;
 }
 
+/* The tie-breaks' objective: minimise c2 . x; the problem's own
+ * coefficients saved in p->tb_obj, its sense returned, for
+ * tb_objective_restore. */
+static int tb_objective_set(struct lp *p, const double *c2)
+{
+	const struct lp_type *t = T(p);
+	if (!p->tb_obj)
+		p->tb_obj = sw_xmalloc(sizeof(double) * (size_t)(p->ncols + 1));
+	int maximize = t->maximize(p);
+	for (int j = 0; j < p->ncols; j++) {
+		p->tb_obj[j] = t->obj_coef(p, j);
+		t->set_obj(p, j, c2[j]);
+	}
+	t->set_maximize(p, 0);
+	return maximize;
+}
+
+static void tb_objective_restore(struct lp *p, int maximize)
+{
+	const struct lp_type *t = T(p);
+	for (int j = 0; j < p->ncols; j++)
+		t->set_obj(p, j, p->tb_obj[j]);
+	t->set_maximize(p, maximize);
+}
+
 enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 			   int *solved)
 {
@@ -313,14 +338,13 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 		tie = tb_zero(t->col_stat(p, j), t->col_dual(p, j), tol);
 	if (!tie)
 		return LP_OPTIMAL;
-	if (!p->tb_obj) {
-		p->tb_obj = sw_xmalloc(sizeof(double) * (size_t)(p->ncols + 1));
+	if (!p->tb_fixed) {
 		p->tb_fixed = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
 		p->tb_stat = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
 		p->tb_lb = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
 		p->tb_ub = sw_xmalloc(sizeof(double) * (size_t)(n + 1));
 	}
-	int nf = 0, maximize = t->maximize(p);
+	int nf = 0, maximize = tb_objective_set(p, c2);
 	for (int i = 0; i < p->nrows; i++) {
 		enum lp_var_stat st = t->row_stat(p, i);
 		if (!tb_nonzero(st, t->row_dual(p, i), tol))
@@ -335,8 +359,6 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 	}
 	for (int j = 0; j < p->ncols; j++) {
 		enum lp_var_stat st = t->col_stat(p, j);
-		p->tb_obj[j] = t->obj_coef(p, j);
-		t->set_obj(p, j, c2[j]);
 		if (!tb_nonzero(st, t->col_dual(p, j), tol))
 			continue;
 		p->tb_fixed[nf] = p->nrows + j;
@@ -347,7 +369,6 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 		t->set_col_bounds(p, j, v, v);
 		nf++;
 	}
-	t->set_maximize(p, 0);
 	enum lp_status st = lp_solve(p, LP_PRIMAL);
 	*solved = 1;
 	if (!lp_alive(p))
@@ -369,9 +390,7 @@ enum lp_status lp_tiebreak(struct lp *p, const double *c2, double tol,
 				t->set_col_stat(p, k, s0);
 		}
 	}
-	for (int j = 0; j < p->ncols; j++)
-		t->set_obj(p, j, p->tb_obj[j]);
-	t->set_maximize(p, maximize);
+	tb_objective_restore(p, maximize);
 	return st;
 }
 
@@ -382,25 +401,16 @@ enum lp_status lp_tiebreak_floor(struct lp *p, const double *c2, int col,
 	if (!lp_alive(p))
 		return LP_ERROR;
 	const struct lp_type *t = T(p);
-	if (!p->tb_obj)
-		p->tb_obj = sw_xmalloc(sizeof(double) * (size_t)(p->ncols + 1));
-	int maximize = t->maximize(p);
 	double lo0, hi0;
 	t->col_bounds(p, col, &lo0, &hi0);
-	for (int j = 0; j < p->ncols; j++) {
-		p->tb_obj[j] = t->obj_coef(p, j);
-		t->set_obj(p, j, c2[j]);
-	}
+	int maximize = tb_objective_set(p, c2);
 	t->set_col_bounds(p, col, lo, hi0);
-	t->set_maximize(p, 0);
 	enum lp_status st = lp_solve(p, LP_PRIMAL);
 	*solved = 1;
 	if (!lp_alive(p))
 		return st;
 	/* a lower bound relaxed: the basis stays primal feasible */
 	t->set_col_bounds(p, col, lo0, hi0);
-	for (int j = 0; j < p->ncols; j++)
-		t->set_obj(p, j, p->tb_obj[j]);
-	t->set_maximize(p, maximize);
+	tb_objective_restore(p, maximize);
 	return st;
 }

@@ -62,6 +62,15 @@ static enum sample_status lp_to_sample(enum lp_status s)
 	}
 }
 
+/* The SLP's start from P's field (an associative problem's): the field
+ * into ws->x, its normal-force sums, the capacities, into ws->c. */
+static void slp_start_from(struct sample_ws *ws, const struct lp *P)
+{
+	assoc_field(ws, P, ws->x);
+	for (int k = 0; k < ws->m; k++)
+		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+}
+
 /* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
  * starting capacities in ws->c, and, if v is not NULL, the duals of its
  * equilibrium rows in v (the associative mechanism, before the
@@ -100,9 +109,7 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 	s = sws_assoc_tiebreak(ws, AMAX, r);
 	if (s != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
-	assoc_field(ws, P, ws->x);
-	for (int k = 0; k < ws->m; k++)
-		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+	slp_start_from(ws, P);
 	return SAMPLE_ACCEPTED;
 }
 
@@ -111,12 +118,9 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 enum sample_status sws_lp_max_floor(struct sample_ws *ws,
 				    struct sample_result *r)
 {
-	struct lp *P = ws->lp[AMAX];
 	if (sws_floor_tiebreak(ws, r->lambda_lpmax, r) != LP_OPTIMAL)
 		return SAMPLE_NUMERICAL;
-	assoc_field(ws, P, ws->x);
-	for (int k = 0; k < ws->m; k++)
-		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
+	slp_start_from(ws, ws->lp[AMAX]);
 	return SAMPLE_ACCEPTED;
 }
 
