@@ -80,14 +80,12 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 {
 	/* LP-max is degenerate: its optimal stress fields form a face, and
 	 * the tie-break takes the one with the least sum r_j N_j, whatever
-	 * vertex the simplex reached (the SLP's start).  The dual simplex
-	 * from the start's basis, except for `slack-primal` and large walls
-	 * under `auto` (sws_role_start). */
+	 * vertex the simplex reached (the SLP's start).  One fixed path
+	 * whatever the start option (sws_role_start): the dual simplex
+	 * from the canonical basis, the primal on large walls (from the
+	 * support basis for the workspace's own canonical sample). */
 	struct lp *P = ws->lp[AMAX];
-	enum sample_start st = sws_role_start(ws, AMAX);
-	enum lp_method m = st == SAMPLE_START_SLACK_PRIMAL ||
-			   st == SAMPLE_START_SUPPORT || sws_auto_large(ws) ?
-			   LP_PRIMAL : LP_DUAL;
+	enum lp_method m = ws->large ? LP_PRIMAL : LP_DUAL;
 	enum lp_status s = sws_solve(ws, AMAX, m, r);
 	/* A load factor <= 0 is re-checked by the primal simplex from the
 	 * slack basis, as sws_solve() re-checks a "no": the dual simplex has

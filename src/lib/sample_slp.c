@@ -366,11 +366,12 @@ static enum sample_status slp_from(struct sample_ws *ws,
  * starts' fields 0.19 block weights apart in a capacity, for optima
  * 2.6e-9 apart).  The canonical sample starts from the face's field:
  * its path is fixed, and it has no canonical basis yet.  So does a wall
- * of more than SLP_PHASE interfaces: there the simplex methods' optima
- * disagree by up to 8e-7 of themselves (the 310-block wall), so the
- * floor's grid is crossed from start to start (the facade's sample 2
- * of seed 1 then took two loads), and a grid coarse enough to hold
- * moves the samples of Ferris & Tin-Loi wall 2 (docs/method.md). */
+ * of more than SLP_PHASE interfaces: there, from the floor's start,
+ * the SLP's LP1 and LP2 (which follow the start option) part from start
+ * to start (the facade at friction 0.8, seed 7, sample 0: 0.3100433
+ * from `auto`, 0.3093318 from `slack-primal`; one load from the face's
+ * start), and walls/body-300.yaml's sample 18 of seed 1 becomes
+ * `numerical` (docs/method.md, "The SLP's start", rule 5). */
 enum sample_status sws_slp(struct sample_ws *ws,
 			      const struct sample_opts *o,
 			      struct sample_result *r)

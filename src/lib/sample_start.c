@@ -7,8 +7,7 @@
  * which loads every role's starting basis once sample.c has written a
  * sample's draw into the problems (the support basis: support.c; the
  * canonical bases, which a workspace solves once when it is made:
- * sample.c).  LP-max (sample_onset.c) also asks sws_role_start which
- * simplex method to use.  Nothing here calls up into sample.c.
+ * sample.c).  Nothing here calls up into sample.c.
  */
 #include <limits.h>
 #include <stdlib.h>
@@ -107,27 +106,26 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * workspace is made (LP-max 3,322 pivots from the support basis, 13,751
  * from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c. */
 
-/* Is this an `auto` workspace of a large wall (AUTO_LARGE_IFACES, or
- * sample_ws_new_auto_large)? */
-int sws_auto_large(const struct sample_ws *ws)
-{
-	return ws->start == SAMPLE_START_AUTO && ws->large;
-}
-
 /* The start of role p's LPs in this workspace. */
 enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 {
-	/* The mechanism and LP-min take `auto`'s starts whatever the
-	 * start asked for: one fixed path, a function of the wall alone,
-	 * so that neither the mechanism nor a `numerical` verdict depends
-	 * on the start.  Their optima are unique only to GLPK's tolerances
-	 * on a few samples (a slip rate at the motion threshold, a
-	 * virtual-work residual between 1e-8 and GLPK's 1e-7): measured on
-	 * Ferris & Tin-Loi wall 2, seed 1, where 7 of 1,000 samples had
-	 * another mechanism or status from another start (docs/method.md,
-	 * "The SLP's answer").  The start option still drives LP-max, the
-	 * standing check and the SLP's LP1 and LP2. */
-	int fixed = p == KIN || p == AMIN;
+	/* LP-max, the mechanism and LP-min take `auto`'s starts whatever
+	 * the start asked for: one fixed path, a function of the wall
+	 * alone, so that neither the SLP's start, the mechanism nor a
+	 * `numerical` verdict depends on the start.  Their optima are
+	 * unique only to GLPK's tolerances on a few samples (a slip rate at
+	 * the motion threshold, a virtual-work residual between 1e-8 and
+	 * GLPK's 1e-7): measured on Ferris & Tin-Loi wall 2, seed 1, where
+	 * 7 of 1,000 samples had another mechanism or status from another
+	 * start (docs/method.md, "The SLP's answer").  LP-max's optimal
+	 * face, read off its reduced costs, and its optimum's last digits
+	 * depend on the vertex the simplex ends at: the demo, seed 1,
+	 * sample 1628 was `not_converged` from `previous` only, and on
+	 * walls of 600+ interfaces the two simplex methods' optima part by
+	 * up to 8e-7 of themselves (docs/method.md, "The SLP's start").
+	 * The start option still drives the standing check and the SLP's
+	 * LP1 and LP2, where most of a sample's pivots are. */
+	int fixed = p == AMAX || p == KIN || p == AMIN;
 	if (ws->start != SAMPLE_START_AUTO && !fixed)
 		return ws->start;
 	if (ws->large && p == LP2)

@@ -114,9 +114,10 @@ enum lp_status sws_assoc_tiebreak(struct sample_ws *ws, enum role role,
  * floor's tie-break holds, the optimum lam less one to two steps of a
  * grid of 2^-TIE_FLOOR_BITS of lam's binary order, so 1e-6 to 2e-6 of
  * lam below it.  The optimum is known only to the simplex's tolerances
- * (3e-10 of it between the dual and the primal simplex on the demo);
- * the grid makes the floor the same double from every start unless the
- * optimum lies that close to one of its points. */
+ * (3e-10 of it between the dual and the primal simplex on the demo).
+ * LP-max runs on one fixed path whatever the start (sample_start.c), so
+ * the optimum is the same from every start; the grid keeps the floor
+ * from following its last digits all the same. */
 #define TIE_FLOOR_BITS 20
 
 static double lpmax_floor(double lam)
@@ -127,15 +128,16 @@ static double lpmax_floor(double lam)
 
 /* The floor's tie-break: of the stress fields that carry at least
  * LP-max's floor (its optimum lam, unscaled), the one with the least
- * sum r_j N_j, by the primal simplex from the canonical basis.  The
- * bound is the same double, and the start the same basis, from every
- * start of LP-max, so the field is the sample's (docs/method.md, "The
- * SLP's start"). */
+ * sum r_j N_j, by the primal simplex from the basis LP-max's face
+ * tie-break ended at (primal feasible: it carries lam).  LP-max and its
+ * tie-break run on one fixed path whatever the start (sample_start.c),
+ * so the bound and the basis, and with them the field, are the
+ * sample's (docs/method.md, "The SLP's start").  From the canonical
+ * basis instead: twice the pivots, the same answers. */
 enum lp_status sws_floor_tiebreak(struct sample_ws *ws, double lam,
 				  struct sample_result *r)
 {
 	assoc_objective(ws);
-	lp_basis_load(ws->lp[AMAX], &ws->canon[AMAX]);
 	return sws_counted_floor(ws, AMAX + ROLES, ws->c2, ACOL_LAMBDA(ws),
 				 lpmax_floor(lam), r);
 }

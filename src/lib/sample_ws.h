@@ -167,7 +167,6 @@ enum lp_status sws_solve(struct sample_ws *ws, enum role role,
 			 enum lp_method m, struct sample_result *r);
 
 /* sample_start.c: the starts */
-int sws_auto_large(const struct sample_ws *ws);
 enum sample_start sws_role_start(const struct sample_ws *ws, int p);
 void sws_start_bases(struct sample_ws *ws);
 

@@ -14,7 +14,9 @@
 # independent implementation), and where the default differs from --slp
 # plain it is lower (the plain iteration leaves the piece it settled on
 # for a higher onset state); and the demo's wandering samples of seeds 1
-# and 2 (tests/data/demo-wandering.csv).  TAP output.
+# and 2 (tests/data/demo-wandering.csv); and demo sample 1628 from
+# `previous` (samples 0-1628 on one thread), which LP-max's one fixed
+# path made the same as from every other start.  TAP output.
 
 bin=${1:?usage: cli/invariance.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -49,6 +51,27 @@ done
 d=$(same "$tmp/ref.csv" "$tmp/t1.csv" 2>/dev/null)
 check "1 thread against 2: the same status and lambda_min on every sample ($d differ)" [ "$d" = 0 ]
 check "1 thread against 2: the samples files byte for byte" cmp -s "$tmp/ref.csv" "$tmp/t1.csv"
+
+# Demo sample 1628 (seed 1) from `previous`: before LP-max ran on one
+# fixed path (docs/method.md, "The SLP's start"), the face that `previous`
+# left LP-max at did not hold the SLP's map, and the sample was
+# `not_converged` there, accepted at the standard 470.88 N from every
+# other start.  `previous` needs the thread's whole history, so samples
+# 0-1628 on 1 thread.
+if [ "$ns" -ge 1000 ]; then
+	"$bin" run $wall -n 1629 --seed 1 --threads 2 \
+		--samples "$tmp/ref1629.csv" >/dev/null 2>&1
+	SLIPWALL_LP_START=previous "$bin" run $wall -n 1629 --seed 1 --threads 1 \
+		--samples "$tmp/prev1629.csv" >/dev/null 2>&1
+	d=$(same "$tmp/ref1629.csv" "$tmp/prev1629.csv" 2>/dev/null)
+	check "start previous, 1,629 samples: the same status and lambda_min on every sample ($d differ)" [ "$d" = 0 ]
+	check "demo sample 1628 from previous: accepted at 470.88 N" \
+		awk -F, '$1 == 1628 { ok = $2 == "accepted" && $4 > 470.8799 && $4 < 470.8801 } END { exit !ok }' \
+		"$tmp/prev1629.csv"
+	rm -f "$tmp/ref1629.csv" "$tmp/prev1629.csv"
+else
+	check "demo sample 1628: not among $ns samples (the sanitizer job)" true
+fi
 
 # sample 714 (seed 1) from every start: 175.089 N
 if [ "$ns" -gt 714 ]; then

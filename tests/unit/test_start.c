@@ -1,8 +1,10 @@
 /*
  * test_start.c - "One answer per sample" (docs/method.md): a sample is a
  * function of its contact positions alone, whatever the LP solver's path.
- * Every sample is solved by eight workspaces that start every LP from a
- * different basis (SLIPWALL_LP_START's values: the default `auto`, the
+ * Every sample is solved by eight workspaces whose LPs start from
+ * different bases (SLIPWALL_LP_START's values, which drive the standing
+ * check and the SLP's LP1 and LP2, LP-max, the mechanism and LP-min
+ * keeping `auto`'s path: the default `auto`, the
  * slack basis by the primal and by the dual simplex, GLPK's crash basis,
  * the canonical bases, the previous sample's bases, the support basis;
  * `auto` as it starts walls of more than 1,000 interfaces; and `auto`
@@ -10,7 +12,9 @@
  * start after an edit: the wall with its friction scaled by 0.7,
  * docs/design.md "The shared set-up"), and must
  * give the same status, the same lambda_min (1e-9 relative) and the
- * same mechanism (the joint classification of every interface).
+ * same mechanism (the joint classification of every interface).  The
+ * last two also move LP-max: the large walls' path solves it by the
+ * primal simplex, and the edited wall's canonical basis is another.
  * Without the tie-breaks, changing
  * only LP-max's start moved 47-88 % of the demo wall's samples.
  *
