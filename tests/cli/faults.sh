@@ -450,6 +450,14 @@ else
 			"$(T capture-pane -p -t t:save | grep -v '^$' | tail -n 3)"
 	fi
 	T send-keys -t t:save q
+	# each workbench finishes exiting before the EXIT trap kills the
+	# tmux server: a SIGHUP that landed during the sanitizer build's
+	# leak check at exit left one spinning, orphaned, at 100 % of a core
+	# (LeakSanitizer's stop-the-world; after a clean-clone CI run on 27
+	# November 2026)
+	for w in full late norun save; do
+		wb_status "$w" >/dev/null
+	done
 fi
 
 tap_end
