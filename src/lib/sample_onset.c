@@ -81,12 +81,10 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 	/* LP-max is degenerate: its optimal stress fields form a face, and
 	 * the tie-break takes the one with the least sum r_j N_j, whatever
 	 * vertex the simplex reached (the SLP's start).  One fixed path
-	 * whatever the start option (sws_role_start): the dual simplex
-	 * from the canonical basis, the primal on large walls (from the
-	 * support basis for the workspace's own canonical sample). */
+	 * whatever the start option: its start is sws_role_start's, its
+	 * method sws_lp_max_method's. */
 	struct lp *P = ws->lp[AMAX];
-	enum lp_method m = ws->large ? LP_PRIMAL : LP_DUAL;
-	enum lp_status s = sws_solve(ws, AMAX, m, r);
+	enum lp_status s = sws_solve(ws, AMAX, sws_lp_max_method(ws), r);
 	/* A load factor <= 0 is re-checked by the primal simplex from the
 	 * slack basis, as sws_solve() re-checks a "no": the dual simplex has
 	 * returned "optimal" at lambda = 0 where the LP's optimum is

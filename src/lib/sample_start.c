@@ -139,6 +139,15 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	return SAMPLE_START_CANONICAL;
 }
 
+/* LP-max's simplex method, the other half of its one fixed path (its
+ * start is sws_role_start's): the dual simplex from the canonical basis,
+ * the primal on large walls, where the dual takes 20,744 pivots from
+ * the canonical basis against the primal's 2,308 (the comment above). */
+enum lp_method sws_lp_max_method(const struct sample_ws *ws)
+{
+	return ws->large ? LP_PRIMAL : LP_DUAL;
+}
+
 /* Choose every problem's starting basis (the start option): with the
  * tie-breaks a sample is a function of its draw alone, whatever the
  * start (tests/unit/test_start.c checks it); the start only decides how

@@ -168,6 +168,7 @@ enum lp_status sws_solve(struct sample_ws *ws, enum role role,
 
 /* sample_start.c: the starts */
 enum sample_start sws_role_start(const struct sample_ws *ws, int p);
+enum lp_method sws_lp_max_method(const struct sample_ws *ws);
 void sws_start_bases(struct sample_ws *ws);
 
 /* sample_tie.c: the tie-break weights and the tie-breaks */
