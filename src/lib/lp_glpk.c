@@ -866,6 +866,21 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 			rc = glp_simplex(q->P, &parm);
 		}
 	}
+	/* The dual simplex's phase I can end by proving that the dual has
+	 * no feasible solution: then the LP is unbounded or infeasible,
+	 * and which one the primal status does not say (GLPK leaves it
+	 * GLP_INFEAS, "not feasible at this basis").  The primal simplex,
+	 * from where the dual stopped, decides it.  Measured: a running
+	 * bond wall pushed by a body load against a side support as high
+	 * as itself, from 2 courses of 0.6 m (7 blocks) up: LP-max ended here on
+	 * every sample, read as a solver failure (`numerical`), where the
+	 * primal simplex proves it unbounded (tests/cli/body.sh). */
+	if (rc == 0 && parm.meth != GLP_PRIMAL &&
+	    glp_get_dual_stat(q->P) == GLP_NOFEAS &&
+	    glp_get_prim_stat(q->P) != GLP_FEAS) {
+		parm.meth = GLP_PRIMAL;
+		rc = glp_simplex(q->P, &parm);
+	}
 	if (rc == GLP_EBADB || rc == GLP_ESING || rc == GLP_ECOND ||
 	    rc == GLP_EFAIL || rc == GLP_EITLIM) {
 		glp_adv_basis(q->P, 0);

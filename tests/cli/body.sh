@@ -59,4 +59,43 @@ read -r st lmax lmin <<<"$(awk -F, 'NR == 2 { print $2, $3, $4 }' "$tmp/s7.csv")
 check "195-block body-loaded wall, sample 7: accepted ($st)" [ "$st" = accepted ]
 check "... lambda_min $lmin: 0.424958, at most lambda_max $lmax" \
 	awk -v a="$lmin" -v b="$lmax" 'BEGIN { exit !(a > 0.4249580 && a < 0.4249590 && a <= b + 1e-9) }'
+
+# A wall against a side support as high as itself (a panel built
+# against a pier), pushed into it by the body load: no block can move
+# along the load without moving into the support or lifting against the
+# load's direction, so the load factor has no bound and every sample is
+# `unbounded`, a physical verdict.  LP-max's dual simplex ended by
+# proving its dual infeasible, which GLPK leaves undecided between
+# unbounded and infeasible, and that was read as a solver failure:
+# every sample `numerical` (docs/method.md, "Rejection reasons").
+# Pushed the other way, off the support, the same wall is answered.
+# panel DIR: 3 courses, 0.6 m long, a support on its right, the body
+# load along (DIR, 0)
+panel() {
+	cat <<YAML
+name: A panel against a pier
+material: {friction: 0.6, unit_weight: 20000, thickness: 0.10}
+layout: {block: [0.2, 0.1], courses: 3, length: 0.6, bond: running, first_course: half}
+supports:
+  - ground: {y: 0}
+  - vertices: [[0.6, 0], [0.9, 0], [0.9, 0.3], [0.6, 0.3]]
+loads:
+  - body: {direction: [$1, 0]}
+contacts: {depth: 0.25}
+analysis: {samples: 10, seed: 1}
+YAML
+}
+panel 1 >"$tmp/into.yaml"
+"$bin" run "$tmp/into.yaml" --threads 1 --json >"$tmp/into.json" 2>"$tmp/into.err"
+rc=$?
+got=$(json_field "$tmp/into.json" 'd["rejected"]["unbounded"]')
+check "panel pushed into a pier as high as itself: 10 of 10 samples unbounded ($got), exit 1 ($rc)" \
+	eval '[ "$got" = 10 ] && [ $rc = 1 ]'
+panel -1 >"$tmp/off.yaml"
+"$bin" run "$tmp/off.yaml" --threads 1 --json >"$tmp/off.json" 2>/dev/null
+got=$(json_field "$tmp/off.json" 'd["accepted"]')
+check "the same panel pushed off the pier: 10 of 10 samples accepted ($got)" [ "$got" = 10 ]
+"$bin" solve "$tmp/into.yaml" --method standard >/dev/null 2>"$tmp/solve.err"
+check "solve --method standard on it: says the load is unbounded" \
+	grep -q "unbounded" "$tmp/solve.err"
 tap_end
