@@ -488,6 +488,8 @@ void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		st = sws_standing(ws, r);
 	if (st == SAMPLE_ACCEPTED)
 		st = sws_slp(ws, o, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = sws_slp_load(r);
 	enum lp_status amin = LP_OPTIMAL;
 	if (st == SAMPLE_ACCEPTED)
 		st = check(ws, sws_onset(ws, o, SWS_ZERO_DYING, r), r, &amin);

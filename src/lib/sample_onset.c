@@ -109,6 +109,21 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 	return SAMPLE_ACCEPTED;
 }
 
+/* The SLP's load factor, before step 3: at or below 0 (TOL_FORCE) the
+ * non-associative stress state it converged to cannot carry the wall's
+ * own weight at these contact points, where LP-max's associative one
+ * could, and the sample is `nonpositive`, the reason LP-max gives for
+ * the same load (step 2).  Without this, step 3 found a mechanism and
+ * LP-min (min lambda >= 0, below lambda_max) was infeasible by
+ * construction, so the sample was `numerical`: a running-bond wall of
+ * 8 courses with `positions: anywhere`, seed 3, sample 2, whose SLP
+ * converged at lambda_max = -0.0356 (docs/method.md, "Rejection
+ * reasons"). */
+enum sample_status sws_slp_load(const struct sample_result *r)
+{
+	return r->lambda_max > TOL_FORCE ? SAMPLE_ACCEPTED : SAMPLE_NONPOSITIVE;
+}
+
 /* The SLP's start below LP-max's optimum (sws_floor_tiebreak): its
  * stress field into ws->x and its capacities into ws->c. */
 enum sample_status sws_lp_max_floor(struct sample_ws *ws,

@@ -194,6 +194,7 @@ enum sample_status sws_slp(struct sample_ws *ws, const struct sample_opts *o,
  * virtual work, the export */
 enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 			      double *v);
+enum sample_status sws_slp_load(const struct sample_result *r);
 enum sample_status sws_standing(struct sample_ws *ws, struct sample_result *r);
 enum sample_status sws_mechanism(struct sample_ws *ws, struct sample_result *r);
 /* the force zero of the onset check: the first (a dying contact's force

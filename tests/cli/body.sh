@@ -98,4 +98,29 @@ check "the same panel pushed off the pier: 10 of 10 samples accepted ($got)" [ "
 "$bin" solve "$tmp/into.yaml" --method standard >/dev/null 2>"$tmp/solve.err"
 check "solve --method standard on it: says the load is unbounded" \
 	grep -q "unbounded" "$tmp/solve.err"
+
+# A wall whose SLP converges below 0: 8 courses, 1.6 m, `positions:
+# anywhere`, seed 3, sample 2 (its draw: tests/data/anywhere-8c-seed3-s2.csv).
+# LP-max's associative field carries the wall (lambda > 0), but the
+# SLP's non-associative fixed point (verified, residual 2e-13) is at
+# lambda_max = -0.0356: at these contact points the wall cannot carry its
+# own weight once friction does not dilate.  That is `nonpositive`, the
+# reason LP-max gives for the same load; it was `numerical`, because
+# LP-min (min lambda >= 0 below lambda_max) was infeasible by
+# construction (docs/method.md, "Rejection reasons").
+cat >"$tmp/anywhere.yaml" <<'YAML'
+name: Running bond, contact points anywhere
+material: {friction: 0.6, unit_weight: 20000, thickness: 0.10}
+layout: {block: [0.2, 0.1], courses: 8, length: 1.6, bond: running, first_course: half}
+supports:
+  - ground: {y: 0}
+loads:
+  - body: {direction: [1, 0]}
+contacts: {positions: anywhere}
+YAML
+"$bin" run "$tmp/anywhere.yaml" --replay tests/data/anywhere-8c-seed3-s2.csv \
+	--threads 1 --samples "$tmp/any.csv" >/dev/null 2>&1
+read -r st lmax <<<"$(awk -F, 'NR == 2 { print $2, $3 }' "$tmp/any.csv")"
+check "contact points anywhere, seed 3, sample 2: nonpositive ($st), lambda_max $lmax = -0.0356" \
+	awk -v s="$st" -v l="$lmax" 'BEGIN { exit !(s == "nonpositive" && l > -0.03557 && l < -0.03555) }'
 tap_end
