@@ -172,6 +172,19 @@ void wall_digest(const struct wall *w, char *out);
  * A sample's own friction is in its draw (draw.h). */
 double wall_iface_mu(const struct wall *w, int k);
 
+/* Two joints of one free block that meet at a point where associative
+ * friction can lock them: the friction cones of their contact forces
+ * at that point hold a pair of opposite forces, so a force of any size
+ * pushed into the corner is carried by friction alone (for joints at a
+ * right angle: mu_i mu_j >= 1).  LP-max, the associative problem every
+ * sample starts from, can then be unbounded or far above the
+ * non-associative collapse load (docs/method.md, "What the method
+ * cannot answer").  Returns 1 and the first such pair (interfaces *ki,
+ * *kj, block *blk, the point pt), 0 if there is none.  The friction is
+ * wall_iface_mu's. */
+int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
+		       double pt[2]);
+
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
 extern const char wall_far_text[];

@@ -58,7 +58,7 @@ int cli_check_depth(const char *cmd, const struct wall *w, const char *path,
 	return 0;
 }
 
-int cli_load_wall(const char *path, struct wall **w)
+int cli_load_wall_quiet(const char *path, struct wall **w)
 {
 	char err[SW_ERRLEN];
 	enum sw_status st = wallfile_load(path, w, err);
@@ -67,6 +67,31 @@ int cli_load_wall(const char *path, struct wall **w)
 		return sw_status_exit(st);
 	}
 	return 0;
+}
+
+int cli_load_wall(const char *path, struct wall **w)
+{
+	int rc = cli_load_wall_quiet(path, w);
+	if (!rc)
+		cli_warn_friction(*w);
+	return rc;
+}
+
+void cli_warn_friction(const struct wall *w)
+{
+	int b, i, j;
+	double pt[2];
+	if (!wall_friction_lock(w, &b, &i, &j, pt))
+		return;
+	fprintf(stderr, "slipwall: warning: %s: friction %g and %g on two "
+		"joints of block %s that meet at (%g, %g): associative "
+		"friction locks them (at a right angle, when the product is 1 "
+		"or more), and every sample starts from the associative "
+		"field, so its load may be the sliding load, or `unbounded`, "
+		"where the wall rocks at less (docs/method.md, \"What the "
+		"method cannot answer\")\n", w->path ? w->path : "the wall",
+		wall_iface_mu(w, i), wall_iface_mu(w, j), w->blocks[b].id,
+		pt[0], pt[1]);
 }
 
 const char *cli_demo_wall(void)

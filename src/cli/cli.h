@@ -25,6 +25,12 @@ int cmd_sweep(int argc, char **argv);
 /* Load and finish a wall file; on failure print the message to stderr
  * and return the exit status (2), else 0. */
 int cli_load_wall(const char *path, struct wall **w);
+/* The same without cli_warn_friction (a file that overrides will change) */
+int cli_load_wall_quiet(const char *path, struct wall **w);
+/* Warn on stderr when two joints of a block can lock each other with
+ * associative friction (wall_friction_lock): the answers are then not
+ * the wall's.  Called by every load of a wall file. */
+void cli_warn_friction(const struct wall *w);
 /* After sampling: if the LP solver ran out of memory (each time a
  * sample was rejected as numerical), say so and what to do. */
 void cli_memory_note(const char *cmd);

@@ -226,7 +226,7 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 		need |= ov->o[k].kind != OVR_SET || sets_cov(&ov->o[k]);
 	if (need) {
 		struct wall *plain = NULL;
-		int rc = cli_load_wall(path, &plain);
+		int rc = cli_load_wall_quiet(path, &plain);
 		if (!rc)
 			rc = resolve_loads(cmd, path, plain, ov);
 		if (!rc)
@@ -258,6 +258,7 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 		}
 		return sw_status_exit(st);
 	}
+	cli_warn_friction(*w);
 	return 0;
 }
 

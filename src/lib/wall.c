@@ -148,6 +148,77 @@ double wall_iface_mu(const struct wall *w, int k)
 	return w->ifaces[k].kind == JOINT_HEAD ? w->mu_head : w->mu_bed;
 }
 
+/* Interface f's endpoint e (0: p1, 1: p2). */
+static const double *iface_end(const struct wall_interface *f, int e)
+{
+	return e ? f->p2 : f->p1;
+}
+
+static int same_point(const double *p, const double *q)
+{
+	double tol = 1e-9 * fmax(1, fmax(fabs(p[0]), fabs(p[1])));
+	return fabs(p[0] - q[0]) <= tol && fabs(p[1] - q[1]) <= tol;
+}
+
+/* The cone test at a shared point: forces F_i in the cone about n_i
+ * (half-angle atan mu_i) and F_j = -F_i in the cone about n_j exist iff
+ * the angle between n_i and -n_j is at most atan mu_i + atan mu_j (a
+ * hair more, so that mu = 1 at a right angle, the edge, counts: there
+ * the corner's pair of forces already exists). */
+int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
+		       double pt[2])
+{
+	/* each free block's interfaces, as lists over one array */
+	int nb = w->nblocks, m = w->nifaces;
+	int *start = sw_xcalloc((size_t)nb + 1, sizeof *start);
+	int *list = sw_xmalloc(sizeof *list * (size_t)(2 * m + 1));
+	for (int k = 0; k < m; k++) {
+		start[w->ifaces[k].a + 1]++;
+		start[w->ifaces[k].b + 1]++;
+	}
+	for (int b = 0; b < nb; b++)
+		start[b + 1] += start[b];
+	int *fill = sw_xmalloc(sizeof *fill * (size_t)(nb + 1));
+	memcpy(fill, start, sizeof *fill * (size_t)(nb + 1));
+	for (int k = 0; k < m; k++) {
+		list[fill[w->ifaces[k].a]++] = k;
+		list[fill[w->ifaces[k].b]++] = k;
+	}
+	free(fill);
+	int found = 0;
+	for (int b = 0; b < nb && !found; b++) {
+		if (w->blocks[b].fixed)
+			continue;
+		for (int x = start[b]; x < start[b + 1] && !found; x++)
+			for (int y = x + 1; y < start[b + 1] && !found; y++) {
+				const struct wall_interface *f = &w->ifaces[list[x]];
+				const struct wall_interface *g = &w->ifaces[list[y]];
+				/* the normals of the forces on b, into b */
+				double sf = f->b == b ? 1 : -1, sg = g->b == b ? 1 : -1;
+				double c = -(sf * f->n[0] * sg * g->n[0] +
+					     sf * f->n[1] * sg * g->n[1]);
+				double ang = acos(fmax(-1, fmin(1, c)));
+				double cone = atan(wall_iface_mu(w, list[x])) +
+					      atan(wall_iface_mu(w, list[y]));
+				if (ang > cone + 1e-9)
+					continue;
+				for (int e = 0; e < 4 && !found; e++)
+					if (same_point(iface_end(f, e / 2),
+						       iface_end(g, e % 2))) {
+						found = 1;
+						*blk = b;
+						*ki = list[x];
+						*kj = list[y];
+						pt[0] = iface_end(f, e / 2)[0];
+						pt[1] = iface_end(f, e / 2)[1];
+					}
+			}
+	}
+	free(start);
+	free(list);
+	return found;
+}
+
 void wall_digest(const struct wall *w, char *out)
 {
 	uint64_t h = 14695981039346656037ULL;

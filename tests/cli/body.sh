@@ -123,4 +123,50 @@ YAML
 read -r st lmax <<<"$(awk -F, 'NR == 2 { print $2, $3 }' "$tmp/any.csv")"
 check "contact points anywhere, seed 3, sample 2: nonpositive ($st), lambda_max $lmax = -0.0356" \
 	awk -v s="$st" -v l="$lmax" 'BEGIN { exit !(s == "nonpositive" && l > -0.03557 && l < -0.03555) }'
+
+# Friction that associative friction turns into a lock (docs/method.md,
+# "What the method cannot answer"): a 0.1 m block on the ground beside a
+# support, the load away from the support.  It tips at lambda = b/h = 1;
+# with bed x head friction >= 1 the associative LP-max has no bound (the
+# support's push buys more ground friction than it costs), so every
+# sample is `unbounded`.  Every command that loads such a wall warns,
+# and one whose joints cannot lock does not.
+# corner BED HEAD: the block and its support, friction {bed, head}
+corner() {
+	cat <<YAML
+name: A block beside a support
+material: {friction: {bed: $1, head: $2}, unit_weight: 20000, thickness: 0.10}
+blocks:
+  - id: a
+    vertices: [[0.5, 0], [0.6, 0], [0.6, 0.1], [0.5, 0.1]]
+supports:
+  - ground: {y: 0}
+  - vertices: [[0.3, 0], [0.5, 0], [0.5, 0.1], [0.3, 0.1]]
+loads:
+  - body: {direction: [1, 0]}
+contacts: {depth: 0}
+analysis: {samples: 3, seed: 1}
+YAML
+}
+for c in "1.5 1.5 yes" "2.0 0.5 yes" "2.0 0.45 no" "0.6 0.6 no"; do
+	read -r bed head want <<<"$c"
+	corner "$bed" "$head" >"$tmp/corner.yaml"
+	"$bin" check "$tmp/corner.yaml" >/dev/null 2>"$tmp/check.err"
+	"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>"$tmp/run.err"
+	got=no
+	grep -q "warning: .*friction [0-9.]* and [0-9.]* on two joints of block a that meet at (0.5, 0)" "$tmp/check.err" &&
+		grep -q "warning: .*associative friction locks them" "$tmp/run.err" && got=yes
+	[ -s "$tmp/check.err" ] && [ $got = no ] && got="other: $(head -c 200 "$tmp/check.err")"
+	check "friction bed $bed x head $head at a right angle: warning $got (want $want)" [ "$got" = "$want" ]
+done
+# What the warning is about: at friction 1.5 the block, which tips at
+# lambda = 1, is `unbounded`; at 0.6 it slides at lambda = mu
+corner 1.5 1.5 >"$tmp/corner.yaml"
+"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>/dev/null
+got=$(json_field "$tmp/corner.json" 'd["rejected"]["unbounded"]')
+check "friction 1.5: the block that tips at lambda = 1 is unbounded on 3 of 3 samples ($got): the limit the warning names" [ "$got" = 3 ]
+corner 0.6 0.6 >"$tmp/corner.yaml"
+"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>/dev/null
+got=$(json_field "$tmp/corner.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"')
+check "friction 0.6: the same block slides at lambda = mu = 0.6 ($got)" near "$got" 0.6 1e-7
 tap_end
