@@ -872,9 +872,10 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	 * GLP_INFEAS, "not feasible at this basis").  The primal simplex,
 	 * from where the dual stopped, decides it.  Measured: a running
 	 * bond wall pushed by a body load against a side support as high
-	 * as itself, from 2 courses of 0.6 m (7 blocks) up: LP-max ended here on
-	 * every sample, read as a solver failure (`numerical`), where the
-	 * primal simplex proves it unbounded (tests/cli/body.sh). */
+	 * as itself, from 2 courses of 0.6 m (7 blocks) up: LP-max ended
+	 * here on every sample, read as a solver failure (`numerical`),
+	 * where the primal simplex proves it unbounded
+	 * (tests/cli/body.sh). */
 	if (rc == 0 && parm.meth != GLP_PRIMAL &&
 	    glp_get_dual_stat(q->P) == GLP_NOFEAS &&
 	    glp_get_prim_stat(q->P) != GLP_FEAS) {

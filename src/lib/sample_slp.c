@@ -546,10 +546,10 @@ static void ends_mark(struct sample_ws *ws)
  * (ws->c0) with half the step, for twice as many iterations, and so on
  * until o->max_iter; each phase is short enough for the differences to
  * stay below every decision.  On a wall of more than SLP_PHASE
- * interfaces a phase whose residual is still contracting
- * (SLP_CONTRACT) is not cut until it stops.  Leaves the field in ws->x and
- * the load factor in r->lambda_max.  The first phase is first_phase
- * iterations long (slp_attempts). */
+ * interfaces a phase whose residual is still contracting (SLP_CONTRACT)
+ * is not cut until it stops.  Leaves the field in ws->x and the load
+ * factor in r->lambda_max.  The first phase is first_phase iterations
+ * long (slp_attempts). */
 static enum sample_status slp_piece_path(struct sample_ws *ws,
 					const struct sample_opts *o,
 					struct sample_result *r,
@@ -566,7 +566,8 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
 		int contracting = m > SLP_PHASE && np > SLP_CONTRACT_SPAN &&
-				  diff <= SLP_CONTRACT * res[np % (SLP_CONTRACT_SPAN + 1)];
+				  diff <= SLP_CONTRACT *
+					  res[np % (SLP_CONTRACT_SPAN + 1)];
 		if (it - phase > first_phase * (o->omega / omega) &&
 		    diff > SLP_WANDERING && !contracting) {
 			/* wandering: again from the start, damped twice as

@@ -191,8 +191,9 @@ int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
 			continue;
 		for (int x = start[b]; x < start[b + 1] && !found; x++)
 			for (int y = x + 1; y < start[b + 1] && !found; y++) {
-				const struct wall_interface *f = &w->ifaces[list[x]];
-				const struct wall_interface *g = &w->ifaces[list[y]];
+				const struct wall_interface
+					*f = &w->ifaces[list[x]],
+					*g = &w->ifaces[list[y]];
 				/* the normals of the forces on b, into b */
 				double sf = f->b == b ? 1 : -1, sg = g->b == b ? 1 : -1;
 				double c = -(sf * f->n[0] * sg * g->n[0] +
