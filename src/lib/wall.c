@@ -160,18 +160,14 @@ static int same_point(const double *p, const double *q)
 	return fabs(p[0] - q[0]) <= tol && fabs(p[1] - q[1]) <= tol;
 }
 
-/* The cone test at a shared point: forces F_i in the cone about n_i
- * (half-angle atan mu_i) and F_j = -F_i in the cone about n_j exist iff
- * the angle between n_i and -n_j is at most atan mu_i + atan mu_j (a
- * hair more, so that mu = 1 at a right angle, the edge, counts: there
- * the corner's pair of forces already exists). */
-int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
-		       double pt[2])
+/* Each block's interfaces, as lists over one array: block b's are
+ * (*list)[start[b] .. start[b + 1]), in interface order.  Returns start
+ * (nblocks + 1 entries); both are the caller's to free. */
+static int *block_ifaces(const struct wall *w, int **list)
 {
-	/* each free block's interfaces, as lists over one array */
 	int nb = w->nblocks, m = w->nifaces;
 	int *start = sw_xcalloc((size_t)nb + 1, sizeof *start);
-	int *list = sw_xmalloc(sizeof *list * (size_t)(2 * m + 1));
+	*list = sw_xmalloc(sizeof **list * (size_t)(2 * m + 1));
 	for (int k = 0; k < m; k++) {
 		start[w->ifaces[k].a + 1]++;
 		start[w->ifaces[k].b + 1]++;
@@ -181,10 +177,22 @@ int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
 	int *fill = sw_xmalloc(sizeof *fill * (size_t)(nb + 1));
 	memcpy(fill, start, sizeof *fill * (size_t)(nb + 1));
 	for (int k = 0; k < m; k++) {
-		list[fill[w->ifaces[k].a]++] = k;
-		list[fill[w->ifaces[k].b]++] = k;
+		(*list)[fill[w->ifaces[k].a]++] = k;
+		(*list)[fill[w->ifaces[k].b]++] = k;
 	}
 	free(fill);
+	return start;
+}
+
+/* The cone test at a shared point: forces F_i in the cone about n_i
+ * (half-angle atan mu_i) and F_j = -F_i in the cone about n_j exist iff
+ * the angle between n_i and -n_j is at most atan mu_i + atan mu_j (a
+ * hair more, so that mu = 1 at a right angle, the edge, counts: there
+ * the corner's pair of forces already exists). */
+int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
+		       double pt[2])
+{
+	int nb = w->nblocks, *list, *start = block_ifaces(w, &list);
 	int found = 0;
 	for (int b = 0; b < nb && !found; b++) {
 		if (w->blocks[b].fixed)
@@ -306,22 +314,16 @@ static int load_block(const struct wall *w, const double *p, const double *d,
 /* Every free block must reach a support through interfaces. */
 static int first_unsupported(const struct wall *w)
 {
-	int n = w->nblocks, *adj_start = sw_xcalloc((size_t)n + 1, sizeof(int));
-	int *adj = sw_xmalloc(sizeof(int) * (size_t)(2 * w->nifaces + 1));
-	for (int k = 0; k < w->nifaces; k++) {
-		adj_start[w->ifaces[k].a + 1]++;
-		adj_start[w->ifaces[k].b + 1]++;
-	}
+	int n = w->nblocks, *adj, *adj_start = block_ifaces(w, &adj);
+	/* block i's neighbour across interface adj[p] */
 	for (int i = 0; i < n; i++)
-		adj_start[i + 1] += adj_start[i];
-	int *fill = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
-	memcpy(fill, adj_start, sizeof(int) * (size_t)n);
-	for (int k = 0; k < w->nifaces; k++) {
-		adj[fill[w->ifaces[k].a]++] = w->ifaces[k].b;
-		adj[fill[w->ifaces[k].b]++] = w->ifaces[k].a;
-	}
+		for (int p = adj_start[i]; p < adj_start[i + 1]; p++) {
+			const struct wall_interface *f = &w->ifaces[adj[p]];
+			adj[p] = f->a == i ? f->b : f->a;
+		}
 	char *seen = sw_xcalloc((size_t)n + 1, 1);
-	int *queue = fill, head = 0, tail = 0;
+	int *queue = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
+	int head = 0, tail = 0;
 	for (int i = 0; i < n; i++)
 		if (w->blocks[i].fixed) {
 			seen[i] = 1;
@@ -341,7 +343,7 @@ static int first_unsupported(const struct wall *w)
 			bad = i;
 	free(adj_start);
 	free(adj);
-	free(fill);
+	free(queue);
 	free(seen);
 	return bad;
 }
