@@ -152,21 +152,18 @@ for c in "1.5 1.5 yes" "2.0 0.5 yes" "2.0 0.45 no" "0.6 0.6 no"; do
 	read -r bed head want <<<"$c"
 	corner "$bed" "$head" >"$tmp/corner.yaml"
 	"$bin" check "$tmp/corner.yaml" >/dev/null 2>"$tmp/check.err"
-	"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>"$tmp/run.err"
+	"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner-$bed-$head.json" 2>"$tmp/run.err"
 	got=no
 	grep -q "warning: .*friction [0-9.]* and [0-9.]* on two joints of block a that meet at (0.5, 0)" "$tmp/check.err" &&
 		grep -q "warning: .*associative friction locks them" "$tmp/run.err" && got=yes
 	[ -s "$tmp/check.err" ] && [ $got = no ] && got="other: $(head -c 200 "$tmp/check.err")"
 	check "friction bed $bed x head $head at a right angle: warning $got (want $want)" [ "$got" = "$want" ]
 done
-# What the warning is about: at friction 1.5 the block, which tips at
-# lambda = 1, is `unbounded`; at 0.6 it slides at lambda = mu
-corner 1.5 1.5 >"$tmp/corner.yaml"
-"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>/dev/null
-got=$(json_field "$tmp/corner.json" 'd["rejected"]["unbounded"]')
+# What the warning is about (the loop's runs): at friction 1.5 the
+# block, which tips at lambda = 1, is `unbounded`; at 0.6 it slides at
+# lambda = mu
+got=$(json_field "$tmp/corner-1.5-1.5.json" 'd["rejected"]["unbounded"]')
 check "friction 1.5: the block that tips at lambda = 1 is unbounded on 3 of 3 samples ($got): the limit the warning names" [ "$got" = 3 ]
-corner 0.6 0.6 >"$tmp/corner.yaml"
-"$bin" run "$tmp/corner.yaml" --threads 1 --json >"$tmp/corner.json" 2>/dev/null
-got=$(json_field "$tmp/corner.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"')
+got=$(json_field "$tmp/corner-0.6-0.6.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"')
 check "friction 0.6: the same block slides at lambda = mu = 0.6 ($got)" near "$got" 0.6 1e-7
 tap_end
