@@ -70,6 +70,18 @@
  * rule 6) */
 #define SLP_CONTRACT 0.25
 #define SLP_CONTRACT_SPAN 20
+/* ... nor, on any wall, while it is leaving a piece: its joints'
+ * classification has held for SLP_CONTRACT_SPAN plain iterations, and
+ * for SLP_CONTRACT_SPAN after it last did.  On one affine piece whose
+ * fixed point is not the map's (its jump failed), the iterates move away
+ * from that point, at a steady rate, until they leave the piece: the
+ * residual grows all the way out, so it reads as wandering, but the way
+ * out is the way to the answer.  A 6-course wall beside a half-height
+ * pier (tests/data/pier-half-seed1-s4.csv) held one piece from about
+ * iteration 70 to 104, its residual growing 1 % an iteration, and
+ * converged at 134 once the phase was not cut at 100; each smaller step
+ * drifted the same way more slowly, and it was `not_converged`
+ * (docs/method.md, "The SLP's answer", rule 6) */
 #define SLP_WANDERING 1e-3
 /* the third attempt's root search (rule 8): bisection steps along the
  * segment between a phase end's two iterates (to 2^-40 of its length),
@@ -547,7 +559,9 @@ static void ends_mark(struct sample_ws *ws)
  * until o->max_iter; each phase is short enough for the differences to
  * stay below every decision.  On a wall of more than SLP_PHASE
  * interfaces a phase whose residual is still contracting (SLP_CONTRACT)
- * is not cut until it stops.  Leaves the field in ws->x and the load
+ * is not cut until it stops, and on any wall a phase that is leaving a
+ * piece it has held (escape) is not cut until SLP_CONTRACT_SPAN
+ * iterations after it has left.  Leaves the field in ws->x and the load
  * factor in r->lambda_max.  The first phase is first_phase iterations
  * long (slp_attempts). */
 static enum sample_status slp_piece_path(struct sample_ws *ws,
@@ -555,7 +569,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 					struct sample_result *r,
 					double first_phase)
 {
-	int m = ws->m, settled = 0, jumped = 0, phase = 0;
+	int m = ws->m, settled = 0, jumped = 0, phase = 0, escape = 0;
 	double lam_prev = NAN, lam, diff = HUGE_VAL, omega = o->omega;
 	unsigned long cls = 0, failed = 0;
 	/* the residuals of the phase's plain iterates, the last
@@ -569,7 +583,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 				  diff <= SLP_CONTRACT *
 					  res[np % (SLP_CONTRACT_SPAN + 1)];
 		if (it - phase > first_phase * (o->omega / omega) &&
-		    diff > SLP_WANDERING && !contracting) {
+		    diff > SLP_WANDERING && !contracting && it > escape) {
 			/* wandering: again from the start, damped twice as
 			 * much, for twice as many iterations */
 			ends_mark(ws);
@@ -617,6 +631,8 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		unsigned long h = slp_class(ws);
 		settled = h == cls ? settled + 1 : 0;
 		cls = h;
+		if (settled >= SLP_CONTRACT_SPAN)	/* leaving a piece */
+			escape = it + SLP_CONTRACT_SPAN;
 		if (settled >= o->piece_settle && h != failed &&
 		    piece_jump(ws) == 0) {
 			/* the plain step, kept for a failed jump */
