@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "slipwall/json.h"
 #include "slipwall/mc.h"
 #include "slipwall/text.h"
 #include "slipwall/wallfile.h"
@@ -77,21 +78,41 @@ int cli_load_wall(const char *path, struct wall **w)
 	return rc;
 }
 
-void cli_warn_friction(const struct wall *w)
+/* The friction lock's warning (wall_friction_lock) into buf, without
+ * the wall's path; 0 when w's joints cannot lock. */
+static int friction_lock_text(const struct wall *w, char *buf, size_t len)
 {
 	int b, i, j;
 	double pt[2];
 	if (!wall_friction_lock(w, &b, &i, &j, pt))
-		return;
-	fprintf(stderr, "slipwall: warning: %s: friction %g and %g on two "
-		"joints of block %s that meet at (%g, %g): associative "
-		"friction locks them (at a right angle, when the product is 1 "
-		"or more), and every sample starts from the associative "
-		"field, so its load may be the sliding load, or `unbounded`, "
-		"where the wall rocks at less (docs/method.md, \"What the "
-		"method cannot answer\")\n", w->path ? w->path : "the wall",
-		wall_iface_mu(w, i), wall_iface_mu(w, j), w->blocks[b].id,
-		pt[0], pt[1]);
+		return 0;
+	snprintf(buf, len, "friction %g and %g on two joints of block %s "
+		 "that meet at (%g, %g): associative friction locks them (at "
+		 "a right angle, when the product is 1 or more), and every "
+		 "sample starts from the associative field, so its load may be "
+		 "the sliding load, or `unbounded`, where the wall rocks at "
+		 "less (docs/method.md, \"What the method cannot answer\")",
+		 wall_iface_mu(w, i), wall_iface_mu(w, j), w->blocks[b].id,
+		 pt[0], pt[1]);
+	return 1;
+}
+
+void cli_warn_friction(const struct wall *w)
+{
+	char text[1024];
+	if (friction_lock_text(w, text, sizeof text))
+		fprintf(stderr, "slipwall: warning: %s: %s\n",
+			w->path ? w->path : "the wall", text);
+}
+
+void cli_json_warnings(struct json *j, const struct wall *w)
+{
+	char text[1024];
+	json_key(j, "warnings");
+	json_array_begin(j);
+	if (friction_lock_text(w, text, sizeof text))
+		json_string(j, text);
+	json_array_end(j);
 }
 
 const char *cli_demo_wall(void)

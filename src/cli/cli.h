@@ -31,6 +31,10 @@ int cli_load_wall_quiet(const char *path, struct wall **w);
  * associative friction (wall_friction_lock): the answers are then not
  * the wall's.  Called by every load of a wall file. */
 void cli_warn_friction(const struct wall *w);
+/* The same warnings for --json: the key "warnings", an array of
+ * strings (empty when there are none). */
+struct json;
+void cli_json_warnings(struct json *j, const struct wall *w);
 /* After sampling: if the LP solver ran out of memory (each time a
  * sample was rejected as numerical), say so and what to do. */
 void cli_memory_note(const char *cmd);

@@ -42,6 +42,7 @@ static void print_json(const struct wall *w)
 		json_string(&j, w->name);
 	else
 		json_null(&j);
+	cli_json_warnings(&j, w);
 	json_key(&j, "material");
 	json_object_begin(&j);
 	json_key(&j, "friction");

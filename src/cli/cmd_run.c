@@ -483,6 +483,7 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		json_string(&j, r->w->name);
 	else
 		json_null(&j);
+	cli_json_warnings(&j, r->w);
 	json_key(&j, "positions");
 	json_string(&j, r->a->positions ? "replay" :
 		    r->w->anywhere ? "anywhere" : "depth");

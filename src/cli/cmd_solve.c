@@ -53,6 +53,7 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 	json_string(&j, solve_method_name(r->method));
 	json_key(&j, "status");
 	json_string(&j, sample_status_name(r->status));
+	cli_json_warnings(&j, w);
 	json_key(&j, "load_factor");
 	json_double(&j, r->lambda);
 	json_key(&j, "load_newtons");

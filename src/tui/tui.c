@@ -123,6 +123,7 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 	struct tm tm;
 
 	t->w = w;
+	tui_edit_lock(t);
 	undo_init(&t->undo, TUI_UNDO_STEPS);
 	snprintf(t->next_what, sizeof t->next_what, "opened %s",
 		 w->path ? w->path : path);
@@ -134,6 +135,7 @@ static void tui_session(struct tui *t, struct wall *w, const char *path)
 		t->hist_path[0] = 0;
 	tui_message(t, 0, "%s: sampling on %d thread%s", w->path ? w->path : path,
 		    t->threads, tui_s(t->threads));
+	tui_edit_lock_message(t);
 	tui_run_start(t);
 	t->solve = tui_solve_new();
 	if (t->solve)

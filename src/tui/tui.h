@@ -190,6 +190,9 @@ struct tui {
 	 * the wall keeps its shape (tui_run.c; docs/design.md, "The shared
 	 * set-up") */
 	struct sample_setup *setup;
+	/* why the wall's joints lock under associative friction
+	 * (wall_friction_lock; tui_edit_lock), or "" */
+	char lock[192];
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */
@@ -444,6 +447,8 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w);
  * handlers of their keys (tui_home.c's table) */
 /* Replace the wall (t takes nw, finished): a new run, a new solve. */
 void tui_edit_set_wall(struct tui *t, struct wall *nw);
+void tui_edit_lock(struct tui *t);
+void tui_edit_lock_message(struct tui *t);
 void tui_edit_key_undo(struct tui *t, int ch);		/* u, U, Ctrl-R */
 void tui_edit_key_friction(struct tui *t, int ch);	/* f, F */
 void tui_edit_key_depth(struct tui *t, int ch);		/* e, E, i */

@@ -30,11 +30,42 @@
 #define TUI_STEP_MU 0.05
 #define TUI_STEP_DEPTH 0.05
 
+/* t->lock for t->w: the two joints that associative friction locks
+ * (wall_friction_lock), in the words of the command line's warning,
+ * or "".  The title marks such a wall (tui_home_title), and the message
+ * of the edit or the opening that made it says why (docs/workbench.md,
+ * "Friction that locks"). */
+void tui_edit_lock(struct tui *t)
+{
+	int b, i, j;
+	double pt[2];
+	const struct wall *w = t->w;
+	t->lock[0] = 0;
+	if (w && wall_friction_lock(w, &b, &i, &j, pt))
+		snprintf(t->lock, sizeof t->lock,
+			 "friction %g and %g lock two joints of block %s at "
+			 "(%g, %g): loads may be the lock's, not the wall's "
+			 "(docs/method.md)", wall_iface_mu(w, i),
+			 wall_iface_mu(w, j), w->blocks[b].id, pt[0], pt[1]);
+}
+
+/* The message line as it is, with the lock's warning first when the
+ * wall locks; shown as an error, so that it stands out. */
+void tui_edit_lock_message(struct tui *t)
+{
+	if (!t->lock[0])
+		return;
+	char m[sizeof t->msg];
+	snprintf(m, sizeof m, "%s", t->msg);
+	tui_message(t, 1, "warning: %s | %s", t->lock, m);
+}
+
 void tui_edit_set_wall(struct tui *t, struct wall *nw)
 {
 	tui_run_end(t);
 	wall_free(t->w);
 	t->w = nw;
+	tui_edit_lock(t);
 	t->has_std = t->has_gil = t->solve_done = 0;
 	t->mech_sel = 0;
 	tui_run_start(t);
@@ -77,6 +108,7 @@ void tui_edit_key_undo(struct tui *t, int ch)
 	tui_message(t, 0, "%s: sampling again (run %d; %d more to undo, %d to redo)",
 		    redo ? "redone" : "undone", t->runno, t->undo.npast,
 		    t->undo.nfuture);
+	tui_edit_lock_message(t);
 }
 
 /* Copy, let the caller change, apply; with a message on success. */
@@ -91,8 +123,10 @@ static struct wall *tui_edit_begin(struct tui *t)
 
 static void tui_edit_done(struct tui *t, struct wall *nw, const char *what)
 {
-	if (tui_edit_apply(t, nw, what) == 0)
+	if (tui_edit_apply(t, nw, what) == 0) {
 		tui_message(t, 0, "%s: sampling again (run %d)", what, t->runno);
+		tui_edit_lock_message(t);
+	}
 }
 
 /* Parse "a" or "a,b" (also spaces); returns how many numbers. */

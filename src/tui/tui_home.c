@@ -69,10 +69,11 @@ static void tui_home_title(struct tui *t)
 	else
 		snprintf(dtext, sizeof dtext, "depth %.3g", w->depth);
 	char rest[192], name[256], nm[256], file[PATH_MAX + 8], fr[64];
-	snprintf(rest, sizeof rest, "%s | %s | %s | run %d %s",
+	snprintf(rest, sizeof rest, "%s | %s%s | %s | run %d %s",
 		 undo_modified(&t->undo) ? " *" : "",
 		 tui_friction(t, fr, sizeof fr, w->mu_bed, w->mu_head,
-			      w->mu_cov), dtext, t->runno, tui_run_state(t));
+			      w->mu_cov), t->lock[0] ? " locks" : "", dtext,
+		 t->runno, tui_run_state(t));
 	snprintf(name, sizeof name, "%s",
 		 w->name ? w->name : (w->path ? w->path : "wall"));
 	snprintf(file, sizeof file, " | %s", csv[0] ? csv : "(no samples file)");

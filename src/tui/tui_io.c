@@ -217,6 +217,7 @@ static void tui_io_open_path(struct tui *t, const char *path)
 	snprintf(t->next_what, sizeof t->next_what, "opened %s", path);
 	tui_edit_set_wall(t, nw);
 	tui_message(t, 0, "opened %s: sampling (run %d)", path, t->runno);
+	tui_edit_lock_message(t);
 }
 
 void tui_io_open(struct tui *t)

@@ -159,6 +159,10 @@ for c in "1.5 1.5 yes" "2.0 0.5 yes" "2.0 0.45 no" "0.6 0.6 no"; do
 	[ -s "$tmp/check.err" ] && [ $got = no ] && got="other: $(head -c 200 "$tmp/check.err")"
 	check "friction bed $bed x head $head at a right angle: warning $got (want $want)" [ "$got" = "$want" ]
 done
+# --json carries the same warning (the loop's runs)
+got=$(json_field "$tmp/corner-1.5-1.5.json" 'len(d["warnings"]) == 1 and "associative friction locks them" in d["warnings"][0] and "block a that meet at (0.5, 0)" in d["warnings"][0]')
+got2=$(json_field "$tmp/corner-0.6-0.6.json" 'd["warnings"] == []')
+check "run --json: warnings has the lock at friction 1.5 ($got), is empty at 0.6 ($got2)" [ "$got $got2" = "True True" ]
 # What the warning is about (the loop's runs): at friction 1.5 the
 # block, which tips at lambda = 1, is `unbounded`; at 0.6 it slides at
 # lambda = mu

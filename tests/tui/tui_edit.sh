@@ -45,7 +45,7 @@ pa=$(p05 w)
 if ! marked w; then ok "no modified mark on the opened wall"; else not_ok "no modified mark on the opened wall" "$(title w)"; fi
 
 T send-keys -t t:w f
-if wait_run w 3 done 60 && mu_is w 0.65 && marked w; then
+if wait_run w 3 done 60 && mu_is w 0.65 && marked w && ! title w | grep -q locks; then
 	ok "f: friction 0.65, the title marked modified"
 else
 	not_ok "f: friction 0.65, the title marked modified" "$(title w)"
@@ -96,13 +96,23 @@ if within 120 mu_is w 3.2; then
 else
 	not_ok "51 edits: friction 3.2" "$(title w)"
 fi
+# friction 3.2 on bed and head joints locks them under associative
+# friction (docs/workbench.md, "Friction that locks"): the title marks
+# it and the last edit's message says which joints, as `check` does
+if title w | grep -qF "μ 3.2/3.2 locks |" &&
+   wait_for w 'warning: friction 3.2 and 3.2 lock two joints of block' 10; then
+	ok "friction 3.2: the title says locks, the message which joints"
+else
+	not_ok "friction 3.2: the title says locks, the message which joints" "$(screen w)"
+fi
 keys=()
 for i in $(seq 52); do keys+=(u); done
 T send-keys -t t:w "${keys[@]}"
-if within 120 mu_is w 0.6 && wait_for w 'undone: .*0 more to undo' 10 && ! marked w; then
-	ok "52 undos: friction 0.6, nothing more to undo, not marked"
+if within 120 mu_is w 0.6 && wait_for w 'undone: .*0 more to undo' 10 && ! marked w &&
+   ! title w | grep -q locks; then
+	ok "52 undos: friction 0.6, nothing more to undo, not marked, no lock"
 else
-	not_ok "52 undos: friction 0.6, nothing more to undo, not marked" "$(screen w)"
+	not_ok "52 undos: friction 0.6, nothing more to undo, not marked, no lock" "$(screen w)"
 fi
 
 # --- the block cursor: hjkl move it, Tab keeps it ---
