@@ -69,29 +69,30 @@ check "... lambda_min $lmin: 0.424958, at most lambda_max $lmax" \
 # unbounded and infeasible, and that was read as a solver failure:
 # every sample `numerical` (docs/method.md, "Rejection reasons").
 # Pushed the other way, off the support, the same wall is answered.
-# panel DIR: 3 courses, 0.6 m long, a support on its right, the body
-# load along (DIR, 0)
-panel() {
+# pier_wall NAME COURSES LENGTH DIR: running bond of 0.2 x 0.1 m blocks,
+# friction 0.6, beside a pier 0.3 m wide and 0.3 m high on its right,
+# the body load along (DIR, 0)
+pier_wall() {
 	cat <<YAML
-name: A panel against a pier
+name: $1
 material: {friction: 0.6, unit_weight: 20000, thickness: 0.10}
-layout: {block: [0.2, 0.1], courses: 3, length: 0.6, bond: running, first_course: half}
+layout: {block: [0.2, 0.1], courses: $2, length: $3, bond: running, first_course: half}
 supports:
   - ground: {y: 0}
-  - vertices: [[0.6, 0], [0.9, 0], [0.9, 0.3], [0.6, 0.3]]
+  - vertices: [[$3, 0], [$(awk -v l="$3" 'BEGIN { print l + 0.3 }'), 0], [$(awk -v l="$3" 'BEGIN { print l + 0.3 }'), 0.3], [$3, 0.3]]
 loads:
-  - body: {direction: [$1, 0]}
+  - body: {direction: [$4, 0]}
 contacts: {depth: 0.25}
 analysis: {samples: 10, seed: 1}
 YAML
 }
-panel 1 >"$tmp/into.yaml"
+pier_wall "A panel against a pier" 3 0.6 1 >"$tmp/into.yaml"
 "$bin" run "$tmp/into.yaml" --threads 1 --json >"$tmp/into.json" 2>"$tmp/into.err"
 rc=$?
 got=$(json_field "$tmp/into.json" 'd["rejected"]["unbounded"]')
 check "panel pushed into a pier as high as itself: 10 of 10 samples unbounded ($got), exit 1 ($rc)" \
 	eval '[ "$got" = 10 ] && [ $rc = 1 ]'
-panel -1 >"$tmp/off.yaml"
+pier_wall "A panel against a pier" 3 0.6 -1 >"$tmp/off.yaml"
 "$bin" run "$tmp/off.yaml" --threads 1 --json >"$tmp/off.json" 2>/dev/null
 got=$(json_field "$tmp/off.json" 'd["accepted"]')
 check "the same panel pushed off the pier: 10 of 10 samples accepted ($got)" [ "$got" = 10 ]
@@ -182,17 +183,7 @@ check "friction 0.6: the same block slides at lambda = mu = 0.6 ($got)" near "$g
 # iterations cut it just before it left, each smaller step drifted the
 # same way more slowly, and the sample was `not_converged` from every
 # start.  It is accepted now, at `--slp plain`'s load, from three starts.
-cat >"$tmp/pier.yaml" <<'YAML'
-name: Running bond beside a pier half its height
-material: {friction: 0.6, unit_weight: 20000, thickness: 0.10}
-layout: {block: [0.2, 0.1], courses: 6, length: 1.0, bond: running, first_course: half}
-supports:
-  - ground: {y: 0}
-  - vertices: [[1.0, 0], [1.3, 0], [1.3, 0.3], [1.0, 0.3]]
-loads:
-  - body: {direction: [1, 0]}
-contacts: {depth: 0.25}
-YAML
+pier_wall "Running bond beside a pier half its height" 6 1.0 1 >"$tmp/pier.yaml"
 for s in auto slack-primal support; do
 	SLIPWALL_LP_START=$s "$bin" run "$tmp/pier.yaml" --replay tests/data/pier-half-seed1-s4.csv \
 		--threads 1 --samples "$tmp/pier-$s.csv" >/dev/null 2>&1
