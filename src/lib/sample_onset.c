@@ -75,6 +75,14 @@ static void slp_start_from(struct sample_ws *ws, const struct lp *P)
  * starting capacities in ws->c, and, if v is not NULL, the duals of its
  * equilibrium rows in v (the associative mechanism, before the
  * tie-break replaces them). */
+/* A load factor's verdict, for LP-max's (step 2) and the SLP's
+ * (sws_slp_load): at or below 0 (TOL_FORCE) the wall cannot carry its
+ * own weight at these contact points, `nonpositive`. */
+static enum sample_status load_verdict(double lam)
+{
+	return lam > TOL_FORCE ? SAMPLE_ACCEPTED : SAMPLE_NONPOSITIVE;
+}
+
 enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 				 double *v)
 {
@@ -98,7 +106,7 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 		return lp_to_sample(s);
 	double lam = lp_obj(P);
 	r->lambda_lpmax = lam;
-	if (!(lam > TOL_FORCE))
+	if (load_verdict(lam) != SAMPLE_ACCEPTED)
 		return SAMPLE_NONPOSITIVE;
 	for (int i = 0; v && i < ws->R; i++)
 		v[i] = lp_row_dual(P, i);
@@ -121,7 +129,7 @@ enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
  * reasons"). */
 enum sample_status sws_slp_load(const struct sample_result *r)
 {
-	return r->lambda_max > TOL_FORCE ? SAMPLE_ACCEPTED : SAMPLE_NONPOSITIVE;
+	return load_verdict(r->lambda_max);
 }
 
 /* The SLP's start below LP-max's optimum (sws_floor_tiebreak): its
