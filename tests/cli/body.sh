@@ -184,26 +184,59 @@ check "friction 0.6: the same block slides at lambda = mu = 0.6 ($got)" near "$g
 # same way more slowly, and the sample was `not_converged` from every
 # start.  It is accepted now, at `--slp plain`'s load, from three starts.
 pier_wall "Running bond beside a pier half its height" 6 1.0 1 >"$tmp/pier.yaml"
-for s in auto slack-primal support; do
-	SLIPWALL_LP_START=$s "$bin" run "$tmp/pier.yaml" --replay tests/data/pier-half-seed1-s4.csv \
-		--threads 1 --samples "$tmp/pier-$s.csv" >/dev/null 2>&1
-done
-"$bin" run "$tmp/pier.yaml" --replay tests/data/pier-half-seed1-s4.csv --slp plain \
-	--threads 1 --samples "$tmp/pier-plain.csv" >/dev/null 2>&1
-check "beside a half-height pier, seed 1, sample 4: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9, below mu" \
-	python3 - "$tmp"/pier-plain.csv "$tmp"/pier-auto.csv "$tmp"/pier-slack-primal.csv "$tmp"/pier-support.csv <<'PY'
+# plain_answer NAME WALL REPLAY LO HI: the replayed sample from the LP
+# starts auto, slack-primal and support, and by `--slp plain`: all four
+# accepted, one lambda_min to 1e-9, and LO < lambda_min < HI
+plain_answer() {
+	local s
+	for s in auto slack-primal support; do
+		SLIPWALL_LP_START=$s "$bin" run "$2" --replay "$3" \
+			--threads 1 --samples "$tmp/$1-$s.csv" >/dev/null 2>&1
+	done
+	"$bin" run "$2" --replay "$3" --slp plain --threads 1 \
+		--samples "$tmp/$1-plain.csv" >/dev/null 2>&1
+	python3 - "$4" "$5" "$tmp/$1"-plain.csv "$tmp/$1"-auto.csv \
+		"$tmp/$1"-slack-primal.csv "$tmp/$1"-support.csv <<'PY'
 import csv, sys
-rows = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
+lo, hi = float(sys.argv[1]), float(sys.argv[2])
+rows = [list(csv.DictReader(open(f))) for f in sys.argv[3:]]
 ok = all(len(r) == 1 for r in rows)
 if ok:
     rows = [r[0] for r in rows]
-    for f, r in zip(sys.argv[1:], rows):
+    for f, r in zip(sys.argv[3:], rows):
         print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_min"], r["iterations"])
     ok = all(r["status"] == "accepted" for r in rows)
     if ok:
         l0 = float(rows[0]["lambda_min"])
-        ok = 0.59 < l0 < 0.6 - 1e-4 and \
+        ok = lo < l0 < hi and \
             all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
 sys.exit(0 if ok else 1)
 PY
+}
+check "beside a half-height pier, seed 1, sample 4: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9, below mu" \
+	plain_answer pier "$tmp/pier.yaml" tests/data/pier-half-seed1-s4.csv 0.59 0.5999
+
+# A phase cut in the middle of a steady contraction (docs/method.md, "The
+# SLP's answer", rule 6, "a second attempt on small walls"): a 7-course,
+# 0.6 m running-bond wall beside a pier 0.3 m high on its left, bed
+# friction 0.9, head 0.3, depth 0.4, the body load away from the pier;
+# seed 1, sample 32 (tests/data/leftpier-seed1-s32.csv).  At iteration
+# 100 its residual is 2.0e-3 and halving every iteration, as the plain
+# iteration's does until it converges at 113; the phase's end restarted
+# it, its smaller steps never settled, and it was `not_converged` from
+# every start.  Its second attempt, whose contracting phase goes on (as
+# on a large wall), accepts it at `--slp plain`'s load.
+cat >"$tmp/leftpier.yaml" <<'YAML'
+name: Running bond beside a pier on its left
+material: {friction: {bed: 0.9, head: 0.3}, unit_weight: 20000, thickness: 0.10}
+layout: {block: [0.2, 0.1], courses: 7, length: 0.6, bond: running, first_course: full}
+supports:
+  - ground: {y: 0}
+  - vertices: [[-0.3, 0], [0, 0], [0, 0.3], [-0.3, 0.3]]
+loads:
+  - body: {direction: [1, 0]}
+contacts: {depth: 0.4}
+YAML
+check "beside a pier on its left, seed 1, sample 32: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
+	plain_answer leftpier "$tmp/leftpier.yaml" tests/data/leftpier-seed1-s32.csv 0.43 0.44
 tap_end
