@@ -313,7 +313,17 @@ int cmd_solve(int argc, char **argv)
 	enum sw_status st = solve_run(w, &o, &r, err);
 	if (prog.tty && prog.shown)
 		fputs("\r\033[K", stderr);	/* the line goes */
-	if (st != SW_OK) {
+	char lock[512];
+	if (st != SW_OK && r.status == SAMPLE_UNBOUNDED &&
+	    cli_lock_joints(w, lock, sizeof lock)) {
+		/* not a support: the lock (docs/method.md, "What the method
+		 * cannot answer") */
+		cli_errorf("%s: the load factor is unbounded: %s lock under "
+			   "associative friction, so this is not the wall's "
+			   "answer: it may rock or slide at a finite load", path,
+			   lock);
+		rc = sw_status_exit(st);
+	} else if (st != SW_OK) {
 		cli_errorf("%s: %s", path, err);
 		rc = sw_status_exit(st);
 	} else {

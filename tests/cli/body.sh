@@ -164,6 +164,11 @@ done
 got=$(json_field "$tmp/corner-1.5-1.5.json" 'len(d["warnings"]) == 1 and "associative friction locks them" in d["warnings"][0] and "block a that meet at (0.5, 0)" in d["warnings"][0]')
 got2=$(json_field "$tmp/corner-0.6-0.6.json" 'd["warnings"] == []')
 check "run --json: warnings has the lock at friction 1.5 ($got), is empty at 0.6 ($got2)" [ "$got $got2" = "True True" ]
+# solve's `unbounded` names the lock, not a support, as its reason
+corner 1.5 1.5 >"$tmp/corner.yaml"
+"$bin" solve "$tmp/corner.yaml" --method standard >/dev/null 2>"$tmp/solve.err"
+check "solve --method standard at friction 1.5: unbounded, and says the lock makes it so, not the wall" \
+	grep -q "unbounded: friction 1.5 and 1.5 on two joints of block a that meet at (0.5, 0) lock .*not the wall's answer" "$tmp/solve.err"
 # What the warning is about (the loop's runs): at friction 1.5 the
 # block, which tips at lambda = 1, is `unbounded`; at 0.6 it slides at
 # lambda = mu
