@@ -70,6 +70,45 @@ wait_rows() {
 json_field() {
 	python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2" 2>/dev/null
 }
+# one_load [--its FIRST ALL] [--le LE] [--in LO HI] FILE...: each
+# samples file holds one accepted sample and all have one lambda_min (to
+# 1e-9); --its: the first file's iterations above FIRST and every
+# file's above ALL; --le: 0 < lambda_min <= lambda_max (1 + LE); --in:
+# LO < lambda_min < HI.  Prints each file's row as a TAP comment.
+one_load() {
+	python3 - "$@" <<'PY'
+import csv, sys
+a = sys.argv[1:]
+its = le = rng = None
+while a and a[0].startswith("--"):
+    if a[0] == "--its":
+        its, a = (int(a[1]), int(a[2])), a[3:]
+    elif a[0] == "--le":
+        le, a = float(a[1]), a[2:]
+    elif a[0] == "--in":
+        rng, a = (float(a[1]), float(a[2])), a[3:]
+    else:
+        sys.exit("one_load: unknown option " + a[0])
+rows = [list(csv.DictReader(open(f))) for f in a]
+if not a or not all(len(r) == 1 for r in rows):
+    sys.exit(1)
+rows = [r[0] for r in rows]
+for f, r in zip(a, rows):
+    print("#  ", f.rsplit("/", 1)[-1], r["status"], r["lambda_max"], r["lambda_min"], r["iterations"])
+if not all(r["status"] == "accepted" for r in rows):
+    sys.exit(1)
+lam = [float(r["lambda_min"]) for r in rows]
+ok = all(abs(l - lam[0]) <= 1e-9 * abs(lam[0]) for l in lam)
+if its:
+    ok = ok and int(rows[0]["iterations"]) > its[0] and \
+        all(int(r["iterations"]) > its[1] for r in rows)
+if le is not None:
+    ok = ok and all(0 < l <= float(r["lambda_max"]) * (1 + le) for l, r in zip(lam, rows))
+if rng:
+    ok = ok and rng[0] < lam[0] < rng[1]
+sys.exit(0 if ok else 1)
+PY
+}
 # near VALUE TARGET REL: |VALUE - TARGET| <= REL |TARGET| (false when
 # VALUE is not a number)
 near() {

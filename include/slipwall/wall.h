@@ -184,6 +184,11 @@ double wall_iface_mu(const struct wall *w, int k);
  * wall_iface_mu's. */
 int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
 		       double pt[2]);
+/* The same, for people: "friction A and B on two joints of block ID
+ * that meet at (X, Y)" into buf; 0 (buf untouched) when w's joints
+ * cannot lock.  The command line's warnings and the workbench's title
+ * and messages say it. */
+int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
 
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */

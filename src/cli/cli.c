@@ -78,24 +78,12 @@ int cli_load_wall(const char *path, struct wall **w)
 	return rc;
 }
 
-int cli_lock_joints(const struct wall *w, char *buf, size_t len)
-{
-	int b, i, j;
-	double pt[2];
-	if (!wall_friction_lock(w, &b, &i, &j, pt))
-		return 0;
-	snprintf(buf, len, "friction %g and %g on two joints of block %s "
-		 "that meet at (%g, %g)", wall_iface_mu(w, i),
-		 wall_iface_mu(w, j), w->blocks[b].id, pt[0], pt[1]);
-	return 1;
-}
-
 /* The friction lock's warning (wall_friction_lock) into buf, without
  * the wall's path; 0 when w's joints cannot lock. */
 static int friction_lock_text(const struct wall *w, char *buf, size_t len)
 {
 	char joints[512];
-	if (!cli_lock_joints(w, joints, sizeof joints))
+	if (!wall_friction_lock_text(w, joints, sizeof joints))
 		return 0;
 	snprintf(buf, len, "%s: associative friction locks them (at a right "
 		 "angle, when the product is 1 or more), and every sample "

@@ -31,10 +31,6 @@ int cli_load_wall_quiet(const char *path, struct wall **w);
  * associative friction (wall_friction_lock): the answers are then not
  * the wall's.  Called by every load of a wall file. */
 void cli_warn_friction(const struct wall *w);
-/* The two joints that lock (wall_friction_lock), as "friction A and B
- * on two joints of block ID that meet at (X, Y)", into buf; 0 when w's
- * joints cannot lock. */
-int cli_lock_joints(const struct wall *w, char *buf, size_t len);
 /* The same warnings for --json: the key "warnings", an array of
  * strings (empty when there are none). */
 struct json;

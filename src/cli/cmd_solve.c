@@ -315,7 +315,7 @@ int cmd_solve(int argc, char **argv)
 		fputs("\r\033[K", stderr);	/* the line goes */
 	char lock[512];
 	if (st != SW_OK && r.status == SAMPLE_UNBOUNDED &&
-	    cli_lock_joints(w, lock, sizeof lock)) {
+	    wall_friction_lock_text(w, lock, sizeof lock)) {
 		/* not a support: the lock (docs/method.md, "What the method
 		 * cannot answer") */
 		cli_errorf("%s: the load factor is unbounded: %s lock under "

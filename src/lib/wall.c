@@ -228,6 +228,18 @@ int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
 	return found;
 }
 
+int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
+{
+	int b, i, j;
+	double pt[2];
+	if (!wall_friction_lock(w, &b, &i, &j, pt))
+		return 0;
+	snprintf(buf, len, "friction %g and %g on two joints of block %s "
+		 "that meet at (%g, %g)", wall_iface_mu(w, i),
+		 wall_iface_mu(w, j), w->blocks[b].id, pt[0], pt[1]);
+	return 1;
+}
+
 void wall_digest(const struct wall *w, char *out)
 {
 	uint64_t h = 14695981039346656037ULL;

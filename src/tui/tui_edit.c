@@ -31,22 +31,18 @@
 #define TUI_STEP_DEPTH 0.05
 
 /* t->lock for t->w: the two joints that associative friction locks
- * (wall_friction_lock), in the words of the command line's warning,
- * or "".  The title marks such a wall (tui_home_title), and the message
+ * (wall_friction_lock_text, the command line's words), or "".  The
+ * title marks such a wall (tui_home_title), and the message
  * of the edit or the opening that made it says why (docs/workbench.md,
  * "Friction that locks"). */
 void tui_edit_lock(struct tui *t)
 {
-	int b, i, j;
-	double pt[2];
-	const struct wall *w = t->w;
+	char joints[sizeof t->lock - 96];
 	t->lock[0] = 0;
-	if (w && wall_friction_lock(w, &b, &i, &j, pt))
-		snprintf(t->lock, sizeof t->lock,
-			 "friction %g and %g lock two joints of block %s at "
-			 "(%g, %g): loads may be the lock's, not the wall's "
-			 "(docs/method.md)", wall_iface_mu(w, i),
-			 wall_iface_mu(w, j), w->blocks[b].id, pt[0], pt[1]);
+	if (t->w && wall_friction_lock_text(t->w, joints, sizeof joints))
+		snprintf(t->lock, sizeof t->lock, "%s lock under associative "
+			 "friction: loads may be the lock's, not the wall's "
+			 "(docs/method.md)", joints);
 }
 
 /* The message line as it is, with the lock's warning first when the

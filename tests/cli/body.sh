@@ -200,23 +200,8 @@ plain_answer() {
 	done
 	"$bin" run "$2" --replay "$3" --slp plain --threads 1 \
 		--samples "$tmp/$1-plain.csv" >/dev/null 2>&1
-	python3 - "$4" "$5" "$tmp/$1"-plain.csv "$tmp/$1"-auto.csv \
-		"$tmp/$1"-slack-primal.csv "$tmp/$1"-support.csv <<'PY'
-import csv, sys
-lo, hi = float(sys.argv[1]), float(sys.argv[2])
-rows = [list(csv.DictReader(open(f))) for f in sys.argv[3:]]
-ok = all(len(r) == 1 for r in rows)
-if ok:
-    rows = [r[0] for r in rows]
-    for f, r in zip(sys.argv[3:], rows):
-        print("#  ", f.rsplit("/", 1)[1], r["status"], r["lambda_min"], r["iterations"])
-    ok = all(r["status"] == "accepted" for r in rows)
-    if ok:
-        l0 = float(rows[0]["lambda_min"])
-        ok = lo < l0 < hi and \
-            all(abs(float(r["lambda_min"]) - l0) <= 1e-9 * l0 for r in rows)
-sys.exit(0 if ok else 1)
-PY
+	one_load --in "$4" "$5" "$tmp/$1"-plain.csv "$tmp/$1"-auto.csv \
+		"$tmp/$1"-slack-primal.csv "$tmp/$1"-support.csv
 }
 check "beside a half-height pier, seed 1, sample 4: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9, below mu" \
 	plain_answer pier "$tmp/pier.yaml" tests/data/pier-half-seed1-s4.csv 0.59 0.5999

@@ -100,7 +100,7 @@ fi
 # friction (docs/workbench.md, "Friction that locks"): the title marks
 # it and the last edit's message says which joints, as `check` does
 if title w | grep -qF "μ 3.2/3.2 locks |" &&
-   wait_for w 'warning: friction 3.2 and 3.2 lock two joints of block' 10; then
+   wait_for w 'warning: friction 3.2 and 3.2 on two joints of block c[0-9]*b[0-9]* that meet at' 10; then
 	ok "friction 3.2: the title says locks, the message which joints"
 else
 	not_ok "friction 3.2: the title says locks, the message which joints" "$(screen w)"
