@@ -71,10 +71,6 @@ static void slp_start_from(struct sample_ws *ws, const struct lp *P)
 		ws->c[k] = ws->x[3 * k] + ws->x[3 * k + 1];
 }
 
-/* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
- * starting capacities in ws->c, and, if v is not NULL, the duals of its
- * equilibrium rows in v (the associative mechanism, before the
- * tie-break replaces them). */
 /* A load factor's verdict, for LP-max's (step 2) and the SLP's
  * (sws_slp_load): at or below 0 (TOL_FORCE) the wall cannot carry its
  * own weight at these contact points, `nonpositive`. */
@@ -83,6 +79,10 @@ static enum sample_status load_verdict(double lam)
 	return lam > TOL_FORCE ? SAMPLE_ACCEPTED : SAMPLE_NONPOSITIVE;
 }
 
+/* Step 2a: LP-max; leaves its stress field in ws->x and the SLP's
+ * starting capacities in ws->c, and, if v is not NULL, the duals of its
+ * equilibrium rows in v (the associative mechanism, before the
+ * tie-break replaces them). */
 enum sample_status sws_lp_max(struct sample_ws *ws, struct sample_result *r,
 				 double *v)
 {

@@ -78,8 +78,8 @@
  * from that point, at a steady rate, until they leave the piece: the
  * residual grows all the way out, so it reads as wandering, but the way
  * out is the way to the answer.  A 6-course wall beside a half-height
- * pier (tests/data/pier-half-seed1-s4.csv) held one piece from about
- * iteration 70 to 104, its residual growing 1 % an iteration, and
+ * pier (tests/data/pier-half-seed1-s4.csv) held one piece from
+ * iteration 72 to 104, its residual growing 1 % an iteration, and
  * converged at 134 once the phase was not cut at 100; each smaller step
  * drifted the same way more slowly, and it was `not_converged`
  * (docs/method.md, "The SLP's answer", rule 6) */
@@ -764,22 +764,21 @@ static enum sample_status slp_round(struct sample_ws *ws,
  * path, and where it leaves the sample not converged, the piece path
  * once more from the same start with the contracting test on (a 7-course
  * wall beside a pier, tests/data/leftpier-seed1-s32.csv, was cut at
- * iteration 100 while its residual halved every iteration; the test
- * in the first attempt would move 2 of the demo's 6,000 accepted
- * samples up, to the plain iteration's higher fixed points: docs/
- * method.md, "The SLP's answer", rule 6); on a larger one, slp_round's
- * three attempts, and where they leave the sample not converged, the
- * fourth (rule 9): the three
- * again, from the same start, with half the step.  A sample that an
- * earlier attempt accepts keeps its answer.  The smaller step is what
- * the phases of rule 6 give a wandering iteration, but there each phase
- * is cut short and the second attempt's long first phase and the root
- * searches run at the full step: a 290-block bay with two windows at
- * friction 0.65 (tests/data/bay-2w-mu065.yaml, seed 11, sample 17)
- * cycles at omega 0.5 and its root searches land between two pieces
- * whose fixed points lie in each other's domain; at 0.25 the third
- * attempt accepts it, at the load the `support` start's first round
- * reaches. */
+ * iteration 100 while its residual halved every iteration; the test in
+ * the first attempt would move 2 of the demo's 6,000 accepted samples
+ * up, to the plain iteration's higher fixed points: docs/method.md,
+ * "The SLP's answer", rule 6); on a larger one, slp_round's three
+ * attempts, and where they leave the sample not converged, the fourth
+ * (rule 9): the three again, from the same start, with half the step.  A
+ * sample that an earlier attempt accepts keeps its answer.  The smaller
+ * step is what the phases of rule 6 give a wandering iteration, but
+ * there each phase is cut short and the second attempt's long first
+ * phase and the root searches run at the full step: a 290-block bay with
+ * two windows at friction 0.65 (tests/data/bay-2w-mu065.yaml, seed 11,
+ * sample 17) cycles at omega 0.5 and its root searches land between two
+ * pieces whose fixed points lie in each other's domain; at 0.25 the
+ * third attempt accepts it, at the load the `support` start's first
+ * round reaches. */
 static enum sample_status slp_attempts(struct sample_ws *ws,
 				       const struct sample_opts *o,
 				       struct sample_result *r)
