@@ -44,7 +44,12 @@ static int moving(const struct sample_result *m, int b)
 		       fabs(m->vel[3 * b + 2]) > 1e-6;
 }
 
-static void print_json(const struct wall *w, const struct solve_result *r)
+/* The JSON of a solve.  error: NULL when the solve gave a load (the key
+ * is null), else why there is none (the message stderr has too): a
+ * script reads `status` and `error` from the same object either way
+ * (docs/run.md, "solve --json"). */
+static void print_json(const struct wall *w, const struct solve_result *r,
+		       const char *error)
 {
 	struct json j;
 	json_init(&j, stdout, 1);
@@ -53,6 +58,11 @@ static void print_json(const struct wall *w, const struct solve_result *r)
 	json_string(&j, solve_method_name(r->method));
 	json_key(&j, "status");
 	json_string(&j, sample_status_name(r->status));
+	json_key(&j, "error");
+	if (error)
+		json_string(&j, error);
+	else
+		json_null(&j);
 	cli_json_warnings(&j, w);
 	json_key(&j, "load_factor");
 	json_double(&j, r->lambda);
@@ -313,22 +323,27 @@ int cmd_solve(int argc, char **argv)
 	enum sw_status st = solve_run(w, &o, &r, err);
 	if (prog.tty && prog.shown)
 		fputs("\r\033[K", stderr);	/* the line goes */
-	char lock[512];
-	if (st != SW_OK && r.status == SAMPLE_UNBOUNDED &&
-	    wall_friction_lock_text(w, lock, sizeof lock)) {
-		/* not a support: the lock (docs/method.md, "What the method
-		 * cannot answer") */
-		cli_errorf("%s: the load factor is unbounded: %s lock under "
-			   "associative friction, so this is not the wall's "
-			   "answer: it may rock or slide at a finite load", path,
-			   lock);
-		rc = sw_status_exit(st);
-	} else if (st != SW_OK) {
-		cli_errorf("%s: %s", path, err);
+	if (st != SW_OK) {
+		char lock[512], why[SW_ERRLEN + 512];
+		if (r.status == SAMPLE_UNBOUNDED &&
+		    wall_friction_lock_text(w, lock, sizeof lock))
+			/* not a support: the lock (docs/method.md, "What the
+			 * method cannot answer") */
+			snprintf(why, sizeof why, "the load factor is "
+				 "unbounded: %s lock under associative "
+				 "friction, so this is not the wall's answer: "
+				 "it may rock or slide at a finite load", lock);
+		else
+			snprintf(why, sizeof why, "%s", err);
+		cli_errorf("%s: %s", path, why);
+		/* a verdict on the wall (unbounded, cannot stand, ...) is an
+		 * answer a script reads too */
+		if (json && st == SW_EANALYSIS)
+			print_json(w, &r, why);
 		rc = sw_status_exit(st);
 	} else {
 		if (json)
-			print_json(w, &r);
+			print_json(w, &r, NULL);
 		else
 			print_text(w, &r);
 		if (method == SOLVE_GILBERT && !r.converged) {

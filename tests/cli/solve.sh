@@ -12,7 +12,10 @@
 # between 0 and the standard solution's load factor (an upper value of
 # the minimum).  On a terminal (script(1)), a long solve of the large wall
 # says within seconds what it is solving and for how long, rewriting one
-# line; with stderr not a terminal it prints nothing there.  TAP output.
+# line; with stderr not a terminal it prints nothing there.  `--json` on
+# a wall with no finite load (unbounded, nonpositive) still prints its
+# JSON, with the status and the message as "error", and exits 1.  TAP
+# output.
 
 bin=${1:?usage: cli/solve.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -60,4 +63,41 @@ check "standard on the large wall, on a terminal: what it solves and the seconds
 timeout 4 "$bin" solve walls/large.yaml --method gilbert --json >"$tmp/l.out" 2>"$tmp/l.err"
 check "gilbert on the large wall, stderr not a terminal: no progress text" \
 	eval '! grep -q "solving" "$tmp/l.err" && ! grep -q "solving" "$tmp/l.out"'
+# --json on a wall that has no finite collapse load: the verdict is an
+# answer too, so stdout has the JSON (status, and the message stderr has
+# as "error"), the exit status is 1; an answered solve has "error": null
+verdict_wall() {	# NAME FRICTION SUPPORT-YAML
+	cat <<YAML
+name: $1
+material: {friction: $2, unit_weight: 20000, thickness: 0.10}
+blocks:
+  - {id: a, vertices: [[0, 0], [0.5, 0], [0.5, 1], [0, 1]]}
+supports:
+  - ground: {y: 0}
+$3
+loads:
+  - body: {direction: [1, 0]}
+YAML
+}
+verdict_wall "against a support" 0.6 "  - vertices: [[0.5, 0], [0.8, 0], [0.8, 1], [0.5, 1]]" >"$tmp/into.yaml"
+verdict_wall "on ice" 0 "" >"$tmp/ice.yaml"
+verdict_json() {	# JSON STDERR STATUS ERROR-REGEX
+	python3 -c '
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+err = open(sys.argv[2]).read()
+sys.exit(not (d["status"] == sys.argv[3] and re.search(sys.argv[4], d["error"])
+              and d["error"] in err and d["load_factor"] is None
+              and d["mechanism"] is None))' "$@"
+}
+for v in "into unbounded unbounded.*support" "ice nonpositive no.positive.live.load"; do
+	set -- $v
+	"$bin" solve "$tmp/$1.yaml" --method standard --json >"$tmp/$1.json" 2>"$tmp/$1.err"
+	rc=$?
+	check "solve --json, $1: exit 1 ($rc), JSON with status $2, its error as on stderr, no load" \
+		eval "[ $rc = 1 ] && verdict_json $tmp/$1.json $tmp/$1.err $2 '$3'"
+done
+"$bin" solve walls/single-block.yaml --method standard --json >"$tmp/ok.json"
+check "solve --json with a load: \"error\": null" \
+	python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not ("error" in d and d["error"] is None and d["load_factor"] > 0))' "$tmp/ok.json"
 tap_end
