@@ -190,6 +190,19 @@ int wall_friction_lock(const struct wall *w, int *blk, int *ki, int *kj,
  * and messages say it. */
 int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
 
+/* Free blocks that rest on no joint: no interface of theirs can push
+ * them up (the normal of each points into them horizontally or from
+ * above), so their weight hangs on the friction of side joints, held
+ * by a clamp: a course over an opening without a lintel.  The SLP's
+ * fixed capacities can lose that clamp, and such a wall's samples may
+ * end `not_converged` (docs/method.md, "What the method cannot
+ * answer").  Returns how many there are and the first in *blk. */
+int wall_hanging(const struct wall *w, int *blk);
+/* The same, for people: "block ID rests on no joint below it" (or
+ * "block ID and N others rest on no joint below them") into buf; 0 (buf
+ * untouched) when none hangs. */
+int wall_hanging_text(const struct wall *w, char *buf, size_t len);
+
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
 extern const char wall_far_text[];

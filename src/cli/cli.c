@@ -94,10 +94,28 @@ static int friction_lock_text(const struct wall *w, char *buf, size_t len)
 	return 1;
 }
 
+/* The hanging blocks' warning (wall_hanging) into buf, without the
+ * wall's path; 0 when every block rests on a joint. */
+static int hanging_text(const struct wall *w, char *buf, size_t len)
+{
+	char blocks[512];
+	if (!wall_hanging_text(w, blocks, sizeof blocks))
+		return 0;
+	snprintf(buf, len, "%s: the weight hangs on the friction of side "
+		 "joints (an opening without a lintel?), held by a clamp "
+		 "that the sequential LP's fixed capacities can lose, so "
+		 "samples may end `not_converged` (docs/method.md, \"What "
+		 "the method cannot answer\")", blocks);
+	return 1;
+}
+
 void cli_warn_friction(const struct wall *w)
 {
 	char text[1024];
 	if (friction_lock_text(w, text, sizeof text))
+		fprintf(stderr, "slipwall: warning: %s: %s\n",
+			w->path ? w->path : "the wall", text);
+	if (hanging_text(w, text, sizeof text))
 		fprintf(stderr, "slipwall: warning: %s: %s\n",
 			w->path ? w->path : "the wall", text);
 }
@@ -108,6 +126,8 @@ void cli_json_warnings(struct json *j, const struct wall *w)
 	json_key(j, "warnings");
 	json_array_begin(j);
 	if (friction_lock_text(w, text, sizeof text))
+		json_string(j, text);
+	if (hanging_text(w, text, sizeof text))
 		json_string(j, text);
 	json_array_end(j);
 }

@@ -29,7 +29,8 @@ int cli_load_wall(const char *path, struct wall **w);
 int cli_load_wall_quiet(const char *path, struct wall **w);
 /* Warn on stderr when two joints of a block can lock each other with
  * associative friction (wall_friction_lock): the answers are then not
- * the wall's.  Called by every load of a wall file. */
+ * the wall's; and when blocks rest on no joint (wall_hanging): samples
+ * may then end not converged.  Called by every load of a wall file. */
 void cli_warn_friction(const struct wall *w);
 /* The same warnings for --json: the key "warnings", an array of
  * strings (empty when there are none). */

@@ -240,6 +240,44 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
 	return 1;
 }
 
+/* A block rests on joint k when the compressive normal force of k on it
+ * has an upward component: sin 1e-9 of the vertical, so that a head
+ * joint, vertical to round-off, does not count. */
+int wall_hanging(const struct wall *w, int *blk)
+{
+	int nb = w->nblocks, n = 0;
+	char *rests = sw_xcalloc((size_t)nb + 1, 1);
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		/* n points from a into b: the force on b is along n, on a
+		 * along -n */
+		if (f->n[1] > 1e-9)
+			rests[f->b] = 1;
+		else if (f->n[1] < -1e-9)
+			rests[f->a] = 1;
+	}
+	for (int b = 0; b < nb; b++)
+		if (!w->blocks[b].fixed && !rests[b] && !n++)
+			*blk = b;
+	free(rests);
+	return n;
+}
+
+int wall_hanging_text(const struct wall *w, char *buf, size_t len)
+{
+	int b, n = wall_hanging(w, &b);
+	if (!n)
+		return 0;
+	if (n == 1)
+		snprintf(buf, len, "block %s rests on no joint below it",
+			 w->blocks[b].id);
+	else
+		snprintf(buf, len, "block %s and %d other%s rest on no joint "
+			 "below them", w->blocks[b].id, n - 1,
+			 n > 2 ? "s" : "");
+	return 1;
+}
+
 void wall_digest(const struct wall *w, char *out)
 {
 	uint64_t h = 14695981039346656037ULL;

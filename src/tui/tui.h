@@ -193,6 +193,9 @@ struct tui {
 	/* why the wall's joints lock under associative friction
 	 * (wall_friction_lock; tui_edit_lock), or "" */
 	char lock[192];
+	/* which blocks rest on no joint (wall_hanging; tui_edit_lock), or
+	 * "" */
+	char hang[160];
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */

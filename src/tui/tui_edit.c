@@ -34,26 +34,33 @@
  * (wall_friction_lock_text, the command line's words), or "".  The
  * title marks such a wall (tui_home_title), and the message
  * of the edit or the opening that made it says why (docs/workbench.md,
- * "Friction that locks"). */
+ * "Friction that locks").  And t->hang: the blocks that rest on no
+ * joint (wall_hanging_text), or "": the message says that too
+ * (docs/workbench.md, "Blocks that hang"). */
 void tui_edit_lock(struct tui *t)
 {
-	char joints[sizeof t->lock - 96];
-	t->lock[0] = 0;
+	char joints[sizeof t->lock - 96], blocks[sizeof t->hang - 48];
+	t->lock[0] = t->hang[0] = 0;
 	if (t->w && wall_friction_lock_text(t->w, joints, sizeof joints))
 		snprintf(t->lock, sizeof t->lock, "%s lock under associative "
 			 "friction: loads may be the lock's, not the wall's "
 			 "(docs/method.md)", joints);
+	if (t->w && wall_hanging_text(t->w, blocks, sizeof blocks))
+		snprintf(t->hang, sizeof t->hang, "%s: samples may not "
+			 "converge (docs/method.md)", blocks);
 }
 
-/* The message line as it is, with the lock's warning first when the
- * wall locks; shown as an error, so that it stands out. */
+/* The message line as it is, with the lock's and the hanging blocks'
+ * warnings first when the wall has them; shown as an error, so that it
+ * stands out. */
 void tui_edit_lock_message(struct tui *t)
 {
-	if (!t->lock[0])
+	if (!t->lock[0] && !t->hang[0])
 		return;
 	char m[sizeof t->msg];
 	snprintf(m, sizeof m, "%s", t->msg);
-	tui_message(t, 1, "warning: %s | %s", t->lock, m);
+	tui_message(t, 1, "warning: %s%s%s | %s", t->lock,
+		    t->lock[0] && t->hang[0] ? "; " : "", t->hang, m);
 }
 
 void tui_edit_set_wall(struct tui *t, struct wall *nw)

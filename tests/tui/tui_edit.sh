@@ -6,7 +6,8 @@
 # hjkl move the block cursor like the arrows and never edit; Tab keeps
 # the cursor; a removed block of the courses comes back with its id and
 # layout edits work after it; a save keeps the layout (layout: with
-# omit: for a removed block) and the opened file's comments.
+# omit: for a removed block) and the opened file's comments; a wall
+# with a block over a gap says so when it opens.
 #
 # Usage (from the source root): bash tests/tui/tui_edit.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -269,4 +270,26 @@ fi
 
 T send-keys -t t:w q
 wait_for w '^samples: ' 10
+
+# a wall with a block over a gap, as `x` leaves a stack-bond wall: the
+# opening's message says which block hangs, as `check` does
+# (docs/workbench.md, "Blocks that hang")
+cat >"$tmp/hang.yaml" <<'YAML'
+name: a block over a gap
+material: {friction: 0.6, unit_weight: 20000, thickness: 0.2}
+layout: {block: [0.3, 0.15], courses: 3, length: 0.9, bond: stack, first_course: full, omit: [c1b2]}
+supports:
+  - ground: {y: 0}
+loads:
+  - body: {direction: [1, 0]}
+analysis: {samples: 5, seed: 1}
+YAML
+start h LANG=C.UTF-8 LC_ALL=C.UTF-8 -- "$tmp/hang.yaml"
+if wait_for h 'warning: block c2b2 rests on no joint below it: samples may not converge' 20; then
+	ok "a block over a gap: the opening's message says it hangs"
+else
+	not_ok "a block over a gap: the opening's message says it hangs" "$(screen h)"
+fi
+T send-keys -t t:h q
+wait_for h '^samples: ' 10
 tap_end
