@@ -74,50 +74,44 @@ int cli_load_wall(const char *path, struct wall **w)
 {
 	int rc = cli_load_wall_quiet(path, w);
 	if (!rc)
-		cli_warn_friction(*w);
+		cli_warn_wall(*w);
 	return rc;
 }
 
-/* The friction lock's warning (wall_friction_lock) into buf, without
- * the wall's path; 0 when w's joints cannot lock. */
-static int friction_lock_text(const struct wall *w, char *buf, size_t len)
+/* The wall's warnings, each into buf without the wall's path: 0, the
+ * friction lock (wall_friction_lock); 1, blocks that rest on no joint
+ * (wall_hanging).  Returns 0 when w has no such thing. */
+#define WALL_WARNINGS 2
+static int warning_text(const struct wall *w, int which, char *buf,
+			size_t len)
 {
-	char joints[512];
-	if (!wall_friction_lock_text(w, joints, sizeof joints))
+	char what[512];
+	if (which == 0 && wall_friction_lock_text(w, what, sizeof what))
+		snprintf(buf, len, "%s: associative friction locks them (at "
+			 "a right angle, when the product is 1 or more), and "
+			 "every sample starts from the associative field, so "
+			 "its load may be the sliding load, or `unbounded`, "
+			 "where the wall rocks at less (docs/method.md, \"What "
+			 "the method cannot answer\")", what);
+	else if (which == 1 && wall_hanging_text(w, what, sizeof what))
+		snprintf(buf, len, "%s: the weight hangs on the friction of "
+			 "side joints (an opening without a lintel?), held by "
+			 "a clamp that the sequential LP's fixed capacities "
+			 "can lose, so samples may end `not_converged` "
+			 "(docs/method.md, \"What the method cannot answer\")",
+			 what);
+	else
 		return 0;
-	snprintf(buf, len, "%s: associative friction locks them (at a right "
-		 "angle, when the product is 1 or more), and every sample "
-		 "starts from the associative field, so its load may be the "
-		 "sliding load, or `unbounded`, where the wall rocks at less "
-		 "(docs/method.md, \"What the method cannot answer\")",
-		 joints);
 	return 1;
 }
 
-/* The hanging blocks' warning (wall_hanging) into buf, without the
- * wall's path; 0 when every block rests on a joint. */
-static int hanging_text(const struct wall *w, char *buf, size_t len)
-{
-	char blocks[512];
-	if (!wall_hanging_text(w, blocks, sizeof blocks))
-		return 0;
-	snprintf(buf, len, "%s: the weight hangs on the friction of side "
-		 "joints (an opening without a lintel?), held by a clamp "
-		 "that the sequential LP's fixed capacities can lose, so "
-		 "samples may end `not_converged` (docs/method.md, \"What "
-		 "the method cannot answer\")", blocks);
-	return 1;
-}
-
-void cli_warn_friction(const struct wall *w)
+void cli_warn_wall(const struct wall *w)
 {
 	char text[1024];
-	if (friction_lock_text(w, text, sizeof text))
-		fprintf(stderr, "slipwall: warning: %s: %s\n",
-			w->path ? w->path : "the wall", text);
-	if (hanging_text(w, text, sizeof text))
-		fprintf(stderr, "slipwall: warning: %s: %s\n",
-			w->path ? w->path : "the wall", text);
+	for (int i = 0; i < WALL_WARNINGS; i++)
+		if (warning_text(w, i, text, sizeof text))
+			fprintf(stderr, "slipwall: warning: %s: %s\n",
+				w->path ? w->path : "the wall", text);
 }
 
 void cli_json_warnings(struct json *j, const struct wall *w)
@@ -125,10 +119,9 @@ void cli_json_warnings(struct json *j, const struct wall *w)
 	char text[1024];
 	json_key(j, "warnings");
 	json_array_begin(j);
-	if (friction_lock_text(w, text, sizeof text))
-		json_string(j, text);
-	if (hanging_text(w, text, sizeof text))
-		json_string(j, text);
+	for (int i = 0; i < WALL_WARNINGS; i++)
+		if (warning_text(w, i, text, sizeof text))
+			json_string(j, text);
 	json_array_end(j);
 }
 

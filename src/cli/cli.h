@@ -25,13 +25,13 @@ int cmd_sweep(int argc, char **argv);
 /* Load and finish a wall file; on failure print the message to stderr
  * and return the exit status (2), else 0. */
 int cli_load_wall(const char *path, struct wall **w);
-/* The same without cli_warn_friction (a file that overrides will change) */
+/* The same without cli_warn_wall (a file that overrides will change) */
 int cli_load_wall_quiet(const char *path, struct wall **w);
 /* Warn on stderr when two joints of a block can lock each other with
  * associative friction (wall_friction_lock): the answers are then not
  * the wall's; and when blocks rest on no joint (wall_hanging): samples
  * may then end not converged.  Called by every load of a wall file. */
-void cli_warn_friction(const struct wall *w);
+void cli_warn_wall(const struct wall *w);
 /* The same warnings for --json: the key "warnings", an array of
  * strings (empty when there are none). */
 struct json;

@@ -258,7 +258,7 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 		}
 		return sw_status_exit(st);
 	}
-	cli_warn_friction(*w);
+	cli_warn_wall(*w);
 	return 0;
 }
 
