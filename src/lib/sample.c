@@ -364,6 +364,8 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->c0);
 	lp_basis_free(&ws->slp_start[0]);
 	lp_basis_free(&ws->slp_start[1]);
+	lp_basis_free(&ws->lp1_end);
+	lp_basis_free(&ws->lp2_face);
 	free(ws->cstar);
 	free(ws->fallback);
 	free(ws->ends.buf);

@@ -142,15 +142,50 @@ static double face_drop(const struct sample_ws *ws)
 	return TOL_FACE * moved;
 }
 
+/* LP2's start on a path's first evaluation: LP1's optimal basis, and
+ * for each closeness row N_k - p_k + q_k = c_k the one of p_k and q_k
+ * that carries LP1's N_k - c_k.  LP1's field lies on the face that
+ * face_bounds wrote (its non-basic columns at the values they are fixed
+ * at, or within the bounds they keep), so this basis is primal
+ * feasible, and non-singular (each row's p_k or q_k is its own).  Its
+ * rows and LP1's columns come first in LP2, in LP1's order
+ * (sample_lp.c). */
+static void lp2_from_lp1(struct sample_ws *ws)
+{
+	const struct lp *P = ws->lp[LP1];
+	int m = ws->m, R = ws->R;
+	struct lp_basis *b1 = &ws->lp1_end, *b2 = &ws->lp2_face;
+	lp_basis_save(P, b1);
+	int n = (R + m) + (3 * m + 1 + 2 * m);
+	if (b2->n != n) {
+		lp_basis_free(b2);
+		b2->stat = sw_xmalloc(sizeof(int) * (size_t)n);
+		b2->n = n;
+	}
+	int *row = b2->stat, *col = b2->stat + R + m;
+	memcpy(row, b1->stat, sizeof(int) * (size_t)R);
+	for (int k = 0; k < m; k++)
+		row[R + k] = LP_NS;
+	memcpy(col, b1->stat + R, sizeof(int) * (size_t)(3 * m + 1));
+	for (int k = 0; k < m; k++) {
+		int up = lp_col(P, 3 * k) + lp_col(P, 3 * k + 1) >= ws->c[k];
+		col[COL_P(ws, k)] = up ? LP_BS : LP_NL;
+		col[COL_Q(ws, k)] = up ? LP_NL : LP_BS;
+	}
+	lp_basis_load(ws->lp[LP2], b2);
+}
+
 /* One evaluation of the SLP's map at the capacities ws->c: LP1, and LP2
  * unless LP1's optimum is unique.  Leaves N(c)'s stress field in ws->x,
  * the load factor in *lam and max_k |N_k - c_k| in *diff.  *failed is 1
  * when it stopped on a solver failure (an LP without a verdict), not on
- * an LP's verdict or a check. */
+ * an LP's verdict or a check.  fresh: the first evaluation of a path,
+ * where LP2's last basis is another sample's or another path's (see
+ * below). */
 static enum sample_status slp_map(struct sample_ws *ws,
 				  const struct sample_opts *o,
 				  struct sample_result *r, double *lam,
-				  double *diff, int *failed)
+				  double *diff, int *failed, int fresh)
 {
 	int m = ws->m;
 	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
@@ -174,12 +209,26 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	ws->slp_lp = LP1;
 	/* LP2: of the optimal stress fields, the one whose normal forces
 	 * are closest (L1) to c; skipped when LP1's optimal face is a single
-	 * point.  Only bounds change between two LP2s, so the dual simplex
-	 * from LP2's own last basis is short (the primal simplex from LP1's
-	 * optimum walks the degenerate face for hundreds of pivots). */
+	 * point.  Only bounds change between two LP2s of a path, so the
+	 * dual simplex from LP2's own last basis is short (median 14
+	 * pivots on tests/data/body-195.yaml; the primal simplex from
+	 * LP1's optimum walks the degenerate face for more).  A path's
+	 * first LP2 is the exception: its last basis is another sample's
+	 * (or the end of another path), and the dual simplex from it took
+	 * 1,130-1,340 pivots there, as many as from the slack basis; the
+	 * primal simplex from LP1's optimum (lp2_from_lp1) takes fewer,
+	 * and every LP2 after it too.  Not on walls of more than 1,000
+	 * interfaces (ws->large), where LP2 starts from the slack basis
+	 * (sws_role_start): on walls/large.yaml the primal simplex took
+	 * 16,955 pivots against the dual's 4,089 (docs/performance.md, "A
+	 * path's first LP2").  The tie-break (sws_lp2_tiebreak) makes
+	 * LP2's field the same from any start. */
 	if (o->stabilise && !lp_unique(P, TOL_FACE)) {
 		face_bounds(ws);
-		s = sws_solve(ws, LP2, LP_DUAL, r);
+		fresh = fresh && !ws->large;
+		if (fresh)
+			lp2_from_lp1(ws);
+		s = sws_solve(ws, LP2, fresh ? LP_PRIMAL : LP_DUAL, r);
 		if (s != LP_OPTIMAL) {
 			*failed = s != LP_UNBOUNDED && s != LP_INFEASIBLE;
 			return SAMPLE_NUMERICAL;
@@ -339,7 +388,8 @@ static enum sample_status slp_from(struct sample_ws *ws,
 			lam_prev = NAN;
 		}
 		int lp_failed;
-		enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		enum sample_status st = slp_map(ws, o, r, &lam, &diff,
+						&lp_failed, it == 1);
 		if (st != SAMPLE_ACCEPTED)
 			return st;
 		unsigned long pc = slp_piece(ws);
@@ -405,7 +455,8 @@ enum sample_status sws_slp(struct sample_ws *ws,
 		return slp_from(ws, o, r);
 	double lam, diff;
 	int lp_failed;
-	enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+	enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed,
+					1);
 	if (st == SAMPLE_ACCEPTED && diff <= PIECE_VERIFY) {
 		r->iterations = 1;
 		r->lambda_max = lam;
@@ -597,7 +648,8 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 			np = 0;
 		}
 		int lp_failed;
-		enum sample_status st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		enum sample_status st = slp_map(ws, o, r, &lam, &diff,
+						&lp_failed, it == 1);
 		if (st != SAMPLE_ACCEPTED && (!jumped || lp_failed))
 			return st;
 		if (st == SAMPLE_ACCEPTED)
@@ -675,7 +727,7 @@ static enum sample_status slp_cycle_root(struct sample_ws *ws,
 		double t = 0.5 * (lo + hi);
 		for (int k = 0; k < m; k++)
 			ws->c[k] = ci[k] + t * (cj[k] - ci[k]);
-		st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		st = slp_map(ws, o, r, &lam, &diff, &lp_failed, 0);
 		(*evals)++;
 		if (st != SAMPLE_ACCEPTED)
 			return lp_failed ? st : SAMPLE_NOT_CONVERGED;
@@ -690,7 +742,7 @@ static enum sample_status slp_cycle_root(struct sample_ws *ws,
 			return SAMPLE_NOT_CONVERGED;
 		for (int k = 0; k < m; k++)
 			ws->c[k] = fmax(ws->cstar[k], 0);
-		st = slp_map(ws, o, r, &lam, &diff, &lp_failed);
+		st = slp_map(ws, o, r, &lam, &diff, &lp_failed, 0);
 		(*evals)++;
 		if (st != SAMPLE_ACCEPTED)
 			return lp_failed ? st : SAMPLE_NOT_CONVERGED;
