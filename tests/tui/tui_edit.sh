@@ -274,17 +274,7 @@ wait_for w '^samples: ' 10
 # a wall with a block over a gap, as `x` leaves a stack-bond wall: the
 # opening's message says which block hangs, as `check` does
 # (docs/workbench.md, "Blocks that hang")
-cat >"$tmp/hang.yaml" <<'YAML'
-name: a block over a gap
-material: {friction: 0.6, unit_weight: 20000, thickness: 0.2}
-layout: {block: [0.3, 0.15], courses: 3, length: 0.9, bond: stack, first_course: full, omit: [c1b2]}
-supports:
-  - ground: {y: 0}
-loads:
-  - body: {direction: [1, 0]}
-analysis: {samples: 5, seed: 1}
-YAML
-start h LANG=C.UTF-8 LC_ALL=C.UTF-8 -- "$tmp/hang.yaml"
+start h LANG=C.UTF-8 LC_ALL=C.UTF-8 -- tests/data/stack-gap.yaml
 if wait_for h 'warning: block c2b2 rests on no joint below it: samples may not converge' 20; then
 	ok "a block over a gap: the opening's message says it hangs"
 else
