@@ -69,12 +69,26 @@ int mc_wake_fd(const struct mc *m);
 /* The samples being computed now, for progress displays (one lock):
  * how many, the seconds the oldest has taken so far (a worker's first
  * sample includes the setup of its workspace), and the sum of their
- * ages. */
+ * ages; and how many samples have finished that mc_pop has not given
+ * yet (they wait for an earlier one, still in progress). */
 struct mc_progress {
 	int busy;
 	double oldest, total;
+	long ahead;
 };
 void mc_progress(struct mc *m, struct mc_progress *p);
+
+/* The time left of a run (see mc.c, "Time left"): its workers, the
+ * seconds it has sampled, the samples popped and its target, the
+ * a-priori seconds of a sample (mc_sample_seconds), and its progress
+ * now.  Writes the seconds left; returns 0 when the run is done, 1 when
+ * the estimate is the a-priori one alone (no sample finished), 2 when it
+ * comes from measured samples. */
+struct mc_pace {
+	double threads, sampled, done, target, apriori;
+	struct mc_progress now;
+};
+int mc_pace_left(const struct mc_pace *in, double *left);
 
 /* A rough a-priori time of one sample of w on one core, in seconds,
  * before any sample has run (to say, on opening a large wall, that its

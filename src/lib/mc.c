@@ -41,6 +41,45 @@
  *
  * The workers are named "sw-mc" (pthread_setname_np, on Linux), so that
  * a test or a person can count them (/proc/PID/task/TID/comm, top -H).
+ *
+ * Time left (mc_pace_left; the workbench's statistics pane, docs/
+ * workbench.md, "Time left").  On a large wall a sample takes minutes,
+ * and a bound such as "each worker takes at least as long as its oldest
+ * sample" only grows while the first samples run ("> 53 s", "> 14:08",
+ * "> 35:10" when the run takes five hours).  So the estimate is the
+ * a-priori time of a sample (mc_sample_seconds) counted as w samples
+ * already taken, blended with the worker-seconds the finished samples
+ * took:
+ *
+ *   w    = max(0, 1 - d / P),  P = min(T, N)
+ *   s    = (w e0 + (E T - A)) / (w + d)   seconds of one sample
+ *   left = max(0, (N - d) s - min(A, b s)) / min(T, N - d)
+ *
+ * e0 the a-priori seconds of a sample, E the seconds the run has
+ * sampled, T the workers, A the sum of the ages of the b samples in
+ * progress, N the target and d the samples finished: those popped and
+ * those that wait in the window for an earlier one (mc_progress's
+ * `ahead`).  E T - A is the worker time spent on finished samples, so
+ * while no sample ends s stays put, `left` falls as fast as the clock
+ * runs, and the total E + left stays where it was: it moves only when a
+ * sample ends (towards the measured time) or when the samples in
+ * progress have outlived s (it was too low).  d counts the samples
+ * that wait: a worker that finished its first sample before worker 0's
+ * (whose first includes the set-up) has its time in E T - A, and with
+ * d = 0 it was added to e0 as if the two were one sample; the total
+ * then grew, before any sample was popped, from 16,930 s to 22,248 s on
+ * walls/large.yaml (28 November 2026, tests/tui/tui_pace_large.sh).
+ *
+ * Why w fades: e0 was fitted to a worker's first sample with its
+ * workspace's set-up on a loaded machine (above), which on
+ * walls/large.yaml is 10 to 40 times a later sample.  Counted as one
+ * sample for the whole run it kept the total several times too long
+ * for the first hundreds of samples (by docs/performance.md's figures,
+ * a 23 s set-up and 9.2 s a sample on an idle core: about 4 times the
+ * true total after 75 s on two threads, the bound of
+ * tests/tui/tui_pace_large.sh being 3); once every worker has finished
+ * a sample (d >= P), the measured time, set-ups included, is the better
+ * figure, and it only falls as they are amortised.
  */
 #define _GNU_SOURCE	/* pthread_setname_np */
 #include <errno.h>
@@ -337,7 +376,29 @@ void mc_progress(struct mc *m, struct mc_progress *p)
 		if (age > p->oldest)
 			p->oldest = age;
 	}
+	for (long k = m->next_out; k < m->next_index; k++)
+		p->ahead += m->ring[k % m->window].full;
 	pthread_mutex_unlock(&m->mu);
+}
+
+int mc_pace_left(const struct mc_pace *in, double *left)
+{
+	const struct mc_progress *pg = &in->now;
+	double T = in->threads > 0 ? in->threads : 1;
+	double N = in->target, d = in->done + (double)pg->ahead;
+	*left = 0;
+	if (!(d < N))
+		return 0;
+	double spent = in->sampled * T - pg->total;
+	if (!(spent > 0))
+		spent = 0;
+	double P = fmin(T, N);
+	double w = d < P ? 1 - d / P : 0;
+	double s = (w * in->apriori + spent) / (w + d);
+	double work = (N - d) * s - fmin(pg->total, pg->busy * s);
+	double par = fmin(T, N - d);
+	*left = fmax(0, work) / (par > 0 ? par : 1);
+	return d > 0 ? 2 : 1;
 }
 
 int mc_pop(struct mc *m, struct record *it, int wait_ms)

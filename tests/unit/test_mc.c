@@ -576,6 +576,80 @@ static void test_estimate(const struct wall *demo)
 	tap_ok(!strcmp(buf, "under a second"), "NaN: '%s'", buf);
 }
 
+/* The time left (mc.c, "Time left"): 2 workers, 100 samples, 300 s a
+ * sample a priori.  While no sample ends the total (sampled + left)
+ * stays put; a sample that worker 1 finished before worker 0's first
+ * (set-up included), waiting in the window, is a finished sample: the
+ * total moves towards the measured time and does not grow (it grew
+ * from 15,000 s to 18,030 s here when only popped samples counted,
+ * ahead = 0, as it did on walls/large.yaml); a pool that has finished
+ * its samples, none popped, has them all ahead. */
+static void test_pace(const struct wall *w)
+{
+	struct mc_pace in = {.threads = 2, .target = 100, .apriori = 300};
+	double left, t10, t59, t100, told;
+	in.sampled = 10;
+	in.now = (struct mc_progress){.busy = 2, .oldest = 10, .total = 20};
+	int h10 = mc_pace_left(&in, &left);
+	t10 = in.sampled + left;
+	in.sampled = 59;
+	in.now = (struct mc_progress){.busy = 2, .oldest = 59, .total = 118};
+	int h59 = mc_pace_left(&in, &left);
+	t59 = in.sampled + left;
+	tap_ok(h10 == 1 && h59 == 1 && fabs(t10 - 15000) < 1e-6 &&
+	       fabs(t59 - 15000) < 1e-6,
+	       "time left: no sample finished, the a-priori total stays "
+	       "(%.1f s at 10 s, %.1f s at 59 s; 15,000 s)", t10, t59);
+	/* at 100 s: worker 1 finished sample 1 at 60 s and is 40 s into
+	 * sample 2; worker 0 is 100 s into sample 0 */
+	in.sampled = 100;
+	in.now = (struct mc_progress){.busy = 2, .oldest = 100, .total = 140,
+				       .ahead = 1};
+	int h100 = mc_pace_left(&in, &left);
+	t100 = in.sampled + left;
+	in.now.ahead = 0;
+	mc_pace_left(&in, &left);
+	told = in.sampled + left;
+	tap_ok(h100 == 2 && t100 <= t59 && fabs(t100 - 6960) < 1e-6 &&
+	       told > t59,
+	       "time left: a sample that finished out of order counts; the "
+	       "total falls to %.1f s (6,960 s), where without it it grew "
+	       "to %.1f s", t100, told);
+	in.done = 100;
+	tap_ok(mc_pace_left(&in, &left) == 0 && left == 0,
+	       "time left: nothing to say once the target is popped");
+
+	char err[SW_ERRLEN];
+	struct mc_config cfg;
+	mc_config_default(&cfg, w);
+	cfg.n = 12;
+	cfg.threads = 2;
+	struct mc *m = mc_start(&cfg, err);
+	if (!m) {
+		tap_ok(0, "mc_start: %s", err);
+		return;
+	}
+	struct mc_progress pg = {0};
+	for (int i = 0; i < 6000; i++) {	/* at most a minute */
+		mc_progress(m, &pg);
+		if (pg.ahead == cfg.n && pg.busy == 0)
+			break;
+		nanosleep(&(struct timespec){.tv_nsec = 10000000}, NULL);
+	}
+	struct record it;
+	record_init(&it, w);
+	int popped = 0;
+	while (mc_pop(m, &it, -1) == 1)
+		popped++;
+	struct mc_progress after;
+	mc_progress(m, &after);
+	record_free(&it);
+	mc_free(m);
+	tap_ok(pg.ahead == cfg.n && popped == cfg.n && after.ahead == 0,
+	       "mc_progress: %ld samples ahead when all are finished and none "
+	       "popped (12), %ld after %d pops", pg.ahead, after.ahead, popped);
+}
+
 int main(void)
 {
 	char err[SW_ERRLEN];
@@ -592,6 +666,7 @@ int main(void)
 	test_depth(w);
 	test_streams();
 	test_estimate(w);
+	test_pace(w);
 	wall_free(w);
 	return tap_done();
 }
