@@ -34,6 +34,7 @@
 	X(SAMPLE_NONPOSITIVE, "nonpositive", "maximum load factor <= 0")        \
 	X(SAMPLE_UNSTABLE, "unstable", "cannot stand under its own weight")     \
 	X(SAMPLE_NOT_CONVERGED, "not_converged", "SLP not converged")           \
+	X(SAMPLE_HANGING, "hanging", "blocks hang on friction (clamp lost)")   \
 	X(SAMPLE_NO_MECHANISM, "no_mechanism", "no mechanism at the SLP load")  \
 	X(SAMPLE_NUMERICAL, "numerical", "numerical failure")
 

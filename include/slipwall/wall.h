@@ -198,6 +198,13 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
  * end `not_converged` (docs/method.md, "What the method cannot
  * answer").  Returns how many there are and the first in *blk. */
 int wall_hanging(const struct wall *w, int *blk);
+/* The clamp of those blocks: the side joints (normal horizontal) of
+ * every block that no chain of joints carries to a support from below
+ * (those blocks, and any that rests only on them), into k when not NULL
+ * (room for w->nifaces), and how many.  A sample whose SLP loses them
+ * is rejected as `hanging` (docs/method.md, "What the method cannot
+ * answer: blocks that hang on friction"). */
+int wall_clamp_joints(const struct wall *w, int *k);
 /* The same, for people: "block ID rests on no joint below it" (or
  * "block ID and N others rest on no joint below them") into buf; 0 (buf
  * untouched) when none hangs. */

@@ -97,7 +97,7 @@ static int warning_text(const struct wall *w, int which, char *buf,
 		snprintf(buf, len, "%s: the weight hangs on the friction of "
 			 "side joints (an opening without a lintel?), held by "
 			 "a clamp that the sequential LP's fixed capacities "
-			 "can lose, so samples may end `not_converged` "
+			 "can lose: such samples are rejected as `hanging` "
 			 "(docs/method.md, \"What the method cannot answer\")",
 			 what);
 	else

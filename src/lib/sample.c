@@ -275,6 +275,8 @@ static struct sample_ws *ws_new(const struct wall *w,
 	statics_init(&ws->st, w);
 	ws->m = w->nifaces;
 	ws->R = ws->st.nrows;
+	ws->clamp_k = sw_xmalloc(sizeof(int) * ((size_t)ws->m + 1));
+	ws->nclamp = wall_clamp_joints(w, ws->clamp_k);
 	size_t m = (size_t)ws->m, big = 3 * m + (size_t)ws->R + 16;
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
@@ -362,6 +364,7 @@ void sample_ws_free(struct sample_ws *ws)
 	statics_free(&ws->st);
 	free(ws->c);
 	free(ws->c0);
+	free(ws->clamp_k);
 	lp_basis_free(&ws->slp_start[0]);
 	lp_basis_free(&ws->slp_start[1]);
 	lp_basis_free(&ws->lp1_end);

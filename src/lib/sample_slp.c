@@ -195,6 +195,7 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	/* LP1: the maximum load with fixed capacities (only bounds changed
 	 * since the last LP1: a few dual simplex pivots) */
 	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
+	ws->slp_lost = s == LP_INFEASIBLE;
 	/* infeasible and unbounded are verdicts (sws_solve's fixed path) */
 	if (s == LP_UNBOUNDED)
 		return SAMPLE_UNBOUNDED;
@@ -374,8 +375,8 @@ static enum sample_status slp_from(struct sample_ws *ws,
 	struct slp_history *h = &ws->hist;
 	h->len = 0;
 	int accel = o->slp == SAMPLE_SLP_ANDERSON;
-	if (accel)	/* the start, for a plain restart */
-		memcpy(ws->c0, ws->c, sizeof(double) * (size_t)m);
+	/* the start, for a plain restart and for slp_clamp_lost */
+	memcpy(ws->c0, ws->c, sizeof(double) * (size_t)m);
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
 		if (accel && tries == SLP_TRIES) {
@@ -447,9 +448,9 @@ static enum sample_status slp_from(struct sample_ws *ws,
  * from `auto`, 0.3093318 from `slack-primal`; one load from the face's
  * start), and walls/body-300.yaml's sample 18 of seed 1 becomes
  * `numerical` (docs/method.md, "The SLP's start", rule 5). */
-enum sample_status sws_slp(struct sample_ws *ws,
-			      const struct sample_opts *o,
-			      struct sample_result *r)
+static enum sample_status slp_solve(struct sample_ws *ws,
+				    const struct sample_opts *o,
+				    struct sample_result *r)
 {
 	if (ws->setup || ws->m > SLP_PHASE)
 		return slp_from(ws, o, r);
@@ -470,6 +471,43 @@ enum sample_status sws_slp(struct sample_ws *ws,
 		return st;
 	st = slp_from(ws, o, r);
 	r->iterations++;
+	return st;
+}
+
+/* A sample that the SLP leaves not converged because its last LP1 had
+ * no equilibrium, on a wall with blocks that hang on friction
+ * (wall_clamp_joints; docs/method.md, "What the method cannot answer:
+ * blocks that hang on friction"): is the clamp what it lost?  LP1 once
+ * more at the capacities it failed at, with each side joint of a
+ * hanging block given back at least its capacity at the SLP's start
+ * (ws->c0, LP-max's field or the floor's, where LP1 has an
+ * equilibrium).  If that admits an equilibrium, the failure was the
+ * clamp's: `hanging`.  Otherwise the sample stays `not_converged`.
+ * Feasibility is a verdict, and "infeasible" is sws_solve's fixed path:
+ * the status does not depend on the start. */
+static enum sample_status slp_clamp_lost(struct sample_ws *ws,
+					 struct sample_result *r)
+{
+	for (int i = 0; i < ws->nclamp; i++) {
+		int k = ws->clamp_k[i];
+		ws->c[k] = fmax(ws->c[k], ws->c0[k]);
+	}
+	struct lp *P = ws->lp[LP1];
+	for (int k = 0; k < ws->m; k++)
+		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
+	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
+	return s == LP_OPTIMAL || s == LP_UNBOUNDED ? SAMPLE_HANGING
+						    : SAMPLE_NOT_CONVERGED;
+}
+
+enum sample_status sws_slp(struct sample_ws *ws,
+			      const struct sample_opts *o,
+			      struct sample_result *r)
+{
+	ws->slp_lost = 0;
+	enum sample_status st = slp_solve(ws, o, r);
+	if (st == SAMPLE_NOT_CONVERGED && ws->slp_lost && ws->nclamp > 0)
+		st = slp_clamp_lost(ws, r);
 	return st;
 }
 

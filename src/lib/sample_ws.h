@@ -88,6 +88,9 @@ struct sample_ws {
 	const struct wall *w;
 	struct statics st;
 	int m, R;		/* interfaces, equilibrium rows */
+	/* the side joints of blocks that hang (wall_clamp_joints) */
+	int nclamp, *clamp_k;
+	int slp_lost;		/* the SLP's last LP1 had no equilibrium */
 	/* the workspace's LP solver, and one problem per LP role (see the
 	 * top), so that between two solves of a role only bounds change and
 	 * the solver keeps its basis */

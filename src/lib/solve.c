@@ -67,6 +67,15 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 			       "largest load factor is %.6g, so it collapses "
 			       "under any load in this direction (zero friction "
 			       "does this)", lam_max);
+	case SAMPLE_HANGING:
+		return sw_fail(err, SW_EANALYSIS,
+			       "the sequential LP lost the clamp that holds "
+			       "blocks which rest on no joint: their weight "
+			       "hangs on friction, whose normal forces rigid "
+			       "blocks leave free, so the wall has no "
+			       "non-associative answer (docs/method.md, \"What "
+			       "the method cannot answer\"); the standard "
+			       "value is the associative one");
 	default:
 		return sw_fail(err, SW_EANALYSIS, "the solver failed (%s)",
 			       sample_status_text(s));
@@ -146,8 +155,11 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		r->has_mechanism = r->mech.status == SAMPLE_ACCEPTED;
 		if (r->status != SAMPLE_ACCEPTED &&
 		    r->status != SAMPLE_NO_MECHANISM &&
-		    r->status != SAMPLE_NOT_CONVERGED)
+		    r->status != SAMPLE_NOT_CONVERGED) {
+			/* no load: the last LP1's is not an answer */
 			ret = failure(r->status, r->mech.lambda_lpmax, err);
+			r->lambda = r->lambda_onset = NAN;
+		}
 		break;
 	case SOLVE_GLOBAL:
 		ret = global_solve(w, o, ws, &d, lam_std, r, err, &prog.what,

@@ -263,6 +263,50 @@ int wall_hanging(const struct wall *w, int *blk)
 	return n;
 }
 
+/* 1 for each free block that no chain of joints carries to a support
+ * from below, in a new array: an interface carries block b when its
+ * normal points up into b (beyond 1e-9, wall_hanging's test) from a
+ * fixed or carried block.  A block that rests only on hanging blocks
+ * hangs too (tests/data/stack-gap.yaml: c3b2 on c2b2). */
+static char *hanging_chain(const struct wall *w)
+{
+	int nb = w->nblocks;
+	char *hang = sw_xcalloc((size_t)nb + 1, 1);
+	for (int b = 0; b < nb; b++)
+		hang[b] = !w->blocks[b].fixed;
+	for (int more = 1; more;) {
+		more = 0;
+		for (int k = 0; k < w->nifaces; k++) {
+			const struct wall_interface *f = &w->ifaces[k];
+			/* n points from a into b: the force on b is along
+			 * n, on a along -n */
+			int up = f->n[1] > 1e-9 ? f->b : f->n[1] < -1e-9 ? f->a : -1;
+			int down = up == f->b ? f->a : f->b;
+			if (up >= 0 && hang[up] && !hang[down]) {
+				hang[up] = 0;
+				more = 1;
+			}
+		}
+	}
+	return hang;
+}
+
+int wall_clamp_joints(const struct wall *w, int *k)
+{
+	char *hang = hanging_chain(w);
+	int n = 0;
+	for (int i = 0; i < w->nifaces; i++) {
+		const struct wall_interface *f = &w->ifaces[i];
+		if ((hang[f->a] || hang[f->b]) && fabs(f->n[1]) <= 1e-9) {
+			if (k)
+				k[n] = i;
+			n++;
+		}
+	}
+	free(hang);
+	return n;
+}
+
 int wall_hanging_text(const struct wall *w, char *buf, size_t len)
 {
 	int b, n = wall_hanging(w, &b);

@@ -39,15 +39,15 @@
  * (docs/workbench.md, "Blocks that hang"). */
 void tui_edit_lock(struct tui *t)
 {
-	char joints[sizeof t->lock - 96], blocks[sizeof t->hang - 48];
+	char joints[sizeof t->lock - 96], blocks[sizeof t->hang - 64];
 	t->lock[0] = t->hang[0] = 0;
 	if (t->w && wall_friction_lock_text(t->w, joints, sizeof joints))
 		snprintf(t->lock, sizeof t->lock, "%s lock under associative "
 			 "friction: loads may be the lock's, not the wall's "
 			 "(docs/method.md)", joints);
 	if (t->w && wall_hanging_text(t->w, blocks, sizeof blocks))
-		snprintf(t->hang, sizeof t->hang, "%s: samples may not "
-			 "converge (docs/method.md)", blocks);
+		snprintf(t->hang, sizeof t->hang, "%s: samples may be "
+			 "rejected as hanging (docs/method.md)", blocks);
 }
 
 /* The message line as it is, with the lock's and the hanging blocks'

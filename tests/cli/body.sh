@@ -229,4 +229,40 @@ contacts: {depth: 0.4}
 YAML
 check "beside a pier on its left, seed 1, sample 32: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
 	plain_answer leftpier "$tmp/leftpier.yaml" tests/data/leftpier-seed1-s32.csv 0.43 0.44
+# Blocks that hang on friction (docs/method.md, "What the method cannot
+# answer: blocks that hang on friction"): a sample whose SLP ends because
+# LP1 has no equilibrium, on a wall with blocks that no joint carries
+# from below, and whose LP1 has one again once the side joints of those
+# blocks get back their capacities at the SLP's start, is `hanging`,
+# not `not_converged`.  tests/data/stack-gap.yaml (a 3 x 3 stack-bond
+# wall, the middle block of its first course left out): every sample.
+# Its running-bond twin has no hanging block: no sample is `hanging`.
+"$bin" run tests/data/stack-gap.yaml -n 5 --threads 1 --json \
+	--samples "$tmp/gap.csv" >"$tmp/gap.json" 2>/dev/null
+check "a block over a gap (stack bond): 5 of 5 samples hanging, in the summary and the samples file" \
+	[ "$(json_field "$tmp/gap.json" '(d["rejected"]["hanging"], d["rejected"]["not_converged"], d["accepted"])')" = "(5, 0, 0)" -a \
+	  "$(cut -d, -f2 "$tmp/gap.csv" | sed 1d | sort | uniq -c | tr -s ' ')" = " 5 hanging" ]
+sed 's/bond: stack/bond: running/' tests/data/stack-gap.yaml >"$tmp/gap-running.yaml"
+"$bin" run "$tmp/gap-running.yaml" -n 5 --threads 1 --json >"$tmp/gapr.json" 2>/dev/null
+check "the same gap in running bond: nothing hangs, 5 of 5 accepted" \
+	[ "$(json_field "$tmp/gapr.json" '(d["accepted"], d["rejected"]["hanging"])')" = "(5, 0)" ]
+# An opening without a lintel (tests/data/opening-nolintel.yaml, 220
+# blocks): some samples keep the clamp and are accepted, the others are
+# `hanging`; nothing else, and the same statuses and loads from three
+# starts (the verdict is LP1's feasibility, by sws_solve's fixed path).
+for s in auto slack-primal support; do
+	SLIPWALL_LP_START=$s "$bin" run tests/data/opening-nolintel.yaml -n 12 \
+		--threads 2 --samples "$tmp/open-$s.csv" >/dev/null 2>&1
+done
+python3 - "$tmp"/open-auto.csv "$tmp"/open-slack-primal.csv "$tmp"/open-support.csv <<'PY'
+import csv, sys
+runs = [[(r["status"], r["lambda_min"]) for r in csv.DictReader(open(f))] for f in sys.argv[1:]]
+st = [s for s, _ in runs[0]]
+print("# statuses:", " ".join(st))
+sys.exit(not (len(st) == 12 and set(st) == {"accepted", "hanging"}
+              and all(r == runs[0] for r in runs)))
+PY
+check "an opening without a lintel: 12 samples accepted or hanging (some of each), the same statuses and loads from auto, slack-primal and support" \
+	[ $? = 0 ]
+
 tap_end

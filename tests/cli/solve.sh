@@ -13,8 +13,9 @@
 # the minimum).  On a terminal (script(1)), a long solve of the large wall
 # says within seconds what it is solving and for how long, rewriting one
 # line; with stderr not a terminal it prints nothing there.  `--json` on
-# a wall with no finite load (unbounded, nonpositive) still prints its
-# JSON, with the status and the message as "error", and exits 1.  TAP
+# a wall with no finite load (unbounded, nonpositive; gilbert on a wall
+# whose blocks hang: hanging) still prints its JSON, with the status and
+# the message as "error", and exits 1.  TAP
 # output.
 
 bin=${1:?usage: cli/solve.sh SLIPWALL}
@@ -97,6 +98,13 @@ for v in "into unbounded unbounded.*support" "ice nonpositive no.positive.live.l
 	check "solve --json, $1: exit 1 ($rc), JSON with status $2, its error as on stderr, no load" \
 		eval "[ $rc = 1 ] && verdict_json $tmp/$1.json $tmp/$1.err $2 '$3'"
 done
+# gilbert on a wall whose blocks hang on friction (tests/data/stack-gap.yaml):
+# the sequential LP loses the clamp, status hanging, no load (the last
+# LP1's 0.4545, nine times the standard value, was printed before)
+"$bin" solve tests/data/stack-gap.yaml --method gilbert --json >"$tmp/gap.json" 2>"$tmp/gap.err"
+rc=$?
+check "solve --method gilbert --json, a block over a gap: exit 1 ($rc), status hanging, its error as on stderr, no load" \
+	eval "[ $rc = 1 ] && verdict_json $tmp/gap.json $tmp/gap.err hanging 'lost the clamp'"
 "$bin" solve walls/single-block.yaml --method standard --json >"$tmp/ok.json"
 check "solve --json with a load: \"error\": null" \
 	python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not ("error" in d and d["error"] is None and d["load_factor"] > 0))' "$tmp/ok.json"

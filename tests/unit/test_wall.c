@@ -114,10 +114,53 @@ static void refusals(void)
 	expect_error(w, "duplicate ids", "'A' is used twice");
 }
 
+/* Blocks that hang (wall_hanging, wall_clamp_joints): a 3 x 3 stack of
+ * 0.3 x 0.15 m blocks with the middle one of the first course left out
+ * (tests/data/stack-gap.yaml).  B22 rests on no joint; B32 rests on B22
+ * only, so no chain of joints carries it either; their clamp is their
+ * four side joints.  With the gap filled nothing hangs. */
+static void hanging(void)
+{
+	for (int filled = 0; filled < 2; filled++) {
+		struct wall *w = wall_new();
+		for (int c = 1; c <= 3; c++)
+			for (int b = 1; b <= 3; b++) {
+				if (c == 1 && b == 2 && !filled)
+					continue;
+				char id[8];
+				snprintf(id, sizeof id, "B%d%d", c, b);
+				tw_rect(w, id, 0.3 * (b - 1), 0.15 * (c - 1), 0.3, 0.15);
+			}
+		w->has_ground = 1;
+		tw_point_load(w, 0, 0.075, 1, 0);
+		tw_finish(w);
+		int blk = -1, k[64], n = wall_clamp_joints(w, k), side = 1;
+		int hang = wall_hanging(w, &blk);
+		for (int i = 0; i < n; i++) {
+			const struct wall_interface *f = &w->ifaces[k[i]];
+			const char *a = w->blocks[f->a].id, *b = w->blocks[f->b].id;
+			side &= fabs(f->n[1]) < 1e-12 &&
+				(!strcmp(a, "B22") || !strcmp(b, "B22") ||
+				 !strcmp(a, "B32") || !strcmp(b, "B32"));
+		}
+		if (filled)
+			tap_ok(hang == 0 && n == 0 && wall_clamp_joints(w, NULL) == 0,
+			       "the stack without its gap: nothing hangs, no clamp");
+		else
+			tap_ok(hang == 1 && !strcmp(w->blocks[blk].id, "B22") &&
+			       n == 4 && side && wall_clamp_joints(w, NULL) == 4,
+			       "a stack over a gap: B22 rests on no joint; the "
+			       "clamp is the 4 side joints of B22 and of B32, "
+			       "which rests on it (%d)", n);
+		wall_free(w);
+	}
+}
+
 int main(void)
 {
 	weights();
 	load_block();
 	refusals();
+	hanging();
 	return tap_done();
 }
