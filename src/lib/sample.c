@@ -272,6 +272,9 @@ static struct sample_ws *ws_new(const struct wall *w,
 	lp_solver_progress(ws->solver, c->progress, c->progress_ctx);
 	ws->w = w;
 	ws->large = large;
+	ws->lp2_primal = !large;
+	for (int l = 0; l < w->nloads; l++)
+		ws->lp2_primal |= w->loads[l].kind == LOAD_BODY;
 	statics_init(&ws->st, w);
 	ws->m = w->nifaces;
 	ws->R = ws->st.nrows;

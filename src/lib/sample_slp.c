@@ -218,15 +218,17 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	 * (or the end of another path), and the dual simplex from it took
 	 * 1,130-1,340 pivots there, as many as from the slack basis; the
 	 * primal simplex from LP1's optimum (lp2_from_lp1) takes fewer,
-	 * and every LP2 after it too.  Not on walls of more than 1,000
-	 * interfaces (ws->large), where LP2 starts from the slack basis
-	 * (sws_role_start): on walls/large.yaml the primal simplex took
-	 * 16,955 pivots against the dual's 4,089 (docs/performance.md, "A
-	 * path's first LP2").  The tie-break (sws_lp2_tiebreak) makes
-	 * LP2's field the same from any start. */
+	 * and every LP2 after it too.  On walls of more than 1,000
+	 * interfaces only under a body load (ws->lp2_primal): there LP2
+	 * starts from the slack basis (sws_role_start), and on
+	 * walls/large.yaml, pulled at one block (two SLP iterations a
+	 * sample), the primal simplex took 16,955 pivots against the
+	 * dual's 4,089, while on walls/body-1000.yaml it took fewer
+	 * (docs/performance.md, "A path's first LP2").  The tie-break
+	 * (sws_lp2_tiebreak) makes LP2's field the same from any start. */
 	if (o->stabilise && !lp_unique(P, TOL_FACE)) {
 		face_bounds(ws);
-		fresh = fresh && !ws->large;
+		fresh = fresh && ws->lp2_primal;
 		if (fresh)
 			lp2_from_lp1(ws);
 		s = sws_solve(ws, LP2, fresh ? LP_PRIMAL : LP_DUAL, r);

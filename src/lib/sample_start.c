@@ -105,11 +105,13 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * associative problems of the canonical sample, solved when the
  * workspace is made (LP-max 3,322 pivots from the support basis, 13,751
  * from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
- * On walls of at most that many interfaces LP2's start, whichever it
- * is, is loaded and then replaced: each path of the SLP starts its
- * first LP2 from LP1's optimum (sample_slp.c, lp2_from_lp1), which on
- * the 195-block body-loaded wall took fewer pivots than any start
- * (docs/performance.md, "A path's first LP2"). */
+ * On walls of at most that many interfaces, and on larger ones under
+ * a body load, LP2's start, whichever it is, is loaded and then
+ * replaced: each path of the SLP starts its first LP2 from LP1's
+ * optimum (sample_slp.c, lp2_from_lp1), which on the 195-block
+ * body-loaded wall took fewer pivots than any start, and on the
+ * 1,020-block one fewer than the slack basis (docs/performance.md, "A
+ * path's first LP2"). */
 
 /* The start of role p's LPs in this workspace. */
 enum sample_start sws_role_start(const struct sample_ws *ws, int p)

@@ -124,6 +124,9 @@ struct sample_ws {
 	unsigned char *kfree;
 	enum sample_start start;	/* SLIPWALL_LP_START */
 	int large;		/* `auto` takes its large-wall starts */
+	/* a path's first LP2 by the primal simplex from LP1's optimum
+	 * (sample_slp.c, lp2_from_lp1): not large, or a body load */
+	int lp2_primal;
 	int setup;		/* solving the canonical sample */
 	int setups;		/* canonical samples solved (0 or 1) */
 	int forces;		/* this sample reports its stress field */
