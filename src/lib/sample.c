@@ -283,6 +283,7 @@ static struct sample_ws *ws_new(const struct wall *w,
 	size_t m = (size_t)ws->m, big = 3 * m + (size_t)ws->R + 16;
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
+	ws->clost = sw_xcalloc(m + 1, sizeof(double));
 	ws->cstar = sw_xcalloc(m + 1, sizeof(double));
 	ws->fallback = sw_xcalloc(m + 1, sizeof(double));
 	for (int i = 0; i <= SLP_MEMORY; i++) {
@@ -368,6 +369,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->c);
 	free(ws->c0);
 	free(ws->clamp_k);
+	free(ws->clost);
 	lp_basis_free(&ws->slp_start[0]);
 	lp_basis_free(&ws->slp_start[1]);
 	lp_basis_free(&ws->lp1_end);

@@ -195,7 +195,6 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	/* LP1: the maximum load with fixed capacities (only bounds changed
 	 * since the last LP1: a few dual simplex pivots) */
 	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
-	ws->slp_lost = s == LP_INFEASIBLE;
 	/* infeasible and unbounded are verdicts (sws_solve's fixed path) */
 	if (s == LP_UNBOUNDED)
 		return SAMPLE_UNBOUNDED;
@@ -343,6 +342,21 @@ static void plain_step(struct sample_ws *ws, double omega)
 	}
 }
 
+/* The end of an SLP path (slp_from, slp_piece_path) with status st:
+ * where st is `not_converged` from an evaluation of the map, its LP1
+ * had no equilibrium (slp_map), and the capacities it failed at are
+ * kept for slp_clamp_lost; an end at the iteration limit clears that.
+ * The root searches' evaluations (slp_cycle_root) are not the path's
+ * and leave it as the last path left it. */
+static enum sample_status path_end(struct sample_ws *ws,
+				   enum sample_status st, int limit)
+{
+	ws->slp_lost = !limit && st == SAMPLE_NOT_CONVERGED;
+	if (ws->slp_lost)
+		memcpy(ws->clost, ws->c, sizeof(double) * (size_t)ws->m);
+	return st;
+}
+
 /* Step 2b from the start in ws->c (sws_slp chooses it): the stabilised
  * SLP.  The plain
  * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN);
@@ -394,7 +408,7 @@ static enum sample_status slp_from(struct sample_ws *ws,
 		enum sample_status st = slp_map(ws, o, r, &lam, &diff,
 						&lp_failed, it == 1);
 		if (st != SAMPLE_ACCEPTED)
-			return st;
+			return path_end(ws, st, 0);
 		unsigned long pc = slp_piece(ws);
 		if (trial && !(diff < diff_prev)) {
 			/* undo the accelerated step: back to the last
@@ -429,7 +443,7 @@ static enum sample_status slp_from(struct sample_ws *ws,
 		}
 		plain_step(ws, o->omega);
 	}
-	return SAMPLE_NOT_CONVERGED;
+	return path_end(ws, SAMPLE_NOT_CONVERGED, 1);
 }
 
 /* The SLP's start (docs/method.md, "The SLP's start").  First the map
@@ -476,20 +490,22 @@ static enum sample_status slp_solve(struct sample_ws *ws,
 	return st;
 }
 
-/* A sample that the SLP leaves not converged because its last LP1 had
- * no equilibrium, on a wall with blocks that hang on friction
- * (wall_clamp_joints; docs/method.md, "What the method cannot answer:
- * blocks that hang on friction"): is the clamp what it lost?  LP1 once
- * more at the capacities it failed at, with each side joint of a
- * hanging block given back at least its capacity at the SLP's start
- * (ws->c0, LP-max's field or the floor's, where LP1 has an
- * equilibrium).  If that admits an equilibrium, the failure was the
- * clamp's: `hanging`.  Otherwise the sample stays `not_converged`.
- * Feasibility is a verdict, and "infeasible" is sws_solve's fixed path:
- * the status does not depend on the start. */
+/* A sample that the SLP leaves not converged because its last path
+ * ended on an LP1 without equilibrium (path_end), on a wall with blocks
+ * that hang on friction (wall_clamp_joints; docs/method.md, "What the
+ * method cannot answer: blocks that hang on friction"): is the clamp
+ * what it lost?  LP1 once more at the capacities it failed at
+ * (ws->clost), with each side joint of a hanging block given back at
+ * least its capacity at the SLP's start (ws->c0, LP-max's field or the
+ * floor's, where LP1 has an equilibrium).  If that admits an
+ * equilibrium, the failure was the clamp's: `hanging`.  Otherwise the
+ * sample stays `not_converged`.  Feasibility is a verdict, and
+ * "infeasible" is sws_solve's fixed path: the status does not depend on
+ * the start. */
 static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 					 struct sample_result *r)
 {
+	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
 	for (int i = 0; i < ws->nclamp; i++) {
 		int k = ws->clamp_k[i];
 		ws->c[k] = fmax(ws->c[k], ws->c0[k]);
@@ -691,7 +707,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		enum sample_status st = slp_map(ws, o, r, &lam, &diff,
 						&lp_failed, it == 1);
 		if (st != SAMPLE_ACCEPTED && (!jumped || lp_failed))
-			return st;
+			return path_end(ws, st, 0);
 		if (st == SAMPLE_ACCEPTED)
 			r->lambda_max = lam;
 		if (st == SAMPLE_ACCEPTED && !jumped)
@@ -739,7 +755,7 @@ static enum sample_status slp_piece_path(struct sample_ws *ws,
 		plain_step(ws, omega);
 	}
 	ends_mark(ws);
-	return SAMPLE_NOT_CONVERGED;
+	return path_end(ws, SAMPLE_NOT_CONVERGED, 1);
 }
 
 /* Rule 8's root search at phase end e (docs/method.md, "The SLP's

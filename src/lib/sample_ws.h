@@ -90,7 +90,10 @@ struct sample_ws {
 	int m, R;		/* interfaces, equilibrium rows */
 	/* the side joints of blocks that hang (wall_clamp_joints) */
 	int nclamp, *clamp_k;
-	int slp_lost;		/* the SLP's last LP1 had no equilibrium */
+	/* the SLP's last path ended on an LP1 without equilibrium, at
+	 * the capacities clost (m) */
+	int slp_lost;
+	double *clost;
 	/* the workspace's LP solver, and one problem per LP role (see the
 	 * top), so that between two solves of a role only bounds change and
 	 * the solver keeps its basis */
