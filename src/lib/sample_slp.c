@@ -175,6 +175,16 @@ static void lp2_from_lp1(struct sample_ws *ws)
 	lp_basis_load(ws->lp[LP2], b2);
 }
 
+/* LP1: the maximum load with the shear capacities fixed at ws->c
+ * (only bounds change between two LP1s: a few dual simplex pivots). */
+static enum lp_status lp1_solve(struct sample_ws *ws, struct sample_result *r)
+{
+	struct lp *P = ws->lp[LP1];
+	for (int k = 0; k < ws->m; k++)
+		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
+	return sws_solve(ws, LP1, LP_DUAL, r);
+}
+
 /* One evaluation of the SLP's map at the capacities ws->c: LP1, and LP2
  * unless LP1's optimum is unique.  Leaves N(c)'s stress field in ws->x,
  * the load factor in *lam and max_k |N_k - c_k| in *diff.  *failed is 1
@@ -190,11 +200,7 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	int m = ws->m;
 	struct lp *P = ws->lp[LP1], *Q = ws->lp[LP2];
 	*failed = 0;
-	for (int k = 0; k < m; k++)
-		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
-	/* LP1: the maximum load with fixed capacities (only bounds changed
-	 * since the last LP1: a few dual simplex pivots) */
-	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
+	enum lp_status s = lp1_solve(ws, r);
 	/* infeasible and unbounded are verdicts (sws_solve's fixed path) */
 	if (s == LP_UNBOUNDED)
 		return SAMPLE_UNBOUNDED;
@@ -510,10 +516,7 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 		int k = ws->clamp_k[i];
 		ws->c[k] = fmax(ws->c[k], ws->c0[k]);
 	}
-	struct lp *P = ws->lp[LP1];
-	for (int k = 0; k < ws->m; k++)
-		lp_set_col_bounds(P, 3 * k + 2, -sws_capacity(ws, k), sws_capacity(ws, k));
-	enum lp_status s = sws_solve(ws, LP1, LP_DUAL, r);
+	enum lp_status s = lp1_solve(ws, r);
 	return s == LP_OPTIMAL || s == LP_UNBOUNDED ? SAMPLE_HANGING
 						    : SAMPLE_NOT_CONVERGED;
 }

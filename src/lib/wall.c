@@ -240,35 +240,14 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
 	return 1;
 }
 
-/* A block rests on joint k when the compressive normal force of k on it
- * has an upward component: sin 1e-9 of the vertical, so that a head
- * joint, vertical to round-off, does not count. */
-int wall_hanging(const struct wall *w, int *blk)
-{
-	int nb = w->nblocks, n = 0;
-	char *rests = sw_xcalloc((size_t)nb + 1, 1);
-	for (int k = 0; k < w->nifaces; k++) {
-		const struct wall_interface *f = &w->ifaces[k];
-		/* n points from a into b: the force on b is along n, on a
-		 * along -n */
-		if (f->n[1] > 1e-9)
-			rests[f->b] = 1;
-		else if (f->n[1] < -1e-9)
-			rests[f->a] = 1;
-	}
-	for (int b = 0; b < nb; b++)
-		if (!w->blocks[b].fixed && !rests[b] && !n++)
-			*blk = b;
-	free(rests);
-	return n;
-}
-
-/* 1 for each free block that no chain of joints carries to a support
- * from below, in a new array: an interface carries block b when its
- * normal points up into b (beyond 1e-9, wall_hanging's test) from a
- * fixed or carried block.  A block that rests only on hanging blocks
- * hangs too (tests/data/stack-gap.yaml: c3b2 on c2b2). */
-static char *hanging_chain(const struct wall *w)
+/* 1 for each free block that hangs, in a new array.  A block rests on
+ * joint k when the compressive normal force of k on it has an upward
+ * component: sin 1e-9 of the vertical, so that a head joint, vertical
+ * to round-off, does not count.  chain = 0: the blocks that rest on no
+ * joint (wall_hanging); chain = 1: also those that rest only on hanging
+ * blocks, so that no chain of joints carries them to a support from
+ * below (wall_clamp_joints; tests/data/stack-gap.yaml: c3b2 on c2b2). */
+static char *hanging_marks(const struct wall *w, int chain)
 {
 	int nb = w->nblocks;
 	char *hang = sw_xcalloc((size_t)nb + 1, 1);
@@ -282,7 +261,7 @@ static char *hanging_chain(const struct wall *w)
 			 * n, on a along -n */
 			int up = f->n[1] > 1e-9 ? f->b : f->n[1] < -1e-9 ? f->a : -1;
 			int down = up == f->b ? f->a : f->b;
-			if (up >= 0 && hang[up] && !hang[down]) {
+			if (up >= 0 && hang[up] && !(chain && hang[down])) {
 				hang[up] = 0;
 				more = 1;
 			}
@@ -291,9 +270,20 @@ static char *hanging_chain(const struct wall *w)
 	return hang;
 }
 
+int wall_hanging(const struct wall *w, int *blk)
+{
+	char *hang = hanging_marks(w, 0);
+	int n = 0;
+	for (int b = 0; b < w->nblocks; b++)
+		if (hang[b] && !n++)
+			*blk = b;
+	free(hang);
+	return n;
+}
+
 int wall_clamp_joints(const struct wall *w, int *k)
 {
-	char *hang = hanging_chain(w);
+	char *hang = hanging_marks(w, 1);
 	int n = 0;
 	for (int i = 0; i < w->nifaces; i++) {
 		const struct wall_interface *f = &w->ifaces[i];

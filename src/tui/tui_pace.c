@@ -23,7 +23,7 @@ int tui_pace_left(struct tui *t, double *left, double *total)
 		.target = (double)r->target,
 		.apriori = mc_sample_seconds(t->w),
 	};
-	if (!tui_run_progress(t, &in.now) || r->done >= r->target)
+	if (!tui_run_progress(t, &in.now))
 		return 0;
 	int how = mc_pace_left(&in, left);
 	*total = in.sampled + *left;
