@@ -196,8 +196,11 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
  * by a clamp: a course over an opening without a lintel.  The SLP's
  * fixed capacities can lose that clamp, and such a wall's samples may
  * end `not_converged` (docs/method.md, "What the method cannot
- * answer").  Returns how many there are and the first in *blk. */
-int wall_hanging(const struct wall *w, int *blk);
+ * answer").  Returns how many there are and the first in *blk; into
+ * *above, when not NULL, how many other blocks rest only on such blocks
+ * (or on those), so that no chain of joints carries them to a support
+ * from below either (tests/data/stack-gap.yaml: c3b2 on c2b2). */
+int wall_hanging(const struct wall *w, int *blk, int *above);
 /* The clamp of those blocks: the side joints (normal horizontal) of
  * every block that no chain of joints carries to a support from below
  * (those blocks, and any that rests only on them), into k when not NULL
@@ -206,8 +209,9 @@ int wall_hanging(const struct wall *w, int *blk);
  * answer: blocks that hang on friction"). */
 int wall_clamp_joints(const struct wall *w, int *k);
 /* The same, for people: "block ID rests on no joint below it" (or
- * "block ID and N others rest on no joint below them") into buf; 0 (buf
- * untouched) when none hangs. */
+ * "block ID and N others rest on no joint below them"), followed by ",
+ * and M other blocks only on it (them)" when blocks rest on those, into
+ * buf; 0 (buf untouched) when none hangs. */
 int wall_hanging_text(const struct wall *w, char *buf, size_t len);
 
 /* The end of the message of a vertex too far from the origin for its

@@ -270,14 +270,19 @@ static char *hanging_marks(const struct wall *w, int chain)
 	return hang;
 }
 
-int wall_hanging(const struct wall *w, int *blk)
+int wall_hanging(const struct wall *w, int *blk, int *above)
 {
-	char *hang = hanging_marks(w, 0);
-	int n = 0;
-	for (int b = 0; b < w->nblocks; b++)
+	char *hang = hanging_marks(w, 0), *chain = hanging_marks(w, 1);
+	int n = 0, na = 0;
+	for (int b = 0; b < w->nblocks; b++) {
 		if (hang[b] && !n++)
 			*blk = b;
+		na += chain[b] && !hang[b];
+	}
 	free(hang);
+	free(chain);
+	if (above)
+		*above = na;
 	return n;
 }
 
@@ -299,16 +304,20 @@ int wall_clamp_joints(const struct wall *w, int *k)
 
 int wall_hanging_text(const struct wall *w, char *buf, size_t len)
 {
-	int b, n = wall_hanging(w, &b);
+	int b, above, n = wall_hanging(w, &b, &above);
 	if (!n)
 		return 0;
+	char more[64] = "";
+	if (above)
+		snprintf(more, sizeof more, ", and %d other block%s only on %s",
+			 above, above > 1 ? "s" : "", n > 1 ? "them" : "it");
 	if (n == 1)
-		snprintf(buf, len, "block %s rests on no joint below it",
-			 w->blocks[b].id);
+		snprintf(buf, len, "block %s rests on no joint below it%s",
+			 w->blocks[b].id, more);
 	else
 		snprintf(buf, len, "block %s and %d other%s rest on no joint "
-			 "below them", w->blocks[b].id, n - 1,
-			 n > 2 ? "s" : "");
+			 "below them%s", w->blocks[b].id, n - 1,
+			 n > 2 ? "s" : "", more);
 	return 1;
 }
 

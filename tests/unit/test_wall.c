@@ -134,8 +134,8 @@ static void hanging(void)
 		w->has_ground = 1;
 		tw_point_load(w, 0, 0.075, 1, 0);
 		tw_finish(w);
-		int blk = -1, k[64], n = wall_clamp_joints(w, k), side = 1;
-		int hang = wall_hanging(w, &blk);
+		int blk = -1, above = -1, k[64], n = wall_clamp_joints(w, k);
+		int side = 1, hang = wall_hanging(w, &blk, &above);
 		for (int i = 0; i < n; i++) {
 			const struct wall_interface *f = &w->ifaces[k[i]];
 			const char *a = w->blocks[f->a].id, *b = w->blocks[f->b].id;
@@ -143,15 +143,23 @@ static void hanging(void)
 				(!strcmp(a, "B22") || !strcmp(b, "B22") ||
 				 !strcmp(a, "B32") || !strcmp(b, "B32"));
 		}
-		if (filled)
-			tap_ok(hang == 0 && n == 0 && wall_clamp_joints(w, NULL) == 0,
+		if (filled) {
+			tap_ok(hang == 0 && above == 0 && n == 0 &&
+			       wall_clamp_joints(w, NULL) == 0,
 			       "the stack without its gap: nothing hangs, no clamp");
-		else
+		} else {
 			tap_ok(hang == 1 && !strcmp(w->blocks[blk].id, "B22") &&
-			       n == 4 && side && wall_clamp_joints(w, NULL) == 4,
-			       "a stack over a gap: B22 rests on no joint; the "
-			       "clamp is the 4 side joints of B22 and of B32, "
-			       "which rests on it (%d)", n);
+			       above == 1 && n == 4 && side &&
+			       wall_clamp_joints(w, NULL) == 4,
+			       "a stack over a gap: B22 rests on no joint, B32 "
+			       "only on it; the clamp is the 4 side joints of "
+			       "B22 and B32 (%d, %d above)", n, above);
+			char text[160];
+			tap_ok(wall_hanging_text(w, text, sizeof text) &&
+			       !strcmp(text, "block B22 rests on no joint below "
+				       "it, and 1 other block only on it"),
+			       "its warning names both: %s", text);
+		}
 		wall_free(w);
 	}
 }
