@@ -9,10 +9,10 @@ friction the same or lower, depth 0.1-0.45, a load along +x, -x or
 inclined; half of the walls of 8 courses or more with a rectangular
 opening left out of the layout, without a lintel), runs 12 samples of
 each on one thread, two walls at a time, and prints one line a wall: its
-blocks and interfaces, how many of its blocks rest on no joint (the
+blocks and interfaces, which of its blocks hang (the
 `check` warning, docs/method.md, "What the method cannot answer: blocks
 that hang on friction"), the accepted count and the rejections by reason.
-The walls depend only on SEED: docs/method.md's scan is seeds 1-5.
+The walls depend only on SEED: docs/method.md's scan is seeds 1-6.
 """
 import json
 import random
