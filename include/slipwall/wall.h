@@ -195,7 +195,7 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
  * above), so their weight hangs on the friction of side joints, held
  * by a clamp: a course over an opening without a lintel.  The SLP's
  * fixed capacities can lose that clamp, and such a wall's samples may
- * end `not_converged` (docs/method.md, "What the method cannot
+ * be rejected as `hanging` (docs/method.md, "What the method cannot
  * answer").  Returns how many there are and the first in *blk; into
  * *above, when not NULL, how many other blocks rest only on such blocks
  * (or on those), so that no chain of joints carries them to a support

@@ -246,7 +246,8 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
  * to round-off, does not count.  chain = 0: the blocks that rest on no
  * joint (wall_hanging); chain = 1: also those that rest only on hanging
  * blocks, so that no chain of joints carries them to a support from
- * below (wall_clamp_joints; tests/data/stack-gap.yaml: c3b2 on c2b2). */
+ * below (wall_clamp_joints, and wall_hanging's count of them;
+ * tests/data/stack-gap.yaml: c3b2 on c2b2). */
 static char *hanging_marks(const struct wall *w, int chain)
 {
 	int nb = w->nblocks;
