@@ -106,8 +106,9 @@ ok_if $? "a load pushing into a support: exit 1 and says unbounded ($(cat "$tmp/
 # A block that rests on no joint (wall_hanging): tests/data/stack-gap.yaml,
 # a stack-bond wall with the middle block of its first course left out;
 # its warning on stderr and in --json's warnings names the block over
-# the gap and counts the one that rests on it.  The same wall in running bond has no such block (each block
-# over the gap rests half on a neighbour of the missing one): no warning.
+# the gap and counts the one that rests on it.  The same wall in running
+# bond has no such block (each block over the gap rests half on a
+# neighbour of the missing one): no warning.
 sed 's/bond: stack/bond: running/' tests/data/stack-gap.yaml >"$tmp/running.yaml"
 "$bin" check tests/data/stack-gap.yaml --json >"$tmp/stack.json" 2>"$tmp/stack.err"
 python3 - "$tmp/stack.json" "$tmp/stack.err" <<'PY'
