@@ -47,6 +47,69 @@ for c in "0.4 0.8 0.6 0.5 tips: b/h" "0.8 0.4 0.6 0.6 slides: mu" \
 		near "$got" "$want" 1e-7
 done
 
+# An inclined body load, direction (dx, dy) normalised to (cos t, sin t)
+# (docs/wall-format.md): lambda W along it on each block.  A stack of
+# blocks of width b on the ground, contact at the corners, heights h_i:
+# sliding on the ground (or on any bed joint, every block above it
+# moving) at lambda cos t = mu (1 - lambda sin t), so lambda = mu /
+# (cos t + mu sin t); the blocks from the top down to block i tipping
+# about the toe of the joint below them, whose centroid is H/2 above it
+# (H their height), at lambda (H/2 cos t + b/2 sin t) = b/2, so
+# lambda = b / (H cos t + b sin t) (no tipping where that is <= 0); and
+# lambda is the least of them.  The load along -x is the mirror image.
+# stack B MU DX DY H1 [H2]: the wall file
+stack() {
+	local b=$1 mu=$2 dx=$3 dy=$4 y=0
+	shift 4
+	cat <<YAML
+name: A stack under an inclined body load
+material: {friction: $mu, unit_weight: 19620, thickness: 0.10}
+blocks:
+YAML
+	local i=1
+	for h in "$@"; do
+		local top
+		top=$(awk -v y="$y" -v h="$h" 'BEGIN { print y + h }')
+		printf '  - id: b%d\n    vertices: [[0, %s], [%s, %s], [%s, %s], [0, %s]]\n' \
+			"$i" "$y" "$b" "$y" "$b" "$top" "$top"
+		y=$top
+		i=$((i + 1))
+	done
+	cat <<YAML
+supports:
+  - ground: {y: 0}
+loads:
+  - body: {direction: [$dx, $dy]}
+contacts: {depth: 0}
+analysis: {samples: 3, seed: 1}
+YAML
+}
+for c in "0.4 0.6 1 -0.3 0.8" "0.4 0.6 2 -0.6 0.8" "0.8 0.6 1 0.2 0.4" "0.8 0.6 1 -0.5 0.4" \
+	 "0.8 0.6 -1 0.2 0.4" "0.4 0.6 -1 0.3 0.8" "0.3 0.8 1 0.4 0.9" \
+	 "0.4 0.7 1 0 0.3 0.5" "0.4 0.4 1 0 0.3 0.5" "0.4 0.7 1 -0.2 0.5 0.3" \
+	 "0.6 0.5 1 0.25 0.3 0.3"; do
+	read -ra args <<<"$c"
+	stack "${args[@]}" >"$tmp/s.yaml"
+	"$bin" run "$tmp/s.yaml" --threads 1 --json >"$tmp/s.json" 2>"$tmp/err"
+	got=$(json_field "$tmp/s.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"')
+	want=$(python3 - "${args[@]}" <<'PY'
+import math, sys
+b, mu, dx, dy, *hs = map(float, sys.argv[1:])
+n = math.hypot(dx, dy)
+co, si = abs(dx) / n, dy / n
+cands = [mu / (co + mu * si)]
+for i in range(len(hs)):
+    den = sum(hs[i:]) * co + b * si
+    if den > 0:
+        cands.append(b / den)
+print(min(cands))
+PY
+)
+	read -r b mu dx dy hs <<<"$c"
+	check "blocks ${hs// / and } m high, $b m wide, mu $mu, body load along ($dx, $dy): lambda $got = $want" \
+		near "$got" "$want" 1e-9
+done
+
 # tests/data/body-195.yaml, seed 1, sample 7 (its positions in
 # body-195-seed1-s7.csv): the largest joint rate of its mechanism is 0.02,
 # rates of 1e-10 are the kinematic LP's round-off; counted as motion
