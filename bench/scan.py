@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """bench/scan.py - random body-loaded walls, and how their samples end.
 
-Usage: python3 bench/scan.py SLIPWALL DIR SEED [K]
+Usage: python3 bench/scan.py SLIPWALL DIR SEED [K] [--lintels]
 
 Writes K (default 14) random running- and stack-bond walls of 80-300
 blocks under a body load into DIR (friction 0.35-0.95 on bed joints, head
@@ -12,10 +12,16 @@ each on one thread, two walls at a time, and prints one line a wall: its
 blocks and interfaces, which of its blocks hang (the
 `check` warning, docs/method.md, "What the method cannot answer: blocks
 that hang on friction"), the accepted count and the rejections by reason.
-The walls depend only on SEED: docs/method.md's scan is seeds 1-6.
+The walls depend only on SEED: docs/method.md's scan is seeds 1-9.
+
+--lintels: each opening gets a lintel, one block in place of the blocks
+of the course just above it that reach over the opening's blocks (a
+quarter block or more of bearing each side), as walls/facade.yaml has,
+so that no block hangs on friction; the walls are otherwise the same.
 """
 import json
 import random
+import re
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -57,9 +63,46 @@ def check(slipwall, path):
     return json.loads(out)
 
 
+def course_of(block_id):
+    """The course of a layout block cCbB, or None."""
+    m = re.fullmatch(r'c(\d+)b\d+', block_id)
+    return int(m.group(1)) if m else None
+
+
+def xspan(b):
+    xs = [x for x, _ in b['vertices']]
+    return min(xs), max(xs)
+
+
+def lintel(blocks, text, layout, omit):
+    """A lintel over the opening whose blocks omit are (above); blocks:
+    the wall's blocks before the opening was left out."""
+    over_opening = [b for b in blocks if b['id'] in omit]
+    lo = min(xspan(b)[0] for b in over_opening)
+    hi = max(xspan(b)[1] for b in over_opening)
+    top = max(course_of(b['id']) for b in over_opening)
+    course = [b for b in blocks if course_of(b['id']) == top + 1]
+    if not course:  # a notch in the top: nothing over it to carry
+        return text.replace(layout, layout + ', omit: [' + ', '.join(omit) + ']')
+    bw = max(xspan(b)[1] - xspan(b)[0] for b in course)
+    over = [b for b in course
+            if xspan(b)[0] < hi + bw / 4 and xspan(b)[1] > lo - bw / 4]
+    x0 = round(min(xspan(b)[0] for b in over), 9)
+    x1 = round(max(xspan(b)[1] for b in over), 9)
+    y0 = round(min(y for b in over for _, y in b['vertices']), 9)
+    y1 = round(max(y for b in over for _, y in b['vertices']), 9)
+    ids = omit + [b['id'] for b in over]
+    text = text.replace(layout, layout + ', omit: [' + ', '.join(ids) + ']')
+    return text.replace('supports:\n', f"blocks:\n  - {{id: lintel, vertices: "
+                        f"[[{x0}, {y0}], [{x1}, {y0}], [{x1}, {y1}], [{x0}, {y1}]]}}\n"
+                        "supports:\n", 1)
+
+
 def main():
-    slipwall, out, seed = sys.argv[1], sys.argv[2], int(sys.argv[3])
-    k = int(sys.argv[4]) if len(sys.argv) > 4 else 14
+    args = [a for a in sys.argv[1:] if a != '--lintels']
+    lintels = '--lintels' in sys.argv[1:]
+    slipwall, out, seed = args[0], args[1], int(args[2])
+    k = int(args[3]) if len(args) > 3 else 14
     rng = random.Random(seed)
     paths = []
     for i in range(k):
@@ -73,9 +116,12 @@ def main():
             d = check(slipwall, path)
             omit = [b['id'] for b in d['blocks']
                     if x0 < b['centroid'][0] < x1 and y0 < b['centroid'][1] < y1]
-            if omit:
+            if omit and lintels:
+                text = lintel(d['blocks'], text, layout, omit)
+            elif omit:
                 text = text.replace(layout, layout + ', omit: [' +
                                     ', '.join(omit) + ']')
+            if omit:
                 with open(path, 'w') as f:
                     f.write(text)
         paths.append(path)
