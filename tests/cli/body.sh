@@ -84,10 +84,10 @@ contacts: {depth: 0}
 analysis: {samples: 3, seed: 1}
 YAML
 }
-for c in "0.4 0.6 1 -0.3 0.8" "0.4 0.6 2 -0.6 0.8" "0.8 0.6 1 0.2 0.4" "0.8 0.6 1 -0.5 0.4" \
-	 "0.8 0.6 -1 0.2 0.4" "0.4 0.6 -1 0.3 0.8" "0.3 0.8 1 0.4 0.9" \
-	 "0.4 0.7 1 0 0.3 0.5" "0.4 0.4 1 0 0.3 0.5" "0.4 0.7 1 -0.2 0.5 0.3" \
-	 "0.6 0.5 1 0.25 0.3 0.3"; do
+for c in "0.4 0.6 1 -0.3 0.8" "0.4 0.6 2 -0.6 0.8" "0.8 0.6 1 0.2 0.4" \
+	 "0.8 0.6 1 -0.5 0.4" "0.8 0.6 -1 0.2 0.4" "0.4 0.6 -1 0.3 0.8" \
+	 "0.3 0.8 1 0.4 0.9" "0.4 0.7 1 0 0.3 0.5" "0.4 0.4 1 0 0.3 0.5" \
+	 "0.4 0.7 1 -0.2 0.5 0.3" "0.6 0.5 1 0.25 0.3 0.3"; do
 	read -ra args <<<"$c"
 	stack "${args[@]}" >"$tmp/s.yaml"
 	"$bin" run "$tmp/s.yaml" --threads 1 --json >"$tmp/s.json" 2>"$tmp/err"
@@ -106,7 +106,8 @@ print(min(cands))
 PY
 )
 	read -r b mu dx dy hs <<<"$c"
-	check "blocks ${hs// / and } m high, $b m wide, mu $mu, body load along ($dx, $dy): lambda $got = $want" \
+	what="blocks ${hs// / and } m high, $b m wide, mu $mu"
+	check "$what, body load along ($dx, $dy): lambda $got = $want" \
 		near "$got" "$want" 1e-9
 done
 
