@@ -63,6 +63,11 @@ def check(slipwall, path):
     return json.loads(out)
 
 
+def omitting(text, layout, ids):
+    """The wall text with ids left out of its layout."""
+    return text.replace(layout, layout + ', omit: [' + ', '.join(ids) + ']')
+
+
 def course_of(block_id):
     """The course of a layout block cCbB, or None."""
     m = re.fullmatch(r'c(\d+)b\d+', block_id)
@@ -83,7 +88,7 @@ def lintel(blocks, text, layout, omit):
     top = max(course_of(b['id']) for b in over_opening)
     course = [b for b in blocks if course_of(b['id']) == top + 1]
     if not course:  # a notch in the top: nothing over it to carry
-        return text.replace(layout, layout + ', omit: [' + ', '.join(omit) + ']')
+        return omitting(text, layout, omit)
     bw = max(xspan(b)[1] - xspan(b)[0] for b in course)
     over = [b for b in course
             if xspan(b)[0] < hi + bw / 4 and xspan(b)[1] > lo - bw / 4]
@@ -91,8 +96,7 @@ def lintel(blocks, text, layout, omit):
     x1 = round(max(xspan(b)[1] for b in over), 9)
     y0 = round(min(y for b in over for _, y in b['vertices']), 9)
     y1 = round(max(y for b in over for _, y in b['vertices']), 9)
-    ids = omit + [b['id'] for b in over]
-    text = text.replace(layout, layout + ', omit: [' + ', '.join(ids) + ']')
+    text = omitting(text, layout, omit + [b['id'] for b in over])
     return text.replace('supports:\n', f"blocks:\n  - {{id: lintel, vertices: "
                         f"[[{x0}, {y0}], [{x1}, {y0}], [{x1}, {y1}], [{x0}, {y1}]]}}\n"
                         "supports:\n", 1)
@@ -116,12 +120,9 @@ def main():
             d = check(slipwall, path)
             omit = [b['id'] for b in d['blocks']
                     if x0 < b['centroid'][0] < x1 and y0 < b['centroid'][1] < y1]
-            if omit and lintels:
-                text = lintel(d['blocks'], text, layout, omit)
-            elif omit:
-                text = text.replace(layout, layout + ', omit: [' +
-                                    ', '.join(omit) + ']')
             if omit:
+                text = (lintel(d['blocks'], text, layout, omit) if lintels
+                        else omitting(text, layout, omit))
                 with open(path, 'w') as f:
                     f.write(text)
         paths.append(path)

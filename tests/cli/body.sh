@@ -15,60 +15,18 @@ cd "$(dirname "$0")/../.." || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# block B H MU: a single block B wide, H high, friction MU, under a body
-# load along +x
-block() {
-	cat <<YAML
-name: Single block under a body load
-material: {friction: $3, unit_weight: 19620, thickness: 0.10}
-blocks:
-  - id: b
-    vertices: [[0, 0], [$1, 0], [$1, $2], [0, $2]]
-supports:
-  - ground: {y: 0}
-loads:
-  - body: {direction: [1, 0]}
-contacts: {depth: 0}
-analysis: {samples: 3, seed: 1}
-YAML
-}
-# lam B H MU: the run's lambda_min (its JSON summary's lambda.min), all
-# 3 samples accepted
-lam() {
-	block "$1" "$2" "$3" >"$tmp/b.yaml"
-	"$bin" run "$tmp/b.yaml" --threads 1 --json >"$tmp/b.json" 2>"$tmp/err"
-	json_field "$tmp/b.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"'
-}
-for c in "0.4 0.8 0.6 0.5 tips: b/h" "0.8 0.4 0.6 0.6 slides: mu" \
-	 "0.4 0.8 0.4 0.4 slides: mu" "0.3 1.0 0.6 0.3 tips: b/h"; do
-	read -r b h mu want why <<<"$c"
-	got=$(lam "$b" "$h" "$mu")
-	check "block ${b} x ${h} m, mu $mu, body load: lambda $got = min(mu, b/h) = $want (${why% *} ${why##* })" \
-		near "$got" "$want" 1e-7
-done
-
-# An inclined body load, direction (dx, dy) normalised to (cos t, sin t)
-# (docs/wall-format.md): lambda W along it on each block.  A stack of
-# blocks of width b on the ground, contact at the corners, heights h_i:
-# sliding on the ground (or on any bed joint, every block above it
-# moving) at lambda cos t = mu (1 - lambda sin t), so lambda = mu /
-# (cos t + mu sin t); the blocks from the top down to block i tipping
-# about the toe of the joint below them, whose centroid is H/2 above it
-# (H their height), at lambda (H/2 cos t + b/2 sin t) = b/2, so
-# lambda = b / (H cos t + b sin t) (no tipping where that is <= 0); and
-# lambda is the least of them.  The load along -x is the mirror image.
-# stack B MU DX DY H1 [H2]: the wall file
+# stack B MU DX DY H1 [H2 ...]: blocks B wide and H1, H2, ... high, one
+# on another from the ground up (contact at their corners), friction MU,
+# under a body load along (DX, DY)
 stack() {
-	local b=$1 mu=$2 dx=$3 dy=$4 y=0
+	local b=$1 mu=$2 dx=$3 dy=$4 y=0 i=1 top
 	shift 4
 	cat <<YAML
-name: A stack under an inclined body load
+name: Blocks on the ground under a body load
 material: {friction: $mu, unit_weight: 19620, thickness: 0.10}
 blocks:
 YAML
-	local i=1
 	for h in "$@"; do
-		local top
 		top=$(awk -v y="$y" -v h="$h" 'BEGIN { print y + h }')
 		printf '  - id: b%d\n    vertices: [[0, %s], [%s, %s], [%s, %s], [0, %s]]\n' \
 			"$i" "$y" "$b" "$y" "$b" "$top" "$top"
@@ -84,14 +42,37 @@ contacts: {depth: 0}
 analysis: {samples: 3, seed: 1}
 YAML
 }
+# lam B MU DX DY H1 [H2 ...]: that wall's lambda_min (its run's JSON
+# summary's lambda.min), all 3 samples accepted
+lam() {
+	stack "$@" >"$tmp/b.yaml"
+	"$bin" run "$tmp/b.yaml" --threads 1 --json >"$tmp/b.json" 2>"$tmp/err"
+	json_field "$tmp/b.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"'
+}
+for c in "0.4 0.8 0.6 0.5 tips: b/h" "0.8 0.4 0.6 0.6 slides: mu" \
+	 "0.4 0.8 0.4 0.4 slides: mu" "0.3 1.0 0.6 0.3 tips: b/h"; do
+	read -r b h mu want why <<<"$c"
+	got=$(lam "$b" "$mu" 1 0 "$h")
+	check "block ${b} x ${h} m, mu $mu, body load: lambda $got = min(mu, b/h) = $want (${why% *} ${why##* })" \
+		near "$got" "$want" 1e-7
+done
+
+# An inclined body load, direction (dx, dy) normalised to (cos t, sin t)
+# (docs/wall-format.md): lambda W along it on each block.  A stack of
+# blocks of width b on the ground, contact at the corners, heights h_i:
+# sliding on the ground (or on any bed joint, every block above it
+# moving) at lambda cos t = mu (1 - lambda sin t), so lambda = mu /
+# (cos t + mu sin t); the blocks from the top down to block i tipping
+# about the toe of the joint below them, whose centroid is H/2 above it
+# (H their height), at lambda (H/2 cos t + b/2 sin t) = b/2, so
+# lambda = b / (H cos t + b sin t) (no tipping where that is <= 0); and
+# lambda is the least of them.  The load along -x is the mirror image.
 for c in "0.4 0.6 1 -0.3 0.8" "0.4 0.6 2 -0.6 0.8" "0.8 0.6 1 0.2 0.4" \
 	 "0.8 0.6 1 -0.5 0.4" "0.8 0.6 -1 0.2 0.4" "0.4 0.6 -1 0.3 0.8" \
 	 "0.3 0.8 1 0.4 0.9" "0.4 0.7 1 0 0.3 0.5" "0.4 0.4 1 0 0.3 0.5" \
 	 "0.4 0.7 1 -0.2 0.5 0.3" "0.6 0.5 1 0.25 0.3 0.3"; do
 	read -ra args <<<"$c"
-	stack "${args[@]}" >"$tmp/s.yaml"
-	"$bin" run "$tmp/s.yaml" --threads 1 --json >"$tmp/s.json" 2>"$tmp/err"
-	got=$(json_field "$tmp/s.json" 'd["lambda"]["min"] if d["accepted"] == 3 else "rejected"')
+	got=$(lam "${args[@]}")
 	want=$(python3 - "${args[@]}" <<'PY'
 import math, sys
 b, mu, dx, dy, *hs = map(float, sys.argv[1:])
