@@ -85,11 +85,12 @@ static int bench_one(const struct wall *w, long n, unsigned long seed,
 	struct stats_summary s;
 	tally_summary(&t, &s);
 	double ns = (double)t.samples;
-	printf("%-8d %9.2f %7.1f%% %9.1f %6.1f%% %6.1f%% %10.1f %9.1f %7.1f%% %7.1f%% %12.6g\n",
+	printf("%-8d %9.2f %7.1f%% %9.1f %6.1f%% %6.1f%% %6.1f%% %10.1f %9.1f %7.1f%% %7.1f%% %12.6g\n",
 	       threads, ns / elapsed, 100.0 * (double)t.accepted / ns,
 	       (double)c.solves / ns,
 	       c.solves ? 100.0 * (double)c.held / (double)c.solves : 0.0,
 	       c.solves ? 100.0 * (double)c.art / (double)c.solves : 0.0,
+	       c.solves ? 100.0 * (double)c.shift / (double)c.solves : 0.0,
 	       c.solves ? (double)c.iterations / (double)c.solves : 0.0,
 	       c.solves ? 1e6 * c.lp_seconds / (double)c.solves : 0.0,
 	       t.compute_seconds > 0 ? 100.0 * c.lp_seconds /
@@ -213,8 +214,8 @@ int main(int argc, char **argv)
 		wall_free(w);
 		return rc;
 	}
-	printf("%-8s %9s %8s %9s %7s %7s %10s %9s %8s %8s %12s\n", "threads",
-	       "samples/s", "accept", "LPs/smp", "held", "art", "iters/LP", "us/LP",
+	printf("%-8s %9s %8s %9s %7s %7s %7s %10s %9s %8s %8s %12s\n", "threads",
+	       "samples/s", "accept", "LPs/smp", "held", "art", "shift", "iters/LP", "us/LP",
 	       "glpk/smp", "glpk/wall", "p05");
 	int rc = 0;
 	for (int k = 0; k < nthreads && !rc; k++)

@@ -111,12 +111,12 @@ void mc_stop(struct mc *m);
 void mc_free(struct mc *m);
 
 /* Worker-side counters, for the benchmark: LP solves, simplex
- * iterations, solves answered by the held basis and solves started from
- * artificial bounds (sample_ws_counters),
+ * iterations, solves answered by the held basis, solves started from
+ * artificial bounds and from shifted costs (sample_ws_counters),
  * summed over the workers that have exited, and the seconds they spent
  * inside the LP solver (approximate). */
 struct mc_counters {
-	long solves, iterations, held, art;
+	long solves, iterations, held, art, shift;
 	double lp_seconds;	/* inside the LP solver, summed over workers */
 	int setups;		/* canonical samples solved: 1, or 0 when
 				 * config.setup fitted (docs/design.md,

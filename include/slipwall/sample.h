@@ -263,12 +263,12 @@ void sample_ws_stats(const struct sample_ws *ws,
 
 /* What the workspace's LP solver did since it was made: LPs solved,
  * simplex iterations, LPs answered by the basis the solver held, LPs
- * started from artificial bounds (docs/method.md, "Warm starts and held
- * bases"), seconds inside the solver, internal errors that were the
+ * started from artificial bounds or from shifted costs (docs/method.md,
+ * "Warm starts and held bases"), seconds inside the solver, internal errors that were the
  * solver running out of memory, and whether it solved its canonical
  * sample (setups). */
 struct sample_lp_counters {
-	long solves, iterations, held, art, memory_errors;
+	long solves, iterations, held, art, shift, memory_errors;
 	double seconds;
 	int setups;	/* canonical samples solved: 0 (made from a
 			 * sample_setup) or 1 */

@@ -90,6 +90,8 @@ struct lp_counters {
 	/* dual simplex solves started from artificial bounds (lp_glpk.c),
 	 * and those of them that went on without */
 	long art, art_again;
+	/* ... and from shifted costs (lp_set_shift_costs) */
+	long shift;
 	double seconds;
 };
 void lp_solver_counters(const struct lp_solver *s, struct lp_counters *c);
@@ -132,6 +134,14 @@ int lp_alive(const struct lp *p);
  * again and wants no trace of past solves (src/lib/sample_lp.c, sws_refill). */
 void lp_clear(struct lp *p);
 
+/* How the dual simplex starts from a basis that is dual feasible but for
+ * a few non-basic columns whose reduced cost asks them off their bound
+ * toward a side without one (lp_glpk.c, "Dual infeasible starts"):
+ * off (the default), they get artificial bounds; on, their costs are
+ * shifted until the dual simplex ends, and the primal simplex finishes
+ * from there.  For re-solves of one objective after bounds moved (the
+ * SLP's LP1 and LP2). */
+void lp_set_shift_costs(struct lp *p, int on);
 void lp_set_maximize(struct lp *p, int maximize);
 void lp_set_obj(struct lp *p, int col, double c);
 void lp_set_col_bounds(struct lp *p, int col, double lo, double hi);

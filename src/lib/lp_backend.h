@@ -35,6 +35,9 @@ struct lp {
 	struct lp_solver *s;
 	int nrows, ncols;
 	int last_iters;
+	/* lp_set_shift_costs: a dual simplex from a dual infeasible start
+	 * shifts costs instead of bounding variables artificially */
+	int shift_costs;
 	double *tb_obj;		/* ncols: the objective */
 	int *tb_fixed;		/* rows then columns it fixed (columns as
 				 * nrows + j) */

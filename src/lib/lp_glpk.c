@@ -73,6 +73,32 @@
  * own bounds, as it would have gone without them (docs/method.md,
  * "Warm starts and held bases").
  *
+ * Dual infeasible starts by shifted costs (lp_set_shift_costs; the
+ * SLP's LP1 and LP2).  An artificial bound is ART times the problem's
+ * largest bound away, and the variable put on it moves every basic
+ * value its column reaches by as much: the dual simplex then has
+ * thousands of infeasibilities to repair (measured on
+ * walls/body-1000.yaml: 1,400-2,800 at the start of LP2 re-solves that
+ * took 13,000-16,000 pivots, from 1 to 81 artificial bounds; the
+ * median re-solve takes a few hundred).  A problem that asks for it
+ * instead moves those columns' costs, each by minus its reduced cost
+ * and a step SHIFT_DJ to the side its status needs: the reduced costs
+ * of no other variable change (a non-basic column's cost is in no
+ * simplex multiplier), the start is dual feasible, and no value moves.
+ * The dual simplex solves the shifted problem; its optimum is primal
+ * feasible, and with the own costs put back (cost_restore) it is dual
+ * infeasible at most in the shifted columns and in what a shifted
+ * column that became basic changes, so the primal simplex finishes
+ * from it (tol_dj the dual simplex's, tol_bnd its own, GLPK_TOL_PRIMAL:
+ * see there), usually in a few pivots or none.  Only for re-solves of
+ * one objective after bounds moved: a start whose objective changed
+ * (LP-min from LP-max's optimum) is dual infeasible in hundreds of
+ * columns, and the primal simplex's share then costs more than the
+ * artificial bounds (LP-min on the demo: 89.9 pivots an LP with
+ * artificial bounds, 187.4 with shifted costs).  A row that needs it
+ * (a row has no cost) keeps artificial bounds for the whole solve.
+ * docs/performance.md, "Shifted costs", has the measurements.
+ *
  * Interruption (lp_solver_stop_flag): GLPK's simplex has no callback,
  * and one LP of a very large wall runs for minutes, so a stop request
  * (Ctrl-C, a new edit in the workbench) could not reach a worker inside
@@ -122,6 +148,10 @@ struct glpk_lp {
 	 * index k (var_*), and their own type and bounds, to put back */
 	int nart, *art_k, *art_t;
 	double *art_lb, *art_ub, art_big;
+	/* the columns of one solve's shifted costs (cost_shift) and their
+	 * own costs, to put back */
+	int nshift, *shift_j;
+	double *shift_c;
 };
 
 #define Q(p) ((struct glpk_lp *)(p))
@@ -344,6 +374,8 @@ static void glpk_prob_free(struct lp *p)
 	free(q->art_t);
 	free(q->art_lb);
 	free(q->art_ub);
+	free(q->shift_j);
+	free(q->shift_c);
 	free(q);
 }
 
@@ -703,6 +735,70 @@ static void var_set_stat(glp_prob *P, int nr, int k, int st)
  * phase I for is missed; one more is harmless */
 #define ART_DJ (0.5 * GLPK_TOL_DJ)
 
+/* Shifted costs (see the top): a shifted reduced cost is this far on
+ * the side its status needs (a minimisation's; 0 for a free non-basic
+ * column): well inside the dual simplex's tolerance (1e-9), so that
+ * the shifted column does not enter on round-off, and far below any
+ * reduced cost that decides a pivot */
+#define SHIFT_DJ 1e-7
+
+/* A non-basic variable (of struct var) whose reduced cost d, of a
+ * minimisation, asks it off its bound toward a side without one: 1 up,
+ * -1 down, 0 neither (art_set and cost_shift). */
+static int wrong_side(const struct var *v, double d)
+{
+	int st = v->stat, t = v->type;
+	if (d < -ART_DJ && ((st == GLP_NL && t == GLP_LO) || st == GLP_NF))
+		return 1;
+	if (d > ART_DJ && ((st == GLP_NU && t == GLP_UP) || st == GLP_NF))
+		return -1;
+	return 0;
+}
+
+/* Shift the cost of each column that wrong_side names, so that its
+ * reduced cost has the sign its status needs; how many, or -1 (nothing
+ * changed) if a row needs one.  GLPK holds the basis's values
+ * (glp_warm_up). */
+static int cost_shift(struct glpk_lp *q)
+{
+	glp_prob *P = q->P;
+	int nr = q->base.nrows, n = nr + q->base.ncols;
+	double dir = glp_get_obj_dir(P) == GLP_MIN ? 1 : -1;
+	for (int i = 1; i <= nr; i++) {
+		struct var v = var_get(P, nr, i);
+		if (wrong_side(&v, dir * v.dual))
+			return -1;
+	}
+	q->nshift = 0;
+	for (int k = nr + 1; k <= n; k++) {
+		struct var v = var_get(P, nr, k);
+		int side = wrong_side(&v, dir * v.dual);
+		if (!side)
+			continue;
+		if (!q->shift_j) {
+			q->shift_j = sw_xmalloc(sizeof(int) * (size_t)q->base.ncols);
+			q->shift_c = sw_xmalloc(sizeof(double) * (size_t)q->base.ncols);
+		}
+		int j = k - nr, a = q->nshift++;
+		double c = glp_get_obj_coef(P, j);
+		double to = v.stat == GLP_NF ? 0 : side * SHIFT_DJ;
+		q->shift_j[a] = j;
+		q->shift_c[a] = c;
+		/* the reduced cost moves with the cost: c - v.dual + dir * to
+		 * leaves it at dir * to, a minimisation's to */
+		glp_set_obj_coef(P, j, c - v.dual + dir * to);
+	}
+	return q->nshift;
+}
+
+/* The own costs back after cost_shift. */
+static void cost_restore(struct glpk_lp *q)
+{
+	for (int a = 0; a < q->nshift; a++)
+		glp_set_obj_coef(q->P, q->shift_j[a], q->shift_c[a]);
+	q->nshift = 0;
+}
+
 static double art_bound(glp_prob *P, int n, int nr)
 {
 	double s = 1;
@@ -728,12 +824,10 @@ static int art_set(struct glpk_lp *q)
 	q->nart = 0;
 	for (int k = 1; k <= n; k++) {
 		struct var v = var_get(P, nr, k);
-		int st = v.stat, t = v.type;
-		double d = dir * v.dual;
+		int t = v.type;
 		/* up: a minimisation would raise it; down: lower it */
-		int up = d < -ART_DJ && ((st == GLP_NL && t == GLP_LO) || st == GLP_NF);
-		int down = d > ART_DJ && ((st == GLP_NU && t == GLP_UP) || st == GLP_NF);
-		if (!up && !down)
+		int side = wrong_side(&v, dir * v.dual), up = side > 0;
+		if (!side)
 			continue;
 		if (big < 0) {
 			big = q->art_big = art_bound(P, n, nr);
@@ -857,8 +951,26 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	 * cannot flip a bound: artificial bounds there (see the top) */
 	if (m == LP_DUAL && warm < 0)
 		warm = glp_warm_up(q->P) == 0 ? 0 : -1;
-	int nart = m == LP_DUAL && warm == 0 ? art_set(q) : 0;
+	int nshift = m == LP_DUAL && warm == 0 && p->shift_costs ?
+		     cost_shift(q) : -1;
+	int nart = m == LP_DUAL && warm == 0 && nshift < 0 ? art_set(q) : 0;
 	int rc = glp_simplex(q->P, &parm);
+	if (nshift > 0) {
+		cost_restore(q);
+		s->count.shift++;
+		int status = glp_get_status(q->P);
+		if (rc == 0 && status == GLP_OPT) {
+			/* optimal for the shifted costs: primal feasible */
+			glp_smcp pp = parm;
+			pp.meth = GLP_PRIMAL;
+			pp.tol_bnd = GLPK_TOL_PRIMAL;
+			rc = glp_simplex(q->P, &pp);
+		} else if (!(rc == 0 && status == GLP_NOFEAS)) {
+			/* (no feasible point is a verdict whatever the costs)
+			 * anything else: on from there with the own costs */
+			rc = glp_simplex(q->P, &parm);
+		}
+	}
 	if (nart) {
 		s->count.art++;
 		if (art_restore(q, rc == 0 && glp_get_status(q->P) == GLP_OPT)) {

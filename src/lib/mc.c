@@ -279,6 +279,7 @@ static void *worker(void *arg)
 	m->counters.iterations += lc.iterations;
 	m->counters.held += lc.held;
 	m->counters.art += lc.art;
+	m->counters.shift += lc.shift;
 	m->counters.lp_seconds += lc.seconds;
 	m->counters.setups += lc.setups;
 	m->since[id] = 0;

@@ -407,6 +407,7 @@ void sample_ws_counters(const struct sample_ws *ws,
 	c->iterations = lc.iterations;
 	c->held = lc.held;
 	c->art = lc.art;
+	c->shift = lc.shift;
 	c->memory_errors = lc.memory_errors;
 	c->seconds = lc.seconds;
 	c->setups = ws->setups;

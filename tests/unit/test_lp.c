@@ -124,6 +124,70 @@ static void artificial_bounds(void)
 	lp_free(p);
 }
 
+/* Shifted costs (lp_glpk.c, "Dual infeasible starts by shifted costs"):
+ * the same starts as artificial_bounds's, on a problem that asks for
+ * them, give the problem's own answers (the shifted optimum lies at
+ * x = 0, y = 2; the primal simplex takes it from there), an infeasible
+ * problem stays infeasible, and an unbounded one unbounded. */
+static void shifted_costs(void)
+{
+	struct lp *p = two_by_two(4, 6);
+	lp_set_shift_costs(p, 1);
+	lp_set_col_bounds(p, 0, 0, 0);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL && fabs(lp_obj(p) - 2) < 1e-12,
+	       "shifted costs: x held at 0: y = 2");
+	struct lp_counters c0 = counters();
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	enum lp_status st = lp_solve(p, LP_DUAL);
+	struct lp_counters c1 = counters();
+	tap_ok(st == LP_OPTIMAL && c1.shift == c0.shift + 1 && c1.art == c0.art,
+	       "x freed: from a shifted cost, no artificial bound");
+	tap_near(lp_col(p, 0), 1.6, 1e-12, "x = 1.6 with the own costs");
+	tap_near(lp_col(p, 1), 1.2, 1e-12, "y = 1.2");
+	tap_near(lp_obj(p), 2.8, 1e-12, "the own objective: x + y = 2.8");
+	lp_free(p);
+
+	/* 1e-4 x + 2 y <= 4: x = 4e4, where an artificial bound would have
+	 * held it at 4e3 */
+	p = one_row(1e-4, 2, 4);
+	lp_set_shift_costs(p, 1);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "shifted costs: x held at 0: y = 2");
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	c0 = counters();
+	st = lp_solve(p, LP_DUAL);
+	c1 = counters();
+	tap_ok(st == LP_OPTIMAL && c1.shift == c0.shift + 1,
+	       "x freed: from a shifted cost");
+	tap_near(lp_obj(p), 4e4, 1e-6, "optimum x = 4e4, y = 0");
+	lp_free(p);
+
+	/* -x + y <= 1: x unbounded above */
+	p = one_row(-1, 1, 1);
+	lp_set_shift_costs(p, 1);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "shifted costs: x held at 0: y = 1");
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	c0 = counters();
+	st = lp_solve(p, LP_DUAL);
+	c1 = counters();
+	tap_ok(st == LP_UNBOUNDED && c1.shift == c0.shift + 1,
+	       "x freed along an unbounded ray: unbounded");
+	lp_free(p);
+
+	/* 1e-4 x + 2 y <= 4 with y >= 3 once x is freed: no feasible point,
+	 * found by the dual simplex on the shifted costs */
+	p = one_row(1e-4, 2, 4);
+	lp_set_shift_costs(p, 1);
+	tap_ok(lp_solve(p, LP_DUAL) == LP_OPTIMAL, "shifted costs: x held at 0: y = 2");
+	lp_set_col_bounds(p, 0, 0, HUGE_VAL);
+	lp_set_col_bounds(p, 1, 3, HUGE_VAL);
+	c0 = counters();
+	st = lp_solve(p, LP_DUAL);
+	c1 = counters();
+	tap_ok(st == LP_INFEASIBLE && c1.shift == c0.shift + 1,
+	       "y >= 3 with 2 y <= 4: infeasible");
+	lp_free(p);
+}
+
 int main(void)
 {
 	S = lp_solver_new(NULL);
@@ -183,6 +247,7 @@ int main(void)
 	lp_free(p);
 
 	artificial_bounds();
+	shifted_costs();
 
 	/* a stop request while problems are written (the workbench stops
 	 * its workers at every edit): a problem written or made after it is
