@@ -737,9 +737,9 @@ static void var_set_stat(glp_prob *P, int nr, int k, int st)
 
 /* Shifted costs (see the top): a shifted reduced cost is this far on
  * the side its status needs (a minimisation's; 0 for a free non-basic
- * column): well inside the dual simplex's tolerance (1e-9), so that
- * the shifted column does not enter on round-off, and far below any
- * reduced cost that decides a pivot */
+ * column): a hundred times the dual simplex's tolerance (1e-9), so that
+ * round-off in the multipliers does not take it back across, and small,
+ * so that the shifted problem stays close to the own one */
 #define SHIFT_DJ 1e-7
 
 /* A non-basic variable (of struct var) whose reduced cost d, of a
