@@ -264,9 +264,9 @@ void sample_ws_stats(const struct sample_ws *ws,
 /* What the workspace's LP solver did since it was made: LPs solved,
  * simplex iterations, LPs answered by the basis the solver held, LPs
  * started from artificial bounds or from shifted costs (docs/method.md,
- * "Warm starts and held bases"), seconds inside the solver, internal errors that were the
- * solver running out of memory, and whether it solved its canonical
- * sample (setups). */
+ * "Warm starts and held bases"), seconds inside the solver, internal
+ * errors that were the solver running out of memory, and whether it
+ * solved its canonical sample (setups). */
 struct sample_lp_counters {
 	long solves, iterations, held, art, shift, memory_errors;
 	double seconds;

@@ -136,11 +136,11 @@ void lp_clear(struct lp *p);
 
 /* How the dual simplex starts from a basis that is dual feasible but for
  * a few non-basic columns whose reduced cost asks them off their bound
- * toward a side without one (lp_glpk.c, "Dual infeasible starts"):
- * off (the default), they get artificial bounds; on, their costs are
- * shifted until the dual simplex ends, and the primal simplex finishes
- * from there.  For re-solves of one objective after bounds moved (the
- * SLP's LP1 and LP2). */
+ * toward a side without one (lp_glpk.c, "Dual infeasible starts by
+ * shifted costs"): off (the default), they get artificial bounds; on,
+ * their costs are shifted until the dual simplex ends, and the primal
+ * simplex finishes from there.  For re-solves of one objective after
+ * bounds moved (the SLP's LP1 and LP2). */
 void lp_set_shift_costs(struct lp *p, int on);
 void lp_set_maximize(struct lp *p, int maximize);
 void lp_set_obj(struct lp *p, int col, double c);
