@@ -963,7 +963,7 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 			/* optimal for the shifted costs: primal feasible */
 			glp_smcp pp = parm;
 			pp.meth = GLP_PRIMAL;
-			pp.tol_bnd = GLPK_TOL_PRIMAL;
+			pp.tol_bnd = glpk_feasibility_tol(LP_PRIMAL);
 			rc = glp_simplex(q->P, &pp);
 		} else if (!(rc == 0 && status == GLP_NOFEAS)) {
 			/* (no feasible point is a verdict whatever the costs)
