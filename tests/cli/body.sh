@@ -310,4 +310,31 @@ PY
 check "an opening without a lintel: 12 samples accepted or hanging (some of each), the same statuses and loads from auto, slack-primal and support" \
 	[ $? = 0 ]
 
+# The piece jump on a wall of hundreds of interfaces (docs/method.md,
+# "The SLP's answer", rule 2): below a residual of 2e-4 the joints'
+# classification leaves out each interface's side of its capacity, which
+# on tests/data/body-195.yaml (543 interfaces) changed at nearly every
+# iteration as the residuals N_k - c_k crossed 1e-9 one by one, so no
+# jump came and `--slp piece` ran as many iterations as `--slp plain`
+# (73 a sample).  Now every sample jumps to its piece's fixed point, at
+# the plain iteration's load.
+for v in piece plain; do
+	"$bin" run tests/data/body-195.yaml -n 4 --seed 1 --threads 2 --slp $v \
+		--samples "$tmp/b195-$v.csv" >/dev/null 2>&1
+done
+python3 - "$tmp"/b195-piece.csv "$tmp"/b195-plain.csv <<'PY'
+import csv, sys
+piece, plain = ([r for r in csv.DictReader(open(f))] for f in sys.argv[1:])
+for a, b in zip(piece, plain):
+    print("#   sample", a["sample"], a["status"], a["lambda_min"], a["iterations"],
+          "iterations; plain", b["status"], b["lambda_min"], b["iterations"])
+sys.exit(not (len(piece) == len(plain) == 4 and all(
+    a["status"] == b["status"] == "accepted"
+    and abs(float(a["lambda_min"]) - float(b["lambda_min"])) <= 1e-9 * float(b["lambda_min"])
+    and int(a["iterations"]) + 10 < int(b["iterations"])
+    for a, b in zip(piece, plain))))
+PY
+check "body-195, 4 samples: the piece path jumps (10 or more iterations fewer than --slp plain on each) and keeps --slp plain's lambda_min to 1e-9" \
+	[ $? = 0 ]
+
 tap_end
