@@ -40,19 +40,18 @@
 #define SLP_CLASS_TOL 1e-9
 /* ... but once the residual max |N - c| is below this (scaled units),
  * the classification leaves out each interface's side of its capacity
- * (N_a + N_b above, at or below c_k).  On the way to a fixed point
- * every N_k - c_k goes to 0, and on a wall of hundreds of interfaces
- * they cross SLP_CLASS_TOL one by one: the classification changed at
- * nearly every iteration, the jump never came, and the plain iteration
- * ran its tail down to o->tol (tests/data/body-195.yaml, seed 1: no
- * jump in 20 samples, 73.3 iterations a sample).  The side says which
- * of LP2's p_k and q_k is basic, and swapping them leaves the piece's
- * map of N as it is; it is the residual's sign, which the verification
- * reads anyway.  The bound is SLP_ACCEL_FROM's, for its reason: earlier
- * the pieces still change, and leaving the side out from the start
- * moved 5 of 2,000 samples of Ferris & Tin-Loi wall 1 and 29 of wall 2
- * (seed 1), nearly all up; below it, none (docs/method.md, "The SLP's
- * answer", rule 2) */
+ * (N_a + N_b above, at or below c_k).  On the way to a fixed point every
+ * N_k - c_k goes to 0, and on a wall of hundreds of interfaces they
+ * cross SLP_CLASS_TOL one by one: the classification changed at nearly
+ * every iteration, the jump never came, and the plain iteration ran its
+ * tail down to o->tol (tests/data/body-195.yaml, seed 1: no jump in 20
+ * samples, 73.3 iterations a sample).  The side says which of LP2's p_k
+ * and q_k is basic, and swapping them leaves the piece's map of N as it
+ * is, and where that basis holds is what the verification reads.  The
+ * bound is SLP_ACCEL_FROM's, for its reason: earlier the pieces still
+ * change, and leaving the side out from the start moved 5 of 2,000
+ * samples of Ferris & Tin-Loi wall 1 and 29 of wall 2 (seed 1), nearly
+ * all up; below it, none (docs/method.md, "The SLP's answer", rule 2) */
 #define SLP_CLASS_SIDE 2e-4
 /* the fixed point c* is verified when max |N(c*) - c*| is below this:
  * round-off (measured 1e-15 to 3e-13) */
@@ -552,11 +551,11 @@ enum sample_status sws_slp(struct sample_ws *ws,
  * capacities ws->c: each contact point's normal force zero or not, each
  * shear at +mu c, at -mu c or inside, all to SLP_CLASS_TOL, and while
  * the residual diff = max |N - c| is at least SLP_CLASS_SIDE, each
- * interface's N_a + N_b above, at or below c_k.  Unlike the LP bases (the last
- * round's test), it is a function of the field alone, and the field is
- * the tie-broken LPs' unique answer: a degenerate vertex has several
- * optimal bases, and which one the simplex ends at depends on its start
- * (docs/method.md, "The SLP's answer"). */
+ * interface's N_a + N_b above, at or below c_k.  Unlike the LP bases
+ * (the last round's test), it is a function of the field alone, and the
+ * field is the tie-broken LPs' unique answer: a degenerate vertex has
+ * several optimal bases, and which one the simplex ends at depends on
+ * its start (docs/method.md, "The SLP's answer"). */
 static unsigned long slp_class(const struct sample_ws *ws, double diff)
 {
 	unsigned long h = 1469598103934665603UL;	/* FNV-1a */
