@@ -560,7 +560,8 @@ static unsigned long slp_class(const struct sample_ws *ws, double diff)
 {
 	unsigned long h = 1469598103934665603UL;	/* FNV-1a */
 	const double f0 = SLP_CLASS_TOL;
-	unsigned side = diff < SLP_CLASS_SIDE ? 0 : 0x3fu;
+	/* bits 0-3 the points and the shear, 4-5 the side */
+	unsigned mask = diff < SLP_CLASS_SIDE ? 0xfu : 0x3fu;
 	for (int k = 0; k < ws->m; k++) {
 		double na = ws->x[3 * k], nb = ws->x[3 * k + 1], t = ws->x[3 * k + 2];
 		double cap = sws_capacity(ws, k), d = na + nb - ws->c[k];
@@ -569,7 +570,7 @@ static unsigned long slp_class(const struct sample_ws *ws, double diff)
 				(unsigned)(live && t >= cap - f0) << 2 |
 				(unsigned)(live && t <= -cap + f0) << 3 |
 				(unsigned)(d > f0) << 4 | (unsigned)(d < -f0) << 5;
-		h = (h ^ (code & (0xfu | side))) * 1099511628211UL;
+		h = (h ^ (code & mask)) * 1099511628211UL;
 	}
 	return h;
 }
