@@ -374,6 +374,7 @@ void sample_ws_free(struct sample_ws *ws)
 	lp_basis_free(&ws->slp_start[1]);
 	lp_basis_free(&ws->lp1_end);
 	lp_basis_free(&ws->lp2_face);
+	lp_basis_free(&ws->kin_start);
 	free(ws->cstar);
 	free(ws->fallback);
 	free(ws->ends.buf);

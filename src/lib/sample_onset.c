@@ -2,8 +2,9 @@
  * sample_onset.c - the associative and kinematic steps of a sample
  * (docs/method.md, "One sample"): step 2a, LP-max (the SLP's start and
  * the standard method's answer) and the standing check; step 3, the
- * mechanism complementary to the SLP's stress field (onset) or to a
- * given pattern (sws_mechanism, sample_pattern); step 5, LP-min with the
+ * mechanism complementary to the SLP's stress field (onset, from the
+ * basis complementary to LP1's: kin_from_lp1) or to a given pattern
+ * (sws_mechanism, sample_pattern); step 5, LP-min with the
  * mechanism's yield conditions at their limits, and the virtual-work
  * check; and the export of the scaled results into real units.  The
  * problems are sample_lp.c's, the tie-breaks sample_tie.c's, the
@@ -196,12 +197,14 @@ static int slides(const struct sample_ws *ws, int k, double thr)
 
 /* Step 3's LP: of the mechanisms whose motions the bounds of KIN allow
  * (its opening rows, its slip columns), the one with the least joint
- * motion for unit work of the live load.  Fills ws->v, ws->dn, ws->dt. */
-enum sample_status sws_mechanism(struct sample_ws *ws,
+ * motion for unit work of the live load, by the simplex method meth
+ * from the basis KIN holds.  Fills ws->v, ws->dn, ws->dt. */
+static enum sample_status mechanism(struct sample_ws *ws,
+				    enum lp_method meth,
 				    struct sample_result *r)
 {
 	struct lp *K = ws->lp[KIN];
-	enum lp_status s = sws_solve(ws, KIN, LP_DUAL, r);
+	enum lp_status s = sws_solve(ws, KIN, meth, r);
 	if (s == LP_INFEASIBLE)
 		return SAMPLE_NO_MECHANISM;
 	if (s != LP_OPTIMAL)
@@ -217,6 +220,73 @@ enum sample_status sws_mechanism(struct sample_ws *ws,
 		ws->dt[k] = lp_col(K, KCOL_SP(ws, k)) - lp_col(K, KCOL_SM(ws, k));
 	}
 	return SAMPLE_ACCEPTED;
+}
+
+/* Step 3's LP from the basis KIN holds, by the dual simplex: after a
+ * pattern's bounds (sample_pattern) or from the slack basis (sample.c's
+ * re-check). */
+enum sample_status sws_mechanism(struct sample_ws *ws,
+				    struct sample_result *r)
+{
+	return mechanism(ws, LP_DUAL, r);
+}
+
+/* KIN's start at the SLP's end: the basis complementary to LP1's optimal
+ * basis (docs/method.md and docs/performance.md, "The mechanism from
+ * LP1's basis").  KIN is
+ * LP1's dual, transposed: its row j is the rate (A^T v)_j of LP1's
+ * column j (the normal force or shear of one contact), its row 3m is
+ * f_L . v = 1 against LP1's lambda column, and its velocity columns
+ * stand for LP1's equilibrium rows.  So a column basic in LP1 makes
+ * KIN's row of it non-basic (rate 0: the force is off its bound), one
+ * non-basic in LP1 makes the row basic (the rate is free to move), and
+ * an equilibrium row non-basic in LP1 (as they all are but a degenerate
+ * one) makes its velocity basic.  A shear's rate is split, s+ - s-: a
+ * shear non-basic at +mu c takes s- (T > 0 opposes slip < 0), at -mu c
+ * s+, a fixed one (no capacity) the side its reduced cost asks for.
+ * The counts match (KIN has 3m + 1 rows: LP1's R basics leave 3m + 1
+ * of the R + 3m + 1 for KIN), and the basis matrix is LP1's basis matrix
+ * transposed, up to the slips' unit columns: non-singular when LP1's
+ * is.  Its basic solution is LP1's optimal dual, a mechanism
+ * complementary to every optimal field of LP1, the SLP's field among
+ * them (LP2 takes it from LP1's optimal face): so the start is primal
+ * feasible for the bounds sws_onset reads off that field, up to the
+ * force zero and round-off, and the primal simplex goes on from it to
+ * the least motion.  On the paper's walls the answer is the same as
+ * from any other start (KIN's tie-break) and only the pivots move; on
+ * walls of hundreds of blocks the optimum is decided only to the
+ * simplex's tolerances, and loads moved by up to 1.5e-5 of themselves
+ * (docs/method.md, "The mechanism from LP1's basis").  Returns 0, and
+ * leaves KIN's basis, if LP1's cannot be read (a dead problem). */
+static int kin_from_lp1(struct sample_ws *ws)
+{
+	int m = ws->m, R = ws->R, nk = 3 * m + 1;
+	struct lp_basis *b1 = &ws->lp1_end, *bk = &ws->kin_start;
+	if (!lp_alive(ws->lp[LP1]))
+		return 0;
+	lp_basis_save(ws->lp[LP1], b1);
+	int n = nk + R + 2 * m;
+	if (bk->n != n) {
+		lp_basis_free(bk);
+		bk->stat = sw_xmalloc(sizeof(int) * (size_t)n);
+		bk->n = n;
+	}
+	const int *row1 = b1->stat, *col1 = b1->stat + R;
+	int *row = bk->stat, *col = bk->stat + nk;
+	for (int j = 0; j < nk; j++)
+		row[j] = col1[j] == LP_BS ? LP_NL : LP_BS;
+	for (int i = 0; i < R; i++)
+		col[i] = row1[i] == LP_BS ? LP_NF : LP_BS;
+	for (int k = 0; k < m; k++) {
+		int j = 3 * k + 2, st = col1[j];
+		row[j] = LP_NS;
+		if (st == LP_NS)
+			st = lp_col_dual(ws->lp[LP1], j) > 0 ? LP_NU : LP_NL;
+		col[KCOL_SP(ws, k)] = st == LP_NL ? LP_BS : LP_NL;
+		col[KCOL_SM(ws, k)] = st == LP_NU ? LP_BS : LP_NL;
+	}
+	lp_basis_load(ws->lp[KIN], bk);
+	return 1;
 }
 
 /* Step 3: a mechanism complementary to the stress field ws->x with
@@ -251,13 +321,18 @@ enum sample_status sws_onset(struct sample_ws *ws,
 			bits |= KIN_SLIP_POS;
 		sws_kin_allow(ws, k, bits);
 	}
-	return sws_mechanism(ws, r);
+	return kin_from_lp1(ws) ? mechanism(ws, LP_PRIMAL, r)
+				: mechanism(ws, LP_DUAL, r);
 }
 
 /* A joint rate of the mechanism counts as motion above this: TOL_MOTION
  * times the largest rate, but never below the kinematic LP's precision
- * (it is solved by the dual simplex: lp_feasibility_tol), for a rate
- * the LP holds only to its feasibility tolerance is not told from 0.
+ * (the dual simplex's feasibility tolerance, lp_feasibility_tol), for a
+ * rate the LP holds only to its feasibility tolerance is not told from
+ * 0.  (The onset's kinematic LP is solved by the primal simplex from
+ * LP1's complementary basis, kin_from_lp1, and GLPK's primal allows
+ * 1e-8; a floor of 1e-8 failed two samples' virtual work, docs/
+ * method.md, "Tolerances", and no status moved with the floor kept.)
  * On a wall whose mechanism's rates are small (a body load over many
  * blocks, normalised to f_L . v = 1: largest rate 0.02 on a 195-block
  * wall) TOL_MOTION alone put the threshold at 2e-11, rates of 1e-10 at

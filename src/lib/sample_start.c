@@ -131,7 +131,14 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	 * walls of 600+ interfaces the two simplex methods' optima part by
 	 * up to 8e-7 of themselves (docs/method.md, "The SLP's start").
 	 * The start option still drives the standing check and the SLP's
-	 * LP1 and LP2, where most of a sample's pivots are. */
+	 * LP1 and LP2, where most of a sample's pivots are.  The onset's
+	 * mechanism then starts from the basis complementary to LP1's last
+	 * (sample_onset.c, kin_from_lp1), which the start option reaches
+	 * only through LP1's optimum: the same status and lambda_min from
+	 * every start and thread count on 2,000 samples of each of the
+	 * three walls at three seeds (docs/method.md, "LP-max, the
+	 * mechanism and LP-min on one fixed path"); KIN's start here is
+	 * the patterns' (sample_pattern). */
 	int fixed = p == AMAX || p == KIN || p == AMIN;
 	if (ws->start != SAMPLE_START_AUTO && !fixed)
 		return ws->start;

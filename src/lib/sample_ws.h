@@ -106,8 +106,9 @@ struct sample_ws {
 	struct slp_history hist;	/* sws_slp()'s Anderson memory */
 	double *c0;		/* m: the SLP's start, for its restarts */
 	struct lp_basis slp_start[2];	/* LP1's, LP2's bases there */
-	/* LP1's optimal basis, and LP2's start made of it (lp2_from_lp1) */
-	struct lp_basis lp1_end, lp2_face;
+	/* LP1's optimal basis, and LP2's start made of it (lp2_from_lp1)
+	 * and KIN's (sample_onset.c, kin_from_lp1) */
+	struct lp_basis lp1_end, lp2_face, kin_start;
 	struct slp_ends ends;		/* the phase ends, for rule 8 */
 	double *x;		/* 3m: stress field of the last SLP LP */
 	double *v;		/* R: velocities */

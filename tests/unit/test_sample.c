@@ -167,11 +167,27 @@ static void ferris_tinloi(void)
  * and 183 of wall 1 were not_converged), and at most 1 rejected as
  * numerical: when LP2 held lambda >= lambda_LP1
  * exactly instead of keeping to LP1's optimal face, GLPK found LP2
- * infeasible for 17 of these 200 samples of wall 2. */
+ * infeasible for 17 of these 200 samples of wall 2.
+ *
+ * And the kinematic LP's start at the SLP's end: the basis
+ * complementary to LP1's optimal one, whose basic solution is LP1's
+ * optimal dual, a mechanism the onset check's bounds admit
+ * (sample_onset.c, kin_from_lp1; docs/performance.md, "The mechanism
+ * from LP1's basis").  From it the primal simplex only walks to the
+ * least motion: about 13 and 15 pivots an LP on the two walls here (the
+ * set-up's included), against 37 and 76 by the dual simplex from the
+ * canonical basis before (f5be073).  A wrong mapping (a slip on the
+ * wrong side, a row basic that should not be) starts it infeasible or
+ * singular, and the count grows. */
 static void acceptance(void)
 {
 	const char *files[] = {"walls/ferris-tinloi-1.yaml",
 			       "walls/ferris-tinloi-2.yaml"};
+	int kin = 0;	/* the kinematic LP's role */
+	while (kin < SAMPLE_ROLE_COUNT &&
+	       strcmp(sample_role_name(kin), "kinematic") != 0)
+		kin++;
+	tap_ok(kin < SAMPLE_ROLE_COUNT, "the kinematic LP's role");
 	for (int f = 0; f < 2; f++) {
 		struct wall *w = tw_load_file(files[f]);
 		struct sample_ws *ws = sample_ws_new(w);
@@ -197,6 +213,13 @@ static void acceptance(void)
 		       "%s, depth 0.25: %d of 200 accepted (>= 198), %d "
 		       "numerical (<= 1)", files[f], count[SAMPLE_ACCEPTED],
 		       count[SAMPLE_NUMERICAL]);
+		struct sample_lp_stats st[SAMPLE_ROLE_COUNT];
+		sample_ws_stats(ws, st);
+		double piv = kin < SAMPLE_ROLE_COUNT && st[kin].lps > 0 ?
+			     (double)st[kin].iterations / (double)st[kin].lps : 1e9;
+		tap_ok(piv <= 20, "%s: the kinematic LP from LP1's "
+		       "complementary basis: %.1f pivots an LP (<= 20)",
+		       files[f], piv);
 		draw_free(&dr);
 		sample_result_free(&r);
 		sample_ws_free(ws);

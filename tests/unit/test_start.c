@@ -3,8 +3,9 @@
  * function of its contact positions alone, whatever the LP solver's path.
  * Every sample is solved by eight workspaces whose LPs start from
  * different bases (SLIPWALL_LP_START's values, which drive the standing
- * check and the SLP's LP1 and LP2, LP-max, the mechanism and LP-min
- * keeping `auto`'s path: the default `auto`, the
+ * check and the SLP's LP1 and LP2, LP-max and LP-min keeping `auto`'s
+ * path and the mechanism starting from LP1's complementary basis: the
+ * default `auto`, the
  * slack basis by the primal and by the dual simplex, GLPK's crash basis,
  * the canonical bases, the previous sample's bases, the support basis;
  * `auto` as it starts walls of more than 1,000 interfaces; and `auto`
