@@ -174,9 +174,9 @@ static void ferris_tinloi(void)
  * optimal dual, a mechanism the onset check's bounds admit
  * (sample_onset.c, kin_from_lp1; docs/performance.md, "The mechanism
  * from LP1's basis").  From it the primal simplex only walks to the
- * least motion: about 13 and 15 pivots an LP on the two walls here (the
- * set-up's included), against 37 and 76 by the dual simplex from the
- * canonical basis before (f5be073).  A wrong mapping (a slip on the
+ * least motion: 13.3 and 14.6 pivots an LP on the two walls here (the
+ * set-up's included), against 37.9 and 77.1 by the dual simplex from
+ * the canonical basis before (f5be073).  A wrong mapping (a slip on the
  * wrong side, a row basic that should not be) starts it infeasible or
  * singular, and the count grows. */
 static void acceptance(void)
