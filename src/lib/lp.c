@@ -196,16 +196,21 @@ void lp_basis_save(const struct lp *p, struct lp_basis *b)
 {
 	if (!lp_alive(p))	/* after LP_ERROR or LP_STOPPED: nothing to save */
 		return;
-	int n = p->nrows + p->ncols;
+	lp_basis_size(b, p->nrows + p->ncols);
+	for (int i = 0; i < p->nrows; i++)
+		b->stat[i] = (int)T(p)->row_stat(p, i);
+	for (int j = 0; j < p->ncols; j++)
+		b->stat[p->nrows + j] = (int)T(p)->col_stat(p, j);
+}
+
+int *lp_basis_size(struct lp_basis *b, int n)
+{
 	if (b->n != n) {
 		free(b->stat);
 		b->stat = sw_xmalloc(sizeof(int) * (size_t)(n + 1));
 		b->n = n;
 	}
-	for (int i = 0; i < p->nrows; i++)
-		b->stat[i] = (int)T(p)->row_stat(p, i);
-	for (int j = 0; j < p->ncols; j++)
-		b->stat[p->nrows + j] = (int)T(p)->col_stat(p, j);
+	return b->stat;
 }
 
 void lp_basis_load(struct lp *p, const struct lp_basis *b)

@@ -179,6 +179,10 @@ struct lp_basis {
 	int *stat;		/* rows then columns */
 };
 void lp_basis_save(const struct lp *p, struct lp_basis *b);
+/* b sized for n statuses (rows then columns), to be written by the
+ * caller: a basis built for another problem (its statuses are undefined
+ * when the size changed); returns b->stat */
+int *lp_basis_size(struct lp_basis *b, int n);
 void lp_basis_load(struct lp *p, const struct lp_basis *b);
 void lp_basis_free(struct lp_basis *b);
 /* dst becomes a copy of src (plain data: another thread's problem of

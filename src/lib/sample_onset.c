@@ -233,29 +233,28 @@ enum sample_status sws_mechanism(struct sample_ws *ws,
 
 /* KIN's start at the SLP's end: the basis complementary to LP1's optimal
  * basis (docs/method.md and docs/performance.md, "The mechanism from
- * LP1's basis").  KIN is
- * LP1's dual, transposed: its row j is the rate (A^T v)_j of LP1's
- * column j (the normal force or shear of one contact), its row 3m is
- * f_L . v = 1 against LP1's lambda column, and its velocity columns
- * stand for LP1's equilibrium rows.  So a column basic in LP1 makes
- * KIN's row of it non-basic (rate 0: the force is off its bound), one
- * non-basic in LP1 makes the row basic (the rate is free to move), and
- * an equilibrium row non-basic in LP1 (as they all are but a degenerate
- * one) makes its velocity basic.  A shear's rate is split, s+ - s-: a
- * shear non-basic at +mu c takes s- (T > 0 opposes slip < 0), at -mu c
- * s+, a fixed one (no capacity) the side its reduced cost asks for.
- * The counts match (KIN has 3m + 1 rows: LP1's R basics leave 3m + 1
- * of the R + 3m + 1 for KIN), and the basis matrix is LP1's basis matrix
- * transposed, up to the slips' unit columns: non-singular when LP1's
- * is.  Its basic solution is LP1's optimal dual, a mechanism
+ * LP1's basis").  KIN is LP1's dual, transposed: its row j is the rate
+ * (A^T v)_j of LP1's column j (the normal force or shear of one
+ * contact), its row 3m is f_L . v = 1 against LP1's lambda column, and
+ * its velocity columns stand for LP1's equilibrium rows.  So a column
+ * basic in LP1 makes KIN's row of it non-basic (rate 0: the force is off
+ * its bound), one non-basic in LP1 makes the row basic (the rate is free
+ * to move), and an equilibrium row non-basic in LP1 (as they all are but
+ * a degenerate one) makes its velocity basic.  A shear's rate is split,
+ * s+ - s-: a shear non-basic at +mu c takes s- (T > 0 opposes slip < 0),
+ * at -mu c s+, a fixed one (no capacity) the side its reduced cost asks
+ * for.  The counts match (KIN has 3m + 1 rows: LP1's R basics leave
+ * 3m + 1 of the R + 3m + 1 for KIN), and the basis matrix is LP1's basis
+ * matrix transposed, up to the slips' unit columns: non-singular when
+ * LP1's is.  Its basic solution is LP1's optimal dual, a mechanism
  * complementary to every optimal field of LP1, the SLP's field among
  * them (LP2 takes it from LP1's optimal face): so the start is primal
  * feasible for the bounds sws_onset reads off that field, up to the
  * force zero and round-off, and the primal simplex goes on from it to
- * the least motion.  On the paper's walls the answer is the same as
- * from any other start (KIN's tie-break) and only the pivots move; on
- * walls of hundreds of blocks the optimum is decided only to the
- * simplex's tolerances, and loads moved by up to 1.5e-5 of themselves
+ * the least motion.  On the paper's walls the answer is the same as from
+ * any other start (KIN's tie-break) and only the pivots move; on walls
+ * of hundreds of blocks the optimum is decided only to the simplex's
+ * tolerances, and loads moved by up to 1.5e-5 of themselves
  * (docs/method.md, "The mechanism from LP1's basis").  Returns 0, and
  * leaves KIN's basis, if LP1's cannot be read (a dead problem). */
 static int kin_from_lp1(struct sample_ws *ws)
@@ -265,14 +264,8 @@ static int kin_from_lp1(struct sample_ws *ws)
 	if (!lp_alive(ws->lp[LP1]))
 		return 0;
 	lp_basis_save(ws->lp[LP1], b1);
-	int n = nk + R + 2 * m;
-	if (bk->n != n) {
-		lp_basis_free(bk);
-		bk->stat = sw_xmalloc(sizeof(int) * (size_t)n);
-		bk->n = n;
-	}
 	const int *row1 = b1->stat, *col1 = b1->stat + R;
-	int *row = bk->stat, *col = bk->stat + nk;
+	int *row = lp_basis_size(bk, nk + R + 2 * m), *col = row + nk;
 	for (int j = 0; j < nk; j++)
 		row[j] = col1[j] == LP_BS ? LP_NL : LP_BS;
 	for (int i = 0; i < R; i++)
@@ -321,8 +314,7 @@ enum sample_status sws_onset(struct sample_ws *ws,
 			bits |= KIN_SLIP_POS;
 		sws_kin_allow(ws, k, bits);
 	}
-	return kin_from_lp1(ws) ? mechanism(ws, LP_PRIMAL, r)
-				: mechanism(ws, LP_DUAL, r);
+	return mechanism(ws, kin_from_lp1(ws) ? LP_PRIMAL : LP_DUAL, r);
 }
 
 /* A joint rate of the mechanism counts as motion above this: TOL_MOTION

@@ -171,13 +171,8 @@ static void lp2_from_lp1(struct sample_ws *ws)
 	int m = ws->m, R = ws->R;
 	struct lp_basis *b1 = &ws->lp1_end, *b2 = &ws->lp2_face;
 	lp_basis_save(P, b1);
-	int n = (R + m) + (3 * m + 1 + 2 * m);
-	if (b2->n != n) {
-		lp_basis_free(b2);
-		b2->stat = sw_xmalloc(sizeof(int) * (size_t)n);
-		b2->n = n;
-	}
-	int *row = b2->stat, *col = b2->stat + R + m;
+	int *row = lp_basis_size(b2, (R + m) + (3 * m + 1 + 2 * m));
+	int *col = row + R + m;
 	memcpy(row, b1->stat, sizeof(int) * (size_t)R);
 	for (int k = 0; k < m; k++)
 		row[R + k] = LP_NS;
