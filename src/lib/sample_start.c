@@ -100,11 +100,13 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * interfaces), LP-max 20,744 (canonical, dual), 2,308 (canonical,
  * primal), 13,751 (slack, primal), the first LP2 of a sample 12,254 and
  * 3,884 (canonical, slack; the other roles: canonical fewer on both).
- * Large walls also start the standing check from the support basis
- * (support.c): 35.5 pivots, 2,092 from the canonical basis; and so the
- * associative problems of the canonical sample, solved when the
- * workspace is made (LP-max 3,322 pivots from the support basis, 13,751
- * from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
+ * Every wall starts the standing check from the support basis
+ * (support.c): on the 1,020-block wall 35.5 pivots, 2,092 from the
+ * canonical basis (on walls of at most 1,000 interfaces since 29
+ * November 2026: below); large walls also start the associative
+ * problems of the canonical sample from it, solved when the workspace
+ * is made (LP-max 3,322 pivots from the support basis, 13,751 from the
+ * slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
  * On walls of at most that many interfaces, and on larger ones under
  * a body load, LP2's start, whichever it is, is loaded and then
  * replaced: each path of the SLP starts its first LP2 from LP1's
@@ -144,11 +146,17 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 		return ws->start;
 	if (ws->large && p == LP2)
 		return SAMPLE_START_SLACK_PRIMAL;
-	/* the standing check from the support basis; so are the
-	 * associative problems of the workspace's canonical sample, which
-	 * has no canonical basis yet (they would start from the slack
-	 * basis) */
-	if (ws->large && (p == STAND || (ws->setup && p <= AMIN)))
+	/* the standing check from the support basis on every wall: it is
+	 * primal feasible at lambda = 0 wherever each block finds its
+	 * support triple, so the check needs no pivot, where from the
+	 * canonical basis it took 14.9 pivots on Ferris & Tin-Loi wall 1
+	 * and 179.6 on tests/data/body-195.yaml (docs/performance.md, "The
+	 * standing check from the support basis"); its answer is a
+	 * verdict, feasible or not, and no field, so the start cannot move
+	 * a sample.  The associative problems of a large wall's canonical
+	 * sample start from it too: it has no canonical basis yet (they
+	 * would start from the slack basis) */
+	if (p == STAND || (ws->large && ws->setup && p <= AMIN))
 		return SAMPLE_START_SUPPORT;
 	return SAMPLE_START_CANONICAL;
 }

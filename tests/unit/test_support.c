@@ -4,7 +4,7 @@
  * at the classical contact; a basis GLPK takes as optimal for the
  * standing check without a pivot there, and one that needs a tenth of
  * the slack basis's pivots elsewhere (the `support` start, through the
- * sample workspace).
+ * sample workspace), and the default start's standing check.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -97,6 +97,13 @@ static void standing(struct wall *w, const char *what)
 	tap_ok(10 * p1 <= p2 && acc == 10, "%s, depth 0.2: the standing check "
 	       "from the support basis %ld pivots, from the slack basis %ld "
 	       "(%d of 10 accepted)", what, p1, p2, acc);
+	/* the default start takes it on every wall (sample_start.c,
+	 * sws_role_start), where it took the canonical basis before */
+	long pa = standing_pivots(w, SAMPLE_START_AUTO, 10, 1, &acc);
+	long pc = standing_pivots(w, SAMPLE_START_CANONICAL, 10, 1, &acc);
+	tap_ok(pa == p1 && pa < pc, "%s, depth 0.2: the standing check of "
+	       "`auto` %ld pivots, the support basis's %ld, the canonical "
+	       "basis's %ld", what, pa, p1, pc);
 }
 
 int main(void)
