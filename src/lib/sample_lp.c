@@ -199,6 +199,10 @@ static void write_points(struct sample_ws *ws)
 	sws_put_kin_objective(ws);
 }
 
+/* LP-min's dual infeasible starts by shifted costs above this many
+ * interfaces (sws_build) */
+#define AMIN_SHIFT_IFACES 100
+
 /* The six problems, new.  The fixed part of the matrix is written first
  * and the points' part after it, as sws_refill() will write it again: GLPK
  * puts the newest writes first in its row lists, so a problem rebuilt
@@ -215,9 +219,16 @@ void sws_build(struct sample_ws *ws)
 	/* the SLP's re-solves: one objective, bounds moved (the capacities,
 	 * LP2's face), and a start dual infeasible in a few columns that
 	 * the face freed.  Shifted costs there, artificial bounds elsewhere
-	 * (lp.h; docs/performance.md, "Shifted costs") */
+	 * (lp.h; docs/performance.md, "Shifted costs").  LP-min takes them
+	 * on walls of more than AMIN_SHIFT_IFACES interfaces: from its
+	 * canonical basis, under the mechanism's fixings, 100.0 pivots an
+	 * LP against 189.3 on tests/data/body-195.yaml, 18.6 against 29.9
+	 * on Ferris & Tin-Loi wall 2; on the demo (66 interfaces) 187.4
+	 * against 89.9 (docs/performance.md, "LP-min by shifted costs on
+	 * walls of more than 100 interfaces") */
 	lp_set_shift_costs(ws->lp[LP1], 1);
 	lp_set_shift_costs(ws->lp[LP2], 1);
+	lp_set_shift_costs(ws->lp[AMIN], m > AMIN_SHIFT_IFACES);
 	write_fixed(ws);
 	write_points(ws);
 }
