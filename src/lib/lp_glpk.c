@@ -75,10 +75,10 @@
  *
  * Dual infeasible starts by shifted costs (lp_set_shift_costs; the
  * SLP's LP1 and LP2, and LP-min on walls of more than 100 interfaces:
- * src/lib/sample_lp.c, sws_build).  An artificial bound is ART times the problem's
- * largest bound away, and the variable put on it moves every basic
- * value its column reaches by as much: the dual simplex then has
- * thousands of infeasibilities to repair (measured on
+ * src/lib/sample_lp.c, sws_build).  An artificial bound is ART times
+ * the problem's largest bound away, and the variable put on it moves
+ * every basic value its column reaches by as much: the dual simplex
+ * then has thousands of infeasibilities to repair (measured on
  * walls/body-1000.yaml: 1,400-2,800 at the start of LP2 re-solves that
  * took 13,000-16,000 pivots, from 1 to 81 artificial bounds; the
  * median re-solve takes a few hundred).  A problem that asks for it

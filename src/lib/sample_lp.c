@@ -224,8 +224,9 @@ void sws_build(struct sample_ws *ws)
 	 * canonical basis, under the mechanism's fixings, 100.0 pivots an
 	 * LP against 189.3 on tests/data/body-195.yaml, 18.6 against 29.9
 	 * on Ferris & Tin-Loi wall 2; on the demo (66 interfaces) 187.4
-	 * against 89.9 (docs/performance.md, "LP-min by shifted costs on
-	 * walls of more than 100 interfaces") */
+	 * against 89.9 (docs/method.md, "LP-min by shifted costs on walls
+	 * of more than 100 interfaces"; docs/performance.md, "The standing
+	 * check from the support basis, and LP-min by shifted costs") */
 	lp_set_shift_costs(ws->lp[LP1], 1);
 	lp_set_shift_costs(ws->lp[LP2], 1);
 	lp_set_shift_costs(ws->lp[AMIN], m > AMIN_SHIFT_IFACES);

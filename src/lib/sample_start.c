@@ -150,8 +150,9 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	 * primal feasible at lambda = 0 wherever each block finds its
 	 * support triple, so the check needs no pivot, where from the
 	 * canonical basis it took 14.9 pivots on Ferris & Tin-Loi wall 1
-	 * and 179.6 on tests/data/body-195.yaml (docs/performance.md, "The
-	 * standing check from the support basis"); its answer is a
+	 * and 178.5 on tests/data/body-195.yaml (docs/performance.md, "The
+	 * standing check from the support basis, and LP-min by shifted
+	 * costs"); its answer is a
 	 * verdict, feasible or not, and no field, so the start cannot move
 	 * a sample.  The associative problems of a large wall's canonical
 	 * sample start from it too: it has no canonical basis yet (they
