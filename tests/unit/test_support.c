@@ -106,6 +106,23 @@ static void standing(struct wall *w, const char *what)
 	       "basis's %ld", what, pa, p1, pc);
 }
 
+/* A wall with a block that rests on no joint (an opening without a
+ * lintel) has no support basis; the standing check of `auto` then
+ * starts from the canonical basis, as every other role does, and not
+ * from the slack basis (sample_start.c, sws_start_bases). */
+static void no_support(void)
+{
+	struct wall *w = tw_load_file("tests/data/opening-nolintel.yaml");
+	int acc;
+	long pa = standing_pivots(w, SAMPLE_START_AUTO, 4, 1, &acc);
+	long pc = standing_pivots(w, SAMPLE_START_CANONICAL, 4, 1, &acc);
+	long ps = standing_pivots(w, SAMPLE_START_SLACK_PRIMAL, 4, 1, &acc);
+	tap_ok(pa == pc && pa < ps, "a wall with a block on no joint: "
+	       "the standing check of `auto` %ld pivots, the canonical "
+	       "basis's %ld, the slack basis's %ld", pa, pc, ps);
+	wall_free(w);
+}
+
 int main(void)
 {
 	/* a block on the ground */
@@ -125,5 +142,6 @@ int main(void)
 		standing(w, what);
 		wall_free(w);
 	}
+	no_support();
 	return tap_done();
 }
