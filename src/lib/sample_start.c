@@ -152,11 +152,10 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	 * canonical basis it took 14.9 pivots on Ferris & Tin-Loi wall 1
 	 * and 178.5 on tests/data/body-195.yaml (docs/performance.md, "The
 	 * standing check from the support basis, and LP-min by shifted
-	 * costs"); its answer is a
-	 * verdict, feasible or not, and no field, so the start cannot move
-	 * a sample.  The associative problems of a large wall's canonical
-	 * sample start from it too: it has no canonical basis yet (they
-	 * would start from the slack basis) */
+	 * costs"); its answer is a verdict, feasible or not, and no field,
+	 * so the start cannot move a sample.  The associative problems of
+	 * a large wall's canonical sample start from it too: it has no
+	 * canonical basis yet (they would start from the slack basis) */
 	if (p == STAND || (ws->large && ws->setup && p <= AMIN))
 		return SAMPLE_START_SUPPORT;
 	return SAMPLE_START_CANONICAL;

@@ -183,17 +183,21 @@ static void ferris_tinloi(void)
  * And LP-min's dual infeasible start by shifted costs on wall 2 (141
  * interfaces; sample_lp.c, sws_build: walls of more than 100): 19.9
  * pivots an LP here, against 31.1 with artificial bounds before. */
+/* The index of the LP role named name (sample_role_name), or
+ * SAMPLE_ROLE_COUNT. */
+static int role_named(const char *name)
+{
+	int p = 0;
+	while (p < SAMPLE_ROLE_COUNT && strcmp(sample_role_name(p), name) != 0)
+		p++;
+	return p;
+}
+
 static void acceptance(void)
 {
 	const char *files[] = {"walls/ferris-tinloi-1.yaml",
 			       "walls/ferris-tinloi-2.yaml"};
-	int kin = 0, amin = 0;	/* the kinematic LP's and LP-min's roles */
-	while (kin < SAMPLE_ROLE_COUNT &&
-	       strcmp(sample_role_name(kin), "kinematic") != 0)
-		kin++;
-	while (amin < SAMPLE_ROLE_COUNT &&
-	       strcmp(sample_role_name(amin), "LP-min") != 0)
-		amin++;
+	int kin = role_named("kinematic"), amin = role_named("LP-min");
 	tap_ok(kin < SAMPLE_ROLE_COUNT && amin < SAMPLE_ROLE_COUNT,
 	       "the kinematic LP's and LP-min's roles");
 	for (int f = 0; f < 2; f++) {
