@@ -227,12 +227,12 @@ void lp_basis_load(struct lp *p, const struct lp_basis *b)
 
 void lp_basis_copy(struct lp_basis *dst, const struct lp_basis *src)
 {
-	lp_basis_free(dst);
-	if (src->n <= 0)
+	if (src->n <= 0) {
+		lp_basis_free(dst);
 		return;
-	dst->stat = sw_xmalloc(sizeof(int) * (size_t)(src->n + 1));
-	memcpy(dst->stat, src->stat, sizeof(int) * (size_t)src->n);
-	dst->n = src->n;
+	}
+	memcpy(lp_basis_size(dst, src->n), src->stat,
+	       sizeof(int) * (size_t)src->n);
 }
 
 unsigned long lp_basis_hash(const struct lp *p)

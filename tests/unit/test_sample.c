@@ -160,6 +160,25 @@ static void ferris_tinloi(void)
 	}
 }
 
+/* The index of the LP role named name (sample_role_name), or
+ * SAMPLE_ROLE_COUNT. */
+static int role_named(const char *name)
+{
+	int p = 0;
+	while (p < SAMPLE_ROLE_COUNT && strcmp(sample_role_name(p), name) != 0)
+		p++;
+	return p;
+}
+
+/* Pivots an LP of role in st, or 1e9 (a check on it fails) when the
+ * role is unknown or ran no LP. */
+static double pivots_per_lp(const struct sample_lp_stats *st, int role)
+{
+	if (role >= SAMPLE_ROLE_COUNT || st[role].lps <= 0)
+		return 1e9;
+	return (double)st[role].iterations / (double)st[role].lps;
+}
+
 /* The published walls at the default depth: an independent implementation
  * accepts nearly all samples (docs/method.md, the end of "One sample").
  * At least 198 of 200 (all
@@ -183,16 +202,6 @@ static void ferris_tinloi(void)
  * And LP-min's dual infeasible start by shifted costs on wall 2 (141
  * interfaces; sample_lp.c, sws_build: walls of more than 100): 19.9
  * pivots an LP here, against 31.1 with artificial bounds before. */
-/* The index of the LP role named name (sample_role_name), or
- * SAMPLE_ROLE_COUNT. */
-static int role_named(const char *name)
-{
-	int p = 0;
-	while (p < SAMPLE_ROLE_COUNT && strcmp(sample_role_name(p), name) != 0)
-		p++;
-	return p;
-}
-
 static void acceptance(void)
 {
 	const char *files[] = {"walls/ferris-tinloi-1.yaml",
@@ -227,15 +236,11 @@ static void acceptance(void)
 		       count[SAMPLE_NUMERICAL]);
 		struct sample_lp_stats st[SAMPLE_ROLE_COUNT];
 		sample_ws_stats(ws, st);
-		double piv = 1e9;	/* no kinematic LP counted: fails */
-		if (kin < SAMPLE_ROLE_COUNT && st[kin].lps > 0)
-			piv = (double)st[kin].iterations / (double)st[kin].lps;
+		double piv = pivots_per_lp(st, kin);
 		tap_ok(piv <= 20, "%s: the kinematic LP from LP1's "
 		       "complementary basis: %.1f pivots an LP (<= 20)",
 		       files[f], piv);
-		piv = 1e9;	/* no LP-min counted: fails */
-		if (amin < SAMPLE_ROLE_COUNT && st[amin].lps > 0)
-			piv = (double)st[amin].iterations / (double)st[amin].lps;
+		piv = pivots_per_lp(st, amin);
 		if (f == 1)
 			tap_ok(piv <= 24, "%s: LP-min by shifted costs: %.1f "
 			       "pivots an LP (<= 24)", files[f], piv);
