@@ -142,6 +142,19 @@ void lp_clear(struct lp *p);
  * simplex finishes from there.  For re-solves of one objective after
  * bounds moved (the SLP's LP1 and LP2). */
 void lp_set_shift_costs(struct lp *p, int on);
+/* The basis factorization is computed afresh once it has taken
+ * `updates` updates that each add a factor to it (a pivot's update
+ * adds one unless nothing is left to eliminate); 0 is the solver's own
+ * rule.  Each factor is work for every later FTRAN and BTRAN, and a
+ * factorization afresh costs as much as some of them: which is cheaper
+ * depends on the problem's size and how many pivots its solves take
+ * (lp_glpk.c, glpk_set_refactor). */
+void lp_set_refactor(struct lp *p, int updates);
+/* ... and what it was set to (0 if never). */
+int lp_refactor(const struct lp *p);
+/* The updates that the factorization the solver holds has had since it
+ * was computed (0 when it holds none). */
+int lp_factor_updates(const struct lp *p);
 void lp_set_maximize(struct lp *p, int maximize);
 void lp_set_obj(struct lp *p, int col, double c);
 void lp_set_col_bounds(struct lp *p, int col, double lo, double hi);

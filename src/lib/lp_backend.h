@@ -38,6 +38,7 @@ struct lp {
 	/* lp_set_shift_costs: a dual simplex from a dual infeasible start
 	 * shifts costs instead of bounding variables artificially */
 	int shift_costs;
+	int refactor;		/* lp_set_refactor: 0 the solver's rule */
 	double *tb_obj;		/* ncols: the objective */
 	int *tb_fixed;		/* rows then columns it fixed (columns as
 				 * nrows + j) */
@@ -59,6 +60,8 @@ struct lp_type {
 	int (*alive)(const struct lp *p);
 	void (*clear)(struct lp *p);
 	void (*set_maximize)(struct lp *p, int maximize);
+	void (*set_refactor)(struct lp *p, int updates);
+	int (*factor_updates)(const struct lp *p);
 	int (*maximize)(const struct lp *p);
 	void (*set_obj)(struct lp *p, int col, double c);
 	double (*obj_coef)(const struct lp *p, int col);

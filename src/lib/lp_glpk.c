@@ -159,6 +159,9 @@ struct glpk_lp {
 
 #define Q(p) ((struct glpk_lp *)(p))
 #define CQ(p) ((const struct glpk_lp *)(p))
+/* GLPK's own nfs_max (glp_bfcp): updates of a factorization before it
+ * is computed afresh */
+#define GLPK_NFS_MAX 100
 
 /* The thread's GLPK environment (see the top). */
 static _Thread_local int tl_hooked;
@@ -577,6 +580,33 @@ static void glpk_crash_basis(struct lp *p)
 {
 	Q(p)->held = 0;
 	GUARD(p, glp_adv_basis(Q(p)->P, 0));
+}
+
+/* The factorization's updates (lp_set_refactor).  GLPK's default
+ * basis factorization is an LU with Forrest-Tomlin updates, F H V: each
+ * pivot's update appends a row factor to H (unless its spike leaves
+ * nothing to eliminate), which every FTRAN and BTRAN then applies, and
+ * changes V, until H holds nfs_max factors (100 by default) or a
+ * numerical check fails; then the next solve factorizes afresh.  GLPK
+ * keeps the factorization from one solve to the next, so on a problem
+ * re-solved a few pivots at a time H grows across solves: on Ferris &
+ * Tin-Loi wall 1, applying H and H' was 14 % of the instructions of a
+ * run (docs/performance.md, "The factorization's updates"). */
+static void glpk_set_refactor(struct lp *p, int updates)
+{
+	glp_bfcp b;
+	GUARD(p, {
+		glp_get_bfcp(Q(p)->P, &b);
+		b.nfs_max = updates > 0 ? updates : GLPK_NFS_MAX;
+		glp_set_bfcp(Q(p)->P, &b);
+	});
+}
+
+static int glpk_factor_updates(const struct lp *p)
+{
+	if (!alive(p) || !glp_bf_exists(CQ(p)->P))
+		return 0;
+	return glp_bf_updated(CQ(p)->P);
 }
 
 static enum lp_status map_status(glp_prob *P)
@@ -1213,6 +1243,8 @@ const struct lp_type lp_glpk = {
 	.alive = alive,
 	.clear = glpk_clear,
 	.set_maximize = glpk_set_maximize,
+	.set_refactor = glpk_set_refactor,
+	.factor_updates = glpk_factor_updates,
 	.maximize = glpk_maximize,
 	.set_obj = glpk_set_obj,
 	.obj_coef = glpk_obj_coef,

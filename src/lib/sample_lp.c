@@ -202,6 +202,11 @@ static void write_points(struct sample_ws *ws)
 /* LP-min's dual infeasible starts by shifted costs above this many
  * interfaces (sws_build) */
 #define AMIN_SHIFT_IFACES 100
+/* on walls of at most REFACTOR_IFACES interfaces, each problem's basis
+ * factorization is computed afresh once its updates have added
+ * REFACTOR_UPDATES factors, not GLPK's 100 (sws_build) */
+#define REFACTOR_IFACES 400
+#define REFACTOR_UPDATES 40
 
 /* The six problems, new.  The fixed part of the matrix is written first
  * and the points' part after it, as sws_refill() will write it again: GLPK
@@ -230,6 +235,20 @@ void sws_build(struct sample_ws *ws)
 	lp_set_shift_costs(ws->lp[LP1], 1);
 	lp_set_shift_costs(ws->lp[LP2], 1);
 	lp_set_shift_costs(ws->lp[AMIN], m > AMIN_SHIFT_IFACES);
+	/* the factorization's updates (lp.h, lp_set_refactor).  A sample's
+	 * LPs are re-solves of a few pivots each, and the updates pile up
+	 * across them: at 40 instead of 100, 14 % fewer instructions a
+	 * sample on Ferris & Tin-Loi wall 1, 21 % on the demo, 14 % on wall
+	 * 2, and 2-5 % less time on walls/body-100.yaml (286 interfaces)
+	 * and 2 % on a 415-interface wall.  On larger walls a factorization
+	 * costs more than the updates it saves: 3-8 % more time at 486 and
+	 * 543 interfaces (tests/data/body-195.yaml), and walls/
+	 * body-1000.yaml's set-up, whose solves from the slack basis take
+	 * thousands of pivots, 58 % more (docs/performance.md, "The
+	 * factorization's updates") */
+	if (m <= REFACTOR_IFACES)
+		for (int p = 0; p < ROLES; p++)
+			lp_set_refactor(ws->lp[p], REFACTOR_UPDATES);
 	write_fixed(ws);
 	write_points(ws);
 }

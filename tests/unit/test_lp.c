@@ -188,6 +188,61 @@ static void shifted_costs(void)
 	lp_free(p);
 }
 
+/* A dense LP: max sum (1 + j/100) x_j s.t. sum_j a_ij x_j <= 1 + i/10,
+ * x >= 0, with every a_ij in [1, 2). */
+static struct lp *dense(int n)
+{
+	struct lp *p = lp_new(S, n, n);
+	int cols[64];
+	double v[64];
+	for (int i = 0; i < n; i++) {
+		for (int j = 0; j < n; j++) {
+			cols[j] = j;
+			v[j] = 1 + (double)((7 * i + 13 * j + i * j) % 11) / 10;
+		}
+		lp_set_row(p, i, n, cols, v);
+		lp_set_row_bounds(p, i, -HUGE_VAL, 1 + i / 10.0);
+	}
+	for (int j = 0; j < n; j++) {
+		lp_set_col_bounds(p, j, 0, HUGE_VAL);
+		lp_set_obj(p, j, 1 + j / 100.0);
+	}
+	lp_set_maximize(p, 1);
+	return p;
+}
+
+/* lp_set_refactor: the factorization is computed afresh after at most
+ * that many updates, across solves, and the optimum is the same. */
+static void refactor(void)
+{
+	enum { N = 30 };
+	struct lp *a = dense(N), *b = dense(N);
+	lp_set_refactor(b, 3);
+	tap_ok(lp_refactor(a) == 0 && lp_refactor(b) == 3,
+	       "lp_refactor: 0 unless set, else what was set");
+	int most_a = 0, most_b = 0, ok = 1;
+	for (int k = 0; k < 6; k++) {
+		if (k > 0)	/* re-solves after bounds moved */
+			for (int i = k; i < N; i += 3) {
+				lp_set_row_bounds(a, i, -HUGE_VAL, 2 + (i + k) % 5 / 7.0);
+				lp_set_row_bounds(b, i, -HUGE_VAL, 2 + (i + k) % 5 / 7.0);
+			}
+		enum lp_method m = k == 0 ? LP_PRIMAL : LP_DUAL;
+		ok = ok && lp_solve(a, m) == LP_OPTIMAL &&
+		     lp_solve(b, m) == LP_OPTIMAL &&
+		     fabs(lp_obj(a) - lp_obj(b)) <= 1e-12 * fabs(lp_obj(a));
+		most_a = lp_factor_updates(a) > most_a ? lp_factor_updates(a) : most_a;
+		most_b = lp_factor_updates(b) > most_b ? lp_factor_updates(b) : most_b;
+	}
+	tap_ok(ok, "six solves of a dense 30 x 30 LP: the same optimum with "
+		   "the factorization afresh after 3 updates as with the default");
+	tap_ok(most_a > 3 && most_b <= 3,
+	       "updates held: at most 3 when set (%d), more by default (%d)",
+	       most_b, most_a);
+	lp_free(a);
+	lp_free(b);
+}
+
 int main(void)
 {
 	S = lp_solver_new(NULL);
@@ -248,6 +303,7 @@ int main(void)
 
 	artificial_bounds();
 	shifted_costs();
+	refactor();
 
 	/* a stop request while problems are written (the workbench stops
 	 * its workers at every edit): a problem written or made after it is
