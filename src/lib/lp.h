@@ -153,7 +153,7 @@ void lp_set_refactor(struct lp *p, int updates);
 /* ... and what it was set to (0 if never). */
 int lp_refactor(const struct lp *p);
 /* The updates that the factorization the solver holds has had since it
- * was computed (0 when it holds none). */
+ * was computed (0 when it holds none); for tests (test_lp). */
 int lp_factor_updates(const struct lp *p);
 void lp_set_maximize(struct lp *p, int maximize);
 void lp_set_obj(struct lp *p, int col, double c);
