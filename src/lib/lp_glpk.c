@@ -159,8 +159,8 @@ struct glpk_lp {
 
 #define Q(p) ((struct glpk_lp *)(p))
 #define CQ(p) ((const struct glpk_lp *)(p))
-/* GLPK's own nfs_max (glp_bfcp): updates of a factorization before it
- * is computed afresh */
+/* GLPK's own nfs_max (glp_bfcp): the factors that a factorization's
+ * updates add before it is computed afresh (glpk_set_refactor) */
 #define GLPK_NFS_MAX 100
 
 /* The thread's GLPK environment (see the top). */

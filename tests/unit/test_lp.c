@@ -211,8 +211,9 @@ static struct lp *dense(int n)
 	return p;
 }
 
-/* lp_set_refactor: the factorization is computed afresh after at most
- * that many updates, across solves, and the optimum is the same. */
+/* lp_set_refactor: the factorization is computed afresh once its
+ * updates have added that many factors, across solves (on a dense LP
+ * every update adds one), and the optimum is the same. */
 static void refactor(void)
 {
 	enum { N = 30 };
