@@ -167,7 +167,8 @@ void lp_set_row(struct lp *p, int row, int n, const int *cols,
 		const double *vals);
 
 /* Solve from the current basis.  If the simplex fails (singular basis,
- * iteration limit) it is retried once from an advanced basis.  A dual
+ * iteration limit) it is retried from an advanced basis, and then from
+ * the slack basis by the primal simplex.  A dual
  * simplex solve after bound changes only first tries the basis of the
  * last solve as it is (src/lib/lp_glpk.c, "Held bases"). */
 enum lp_status lp_solve(struct lp *p, enum lp_method m);

@@ -201,4 +201,13 @@ from_starts face auto slack-primal -- walls/facade.yaml --friction 0.8 \
 	--replay tests/data/facade-mu08-seed7-s0.csv
 check "facade at friction 0.8, seed 7, sample 0 (numerical before: LP2's load off LP1's): accepted from auto and slack-primal, lambda_min the same to 1e-9" \
 	one_load --le $LE "$tmp/face-auto.csv" "$tmp/face-slack-primal.csv"
+# A wall with blocks that rest on no joint, under a body load inclined
+# upwards (tests/data/hang-up-s13w3.yaml), seed 1, sample 9: GLPK could
+# not factorize LP-max's start and failed from its advanced basis, and
+# the sample was `numerical`; from the slack basis, the third attempt,
+# LP-max is infeasible (src/lib/lp_glpk.c, glpk_solve).
+"$bin" run tests/data/hang-up-s13w3.yaml --replay tests/data/hang-up-s13w3-s9.csv \
+	--threads 2 --samples "$tmp/hang-up.csv" >/dev/null 2>&1
+check "an opening without a lintel, load inclined up, sample 9 (numerical before: no basis GLPK could use): no_equilibrium" \
+	awk -F, 'NR > 1 { n++; if ($2 != "no_equilibrium") bad = 1 } END { exit bad || n != 1 }' "$tmp/hang-up.csv"
 tap_end
