@@ -121,15 +121,9 @@ int lp_alive(const struct lp *p) { return p && T(p)->alive(p); }
 void lp_clear(struct lp *p) { T(p)->clear(p); }
 void lp_set_maximize(struct lp *p, int maximize) { T(p)->set_maximize(p, maximize); }
 void lp_set_shift_costs(struct lp *p, int on) { p->shift_costs = on; }
-int lp_refactor(const struct lp *p) { return p->refactor; }
+void lp_set_refactor(struct lp *p, int updates) { T(p)->set_refactor(p, updates); }
 int lp_factor_updates(const struct lp *p) { return T(p)->factor_updates(p); }
 void lp_set_obj(struct lp *p, int col, double c) { T(p)->set_obj(p, col, c); }
-
-void lp_set_refactor(struct lp *p, int updates)
-{
-	p->refactor = updates;
-	T(p)->set_refactor(p, updates);
-}
 
 void lp_set_col_bounds(struct lp *p, int col, double lo, double hi)
 {

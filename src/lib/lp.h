@@ -150,8 +150,6 @@ void lp_set_shift_costs(struct lp *p, int on);
  * depends on the problem's size and how many pivots its solves take
  * (lp_glpk.c, glpk_set_refactor). */
 void lp_set_refactor(struct lp *p, int updates);
-/* ... and what it was set to (0 if never). */
-int lp_refactor(const struct lp *p);
 /* The updates that the factorization the solver holds has had since it
  * was computed (0 when it holds none); for tests (test_lp). */
 int lp_factor_updates(const struct lp *p);

@@ -38,7 +38,6 @@ struct lp {
 	/* lp_set_shift_costs: a dual simplex from a dual infeasible start
 	 * shifts costs instead of bounding variables artificially */
 	int shift_costs;
-	int refactor;		/* lp_set_refactor: 0 the solver's rule */
 	double *tb_obj;		/* ncols: the objective */
 	int *tb_fixed;		/* rows then columns it fixed (columns as
 				 * nrows + j) */

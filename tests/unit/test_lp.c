@@ -219,8 +219,6 @@ static void refactor(void)
 	enum { N = 30 };
 	struct lp *a = dense(N), *b = dense(N);
 	lp_set_refactor(b, 3);
-	tap_ok(lp_refactor(a) == 0 && lp_refactor(b) == 3,
-	       "lp_refactor: 0 unless set, else what was set");
 	int most_a = 0, most_b = 0, ok = 1;
 	for (int k = 0; k < 6; k++) {
 		if (k > 0)	/* re-solves after bounds moved */
