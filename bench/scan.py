@@ -12,7 +12,7 @@ each on one thread, two walls at a time, and prints one line a wall: its
 blocks and interfaces, which of its blocks hang (the
 `check` warning, docs/method.md, "What the method cannot answer: blocks
 that hang on friction"), the accepted count and the rejections by reason.
-The walls depend only on SEED: docs/method.md's scan is seeds 1-9.
+The walls depend only on SEED: docs/method.md reports seeds 1-17.
 
 --lintels: each opening gets a lintel, one block in place of the blocks
 of the course just above it that reach over the opening's blocks (a

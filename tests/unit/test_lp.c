@@ -11,6 +11,7 @@
  * b2)/5, the optimum is x + y = (2 b1 + b2)/5 while both are >= 0.  For
  * b1 > 3 b2 row 1 is slack and the optimum is x = 0, y = b2.
  */
+#include <assert.h>
 #include <math.h>
 #include <stdatomic.h>
 
@@ -189,12 +190,14 @@ static void shifted_costs(void)
 }
 
 /* A dense LP: max sum (1 + j/100) x_j s.t. sum_j a_ij x_j <= 1 + i/10,
- * x >= 0, with every a_ij in [1, 2). */
+ * x >= 0, with every a_ij in [1, 2); n <= DENSE_MAX. */
+enum { DENSE_MAX = 64 };
 static struct lp *dense(int n)
 {
+	assert(n <= DENSE_MAX);
 	struct lp *p = lp_new(S, n, n);
-	int cols[64];
-	double v[64];
+	int cols[DENSE_MAX];
+	double v[DENSE_MAX];
 	for (int i = 0; i < n; i++) {
 		for (int j = 0; j < n; j++) {
 			cols[j] = j;
