@@ -385,9 +385,16 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",
 		       (double)t->iterations / (double)t->samples,
 		       (double)t->lps / (double)t->samples);
-	printf("speed        %.1f samples/s (%.2f s)\n",
-	       r->elapsed > 0 ? (double)t->samples / r->elapsed : 0.0,
-	       r->elapsed);
+	/* seconds a sample where samples are slower than one a second (a
+	 * wall of a thousand blocks: "0.0 samples/s" said nothing), as the
+	 * workbench's speed line does */
+	double rate = r->elapsed > 0 ? (double)t->samples / r->elapsed : 0.0;
+	if (t->samples > 0 && rate < 1)
+		printf("speed        %.1f s a sample (%.2f s)\n",
+		       r->elapsed / (double)t->samples, r->elapsed);
+	else
+		printf("speed        %.1f samples/s (%.2f s)\n", rate,
+		       r->elapsed);
 	if (t->nmech > 0)
 		print_families(w, t);
 	if (r->a->samples)

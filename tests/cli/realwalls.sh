@@ -42,7 +42,8 @@ N=${SLIPWALL_REALWALLS_SAMPLES:-20}
 LE=1e-7
 
 # from_starts NAME START... -- RUN-ARGS...: `run RUN-ARGS` once per LP
-# start, one thread each, side by side; samples in $tmp/NAME-START.csv
+# start, one thread each, side by side; samples in $tmp/NAME-START.csv,
+# the summary in $tmp/NAME-START.txt
 from_starts() {
 	local name=$1 s starts=()
 	shift
@@ -53,7 +54,7 @@ from_starts() {
 	shift
 	for s in "${starts[@]}"; do
 		SLIPWALL_LP_START=$s "$bin" run "$@" --threads 1 \
-			--samples "$tmp/$name-$s.csv" >/dev/null 2>&1 &
+			--samples "$tmp/$name-$s.csv" >"$tmp/$name-$s.txt" 2>&1 &
 	done
 	wait
 }
@@ -174,6 +175,12 @@ from_starts bay auto support -- tests/data/bay-2w-mu065.yaml \
 	--replay tests/data/bay-2w-mu065-seed11-s17.csv
 check "bay with two windows at friction 0.65, seed 11, sample 17: accepted from auto by the fourth attempt, from support, lambda_min the same to 1e-9" \
 	one_load --its 4000 0 --le $LE "$tmp"/bay-auto.csv "$tmp"/bay-support.csv
+# That one sample takes more than 4,000 evaluations of the map, seconds
+# on any machine: the summary gives its speed in seconds a sample, not
+# as "0.0 samples/s".
+check "a sample slower than a second: the summary's speed line is in seconds a sample" \
+	awk '/^speed/ { n++; if ($3 == "s" && $4 == "a" && $5 == "sample" && $2 + 0 >= 1) ok = 1; print "#   " $0 }
+		END { exit !(n == 1 && ok) }' "$tmp/bay-auto.txt"
 # The facade at friction 1.0, seed 1, samples 3 and 9
 # (tests/data/facade-mu1-seed1-vw.csv): their SLPs converge, and their
 # virtual-work residuals (1.44e-8 of the load's work, on the dual path
