@@ -145,11 +145,62 @@ static void set_points(struct sample_ws *ws, const struct sample_draw *d)
 	sws_start_bases(ws);
 }
 
-/* Solve one sample at the classical contact (xi = 0, 1) from the freshly
- * built problems and keep the basis each role ended at: the start of
- * every later sample.  Deterministic: it depends on the wall only.  On
- * a large wall it skips the tie-breaks (sample_tie.c's tiebreak()): nothing of it is
- * reported. */
+/* A sample's result, reset, and its problems built for its draw d;
+ * forces: it reports its stress field. */
+static void begin(struct sample_ws *ws, const struct sample_draw *d,
+		  int forces, struct sample_result *r)
+{
+	ws->forces = forces;
+	r->status = SAMPLE_NUMERICAL;
+	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
+	r->iterations = 0;
+	r->converged = 0;
+	r->lps = 0;
+	r->vw_residual = NAN;
+	set_points(ws, d);
+}
+
+/* A large wall's canonical sample (AUTO_LARGE_IFACES), as far as its
+ * samples use its bases: LP-max (without its tie-break, sample_tie.c),
+ * the standing check and the SLP's first LP1, at LP-max's capacities.
+ * Its SLP path, mechanism and LP-min were 14 of the 19 s of
+ * walls/body-1000.yaml's set-up; a sample's LP2 and mechanism start
+ * from LP1's optimum there (sws_role_start, lp2_from_lp1, kin_from_lp1),
+ * and LP1's basis at the path's end saved its samples no more than LP1's
+ * first basis does (docs/performance.md, "A large wall's set-up").
+ * LP-min's start: its optimum for the mechanism of LP1's field, found by
+ * one dual simplex solve from LP-max's optimum, where that solve has one
+ * (walls/large.yaml, pulled at one block: every sample's mechanism is
+ * that one, and its LP-min then takes 378 pivots, against 10,150 from
+ * LP-max's basis); otherwise LP-max's optimum itself (walls/
+ * body-1000.yaml, whose first LP1 is far from an onset state: from it
+ * LP-min took 6,654-8,289 pivots a sample, from the basis of the whole
+ * canonical sample's LP-min 7,864-8,131). */
+static void setup_large(struct sample_ws *ws, const struct sample_draw *d,
+			const struct sample_opts *o, struct sample_result *r)
+{
+	begin(ws, d, o->forces, r);
+	enum sample_status st = sws_lp_max(ws, r, NULL);
+	if (st == SAMPLE_ACCEPTED)
+		st = sws_standing(ws, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = sws_slp_first_lp1(ws, o, r);
+	if (st == SAMPLE_ACCEPTED)
+		st = sws_onset(ws, o, SWS_ZERO_DYING, r);
+	struct lp_basis amax = {0};
+	lp_basis_save(ws->lp[AMAX], &amax);
+	lp_basis_load(ws->lp[AMIN], &amax);
+	if (st != SAMPLE_ACCEPTED || sws_lp_min_once(ws, r) != LP_OPTIMAL)
+		lp_basis_load(ws->lp[AMIN], &amax);
+	lp_basis_free(&amax);
+}
+
+/* The canonical sample (xi = 0, 1, mean friction), solved from the
+ * freshly built problems; each role keeps the basis it ended at: the
+ * start of every later sample (sws_start_bases).  Deterministic: it
+ * depends on the wall only, and nothing of it is reported.  A small wall
+ * solves the whole sample, a large one what its samples use
+ * (setup_large). */
 static void canonical_bases(struct sample_ws *ws)
 {
 	struct sample_opts o;
@@ -160,7 +211,10 @@ static void canonical_bases(struct sample_ws *ws)
 	draw_init(&d, ws->w);
 	draw_mean(&d, ws->w);	/* the classical contact, mean friction */
 	ws->setup = 1;
-	sample_run(ws, &d, &o, &r);
+	if (ws->large)
+		setup_large(ws, &d, &o, &r);
+	else
+		sample_run(ws, &d, &o, &r);
 	ws->setup = 0;
 	/* interrupted (sample_lp_config.stop): the problems are dead and the
 	 * workspace is only fit to be freed; lp_basis_save skips them */
@@ -422,21 +476,6 @@ int sample_ws_interrupted(const struct sample_ws *ws)
 void sample_thread_done(void)
 {
 	lp_thread_done();
-}
-
-/* A sample's result, reset, and its problems built for its draw d;
- * forces: it reports its stress field. */
-static void begin(struct sample_ws *ws, const struct sample_draw *d,
-		  int forces, struct sample_result *r)
-{
-	ws->forces = forces;
-	r->status = SAMPLE_NUMERICAL;
-	r->lambda_lpmax = r->lambda_max = r->lambda_min = NAN;
-	r->iterations = 0;
-	r->converged = 0;
-	r->lps = 0;
-	r->vw_residual = NAN;
-	set_points(ws, d);
 }
 
 /* After step 3 found a mechanism (st accepted): LP-min and the virtual

@@ -340,11 +340,9 @@ static double motion_threshold(const struct sample_ws *ws)
 	return fmax(TOL_MOTION * s, lp_feasibility_tol(LP_DUAL));
 }
 
-/* Step 5: LP-min with the yield conditions that the mechanism uses held
- * at their limits, by the simplex method m from the basis AMIN holds.
- * Leaves the stress field in ws->x. */
-enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
-				 struct sample_result *r, enum lp_status *lps)
+/* LP-min's problem for the mechanism in ws->dn, ws->dt: LP-max's with the
+ * yield conditions that the mechanism uses held at their limits. */
+static void amin_fix(struct sample_ws *ws)
 {
 	int m = ws->m;
 	double thr = motion_threshold(ws);
@@ -363,6 +361,21 @@ enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
 				lp_set_col_bounds(P, ACOL_BETA(k, e), 0, 0);
 		}
 	}
+}
+
+enum lp_status sws_lp_min_once(struct sample_ws *ws, struct sample_result *r)
+{
+	amin_fix(ws);
+	return sws_counted(ws, AMIN, LP_DUAL, NULL, r);
+}
+
+/* Step 5: LP-min, by the simplex method method from the basis AMIN
+ * holds.  Leaves the stress field in ws->x. */
+enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
+				 struct sample_result *r, enum lp_status *lps)
+{
+	struct lp *P = ws->lp[AMIN];
+	amin_fix(ws);
 	enum lp_status s = sws_solve(ws, AMIN, method, r);
 	if (lps)
 		*lps = s;

@@ -274,6 +274,20 @@ static enum sample_status slp_map(struct sample_ws *ws,
 	return SAMPLE_ACCEPTED;
 }
 
+enum sample_status sws_slp_first_lp1(struct sample_ws *ws,
+				     const struct sample_opts *o,
+				     struct sample_result *r)
+{
+	struct sample_opts lp1 = *o;
+	double lam, diff;
+	int failed;
+	lp1.stabilise = 0;
+	enum sample_status st = slp_map(ws, &lp1, r, &lam, &diff, &failed, 1);
+	r->iterations = 1;
+	r->lambda_max = lam;
+	return st;
+}
+
 /* The bases LP1 and LP2 ended at: while they stay, the SLP's map is one
  * affine piece. */
 static unsigned long slp_piece(const struct sample_ws *ws)

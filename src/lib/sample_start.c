@@ -103,10 +103,9 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * Every wall starts the standing check from the support basis
  * (support.c): on the 1,020-block wall 35.5 pivots, 2,092 from the
  * canonical basis (on walls of at most 1,000 interfaces since 29
- * November 2026: below); large walls also start the associative
- * problems of the canonical sample from it, solved when the workspace
- * is made (LP-max 3,322 pivots from the support basis, 13,751 from the
- * slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
+ * November 2026: below); large walls also start the canonical
+ * sample's LP-max from it, solved when the workspace is made (3,322
+ * pivots from the support basis, 13,751 from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
  * On walls of at most that many interfaces, and on larger ones under
  * a body load, LP2's start, whichever it is, is loaded and then
  * replaced: each path of the SLP starts its first LP2 from LP1's
@@ -153,10 +152,11 @@ enum sample_start sws_role_start(const struct sample_ws *ws, int p)
 	 * and 178.5 on tests/data/body-195.yaml (docs/performance.md, "The
 	 * standing check from the support basis, and LP-min by shifted
 	 * costs"); its answer is a verdict, feasible or not, and no field,
-	 * so the start cannot move a sample.  The associative problems of
-	 * a large wall's canonical sample start from it too: it has no
-	 * canonical basis yet (they would start from the slack basis) */
-	if (p == STAND || (ws->large && ws->setup && p <= AMIN))
+	 * so the start cannot move a sample.  A large wall's canonical
+	 * sample starts LP-max from it too: it has no canonical basis yet
+	 * (it would start from the slack basis); its LP-min, where it runs
+	 * one, starts from LP-max's optimum (sample.c, setup_large) */
+	if (p == STAND || (ws->large && ws->setup && p == AMAX))
 		return SAMPLE_START_SUPPORT;
 	return SAMPLE_START_CANONICAL;
 }

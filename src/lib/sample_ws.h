@@ -201,6 +201,12 @@ void sws_kin_allow(struct sample_ws *ws, int k, unsigned bits);
 /* sample_slp.c: step 2b, the SLP */
 enum sample_status sws_slp(struct sample_ws *ws, const struct sample_opts *o,
 			   struct sample_result *r);
+/* sample_slp.c: the SLP's first evaluation by LP1 alone, at the
+ * capacities of LP-max's field: its field into ws->x, its load into
+ * r->lambda_max (a large wall's set-up: sample.c, setup_large) */
+enum sample_status sws_slp_first_lp1(struct sample_ws *ws,
+				     const struct sample_opts *o,
+				     struct sample_result *r);
 
 /* sample_onset.c: LP-max, standing, the mechanism, onset, LP-min, the
  * virtual work, the export */
@@ -215,6 +221,10 @@ enum sample_status sws_mechanism(struct sample_ws *ws, struct sample_result *r);
 enum sws_force_zero { SWS_ZERO_DYING, SWS_ZERO_STRICT };
 enum sample_status sws_onset(struct sample_ws *ws, const struct sample_opts *o,
 			     enum sws_force_zero z, struct sample_result *r);
+/* LP-min's first solve alone, the dual simplex from the basis AMIN holds,
+ * without sws_solve's re-check of a "no" (a large wall's set-up, which
+ * wants LP-min's basis and no verdict: sample.c, setup_large) */
+enum lp_status sws_lp_min_once(struct sample_ws *ws, struct sample_result *r);
 /* LP-min; its LP's verdict also in *lps (may be NULL) */
 enum sample_status sws_lp_min(struct sample_ws *ws, enum lp_method method,
 			      struct sample_result *r, enum lp_status *lps);

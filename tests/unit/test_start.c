@@ -1,14 +1,15 @@
 /*
  * test_start.c - "One answer per sample" (docs/method.md): a sample is a
  * function of its contact positions alone, whatever the LP solver's path.
- * Every sample is solved by eight workspaces whose LPs start from
+ * Every sample is solved by nine workspaces whose LPs start from
  * different bases (SLIPWALL_LP_START's values, which drive the standing
  * check and the SLP's LP1 and LP2, LP-max and LP-min keeping `auto`'s
  * path and the mechanism starting from LP1's complementary basis: the
  * default `auto`, the
  * slack basis by the primal and by the dual simplex, GLPK's crash basis,
  * the canonical bases, the previous sample's bases, the support basis;
- * `auto` as it starts walls of more than 1,000 interfaces; and `auto`
+ * `auto` as it starts walls of more than 1,000 interfaces (whose set-up
+ * stops after the SLP's first LP1: setup_roles); and `auto`
  * from the set-up of another wall of the same shape, the workbench's
  * start after an edit: the wall with its friction scaled by 0.7,
  * docs/design.md "The shared set-up"), and must
@@ -155,6 +156,47 @@ static void report(const char *what, const struct tally *t)
 	       "(%ld differ)", what, t->mechanism);
 }
 
+/* The role named name (sample_role_name), or -1. */
+static int role_index(const char *name)
+{
+	for (int p = 0; p < SAMPLE_ROLE_COUNT; p++)
+		if (!strcmp(sample_role_name(p), name))
+			return p;
+	return -1;
+}
+
+/* What each set-up solved, before any sample (sample.c,
+ * canonical_bases): a small wall's the whole canonical sample, its
+ * SLP's LP2 and its LP-min among them; a large wall's LP-max, the
+ * standing check, the SLP's first LP1 and at most one LP-min at its
+ * mechanism (setup_large), and every sample of
+ * `auto (large walls)` must still give the default start's answer
+ * (one()). */
+static void setup_roles(struct sample_ws **ws, const char *path)
+{
+	struct sample_lp_stats dflt[SAMPLE_ROLE_COUNT], big[SAMPLE_ROLE_COUNT];
+	sample_ws_stats(ws[0], dflt);
+	sample_ws_stats(ws[AUTO_LARGE], big);
+	int lp1 = role_index("LP1"), lp2 = role_index("LP2"),
+	    amin = role_index("LP-min"), kin = role_index("kinematic"),
+	    amax = role_index("LP-max");
+	if (lp1 < 0 || lp2 < 0 || amin < 0 || kin < 0 || amax < 0) {
+		tap_ok(0, "%s: a role's name is not sample_role_name's", path);
+		return;
+	}
+	tap_ok(dflt[lp2].lps > 0 && dflt[amin].lps > 0 && dflt[kin].lps > 0,
+	       "%s: the set-up solves the canonical sample (%ld LP2, %ld "
+	       "LP-min, %ld kinematic)", path, dflt[lp2].lps, dflt[amin].lps,
+	       dflt[kin].lps);
+	tap_ok(big[amax].lps == 1 && big[lp1].lps == 1 && big[lp2].lps == 0 &&
+	       big[amin].lps <= 1 && big[kin].lps <= 1,
+	       "%s: a large wall's set-up: its first LP1, no SLP path, at "
+	       "most one LP-min (%ld LP-max, %ld LP1, %ld LP2, %ld LP-min, "
+	       "%ld kinematic)", path,
+	       big[amax].lps, big[lp1].lps, big[lp2].lps, big[amin].lps,
+	       big[kin].lps);
+}
+
 /* The single-solution methods at the classical contact: standard (its
  * load factor; its mechanism, LP-max's dual, is one of several when
  * LP-max is primal degenerate) and gilbert (the SLP from the standard
@@ -208,6 +250,7 @@ static void wall_file(const char *path, long n)
 	struct sample_ws *ws[NSTART];
 	struct tally t = {0};
 	open_all(ws, w);
+	setup_roles(ws, path);
 	classical(ws, w, path);
 	for (long i = 0; i < n; i++)
 		one(ws, w, w->seed, (unsigned long)i, &t, path);
