@@ -164,10 +164,12 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
  * samples use its bases: LP-max (without its tie-break, sample_tie.c),
  * the standing check and the SLP's first LP1, at LP-max's capacities.
  * Its SLP path, mechanism and LP-min were 14 of the 19 s of
- * walls/body-1000.yaml's set-up; a sample's LP2 and mechanism start
- * from LP1's optimum there (sws_role_start, lp2_from_lp1, kin_from_lp1),
- * and LP1's basis at the path's end saved its samples no more than LP1's
- * first basis does (docs/performance.md, "A large wall's set-up").
+ * walls/body-1000.yaml's set-up.  A sample's LP2 starts from the slack
+ * basis there, or under a body load from its own LP1's optimum
+ * (sws_role_start, lp2_from_lp1), and its mechanism from LP1's
+ * complementary basis (kin_from_lp1); and LP1's basis at the path's end
+ * saved the samples no more than LP1's first basis does
+ * (docs/performance.md, "A large wall's set-up").
  * LP-min's start: its optimum for the mechanism of LP1's field, found by
  * one dual simplex solve from LP-max's optimum, where that solve has one
  * (walls/large.yaml, pulled at one block: every sample's mechanism is

@@ -363,6 +363,7 @@ static void amin_fix(struct sample_ws *ws)
 	}
 }
 
+/* LP-min's first solve alone (sample_ws.h). */
 enum lp_status sws_lp_min_once(struct sample_ws *ws, struct sample_result *r)
 {
 	amin_fix(ws);

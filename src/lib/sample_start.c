@@ -105,7 +105,8 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * canonical basis (on walls of at most 1,000 interfaces since 29
  * November 2026: below); large walls also start the canonical
  * sample's LP-max from it, solved when the workspace is made (3,322
- * pivots from the support basis, 13,751 from the slack basis).  AUTO_LARGE_IFACES is at the top of sample.c.
+ * pivots from the support basis, 13,751 from the slack basis).
+ * AUTO_LARGE_IFACES is at the top of sample.c.
  * On walls of at most that many interfaces, and on larger ones under
  * a body load, LP2's start, whichever it is, is loaded and then
  * replaced: each path of the SLP starts its first LP2 from LP1's
