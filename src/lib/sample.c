@@ -160,6 +160,20 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 	set_points(ws, d);
 }
 
+/* A sample's first steps (docs/method.md, "One sample"): its problems
+ * for the draw d, LP-max and the standing check. */
+static enum sample_status first_steps(struct sample_ws *ws,
+				      const struct sample_draw *d,
+				      const struct sample_opts *o,
+				      struct sample_result *r)
+{
+	begin(ws, d, o->forces, r);
+	enum sample_status st = sws_lp_max(ws, r, NULL);
+	if (st == SAMPLE_ACCEPTED)
+		st = sws_standing(ws, r);
+	return st;
+}
+
 /* A large wall's canonical sample (AUTO_LARGE_IFACES), as far as its
  * samples use its bases: LP-max (without its tie-break, sample_tie.c),
  * the standing check and the SLP's first LP1, at LP-max's capacities.
@@ -181,10 +195,7 @@ static void begin(struct sample_ws *ws, const struct sample_draw *d,
 static void setup_large(struct sample_ws *ws, const struct sample_draw *d,
 			const struct sample_opts *o, struct sample_result *r)
 {
-	begin(ws, d, o->forces, r);
-	enum sample_status st = sws_lp_max(ws, r, NULL);
-	if (st == SAMPLE_ACCEPTED)
-		st = sws_standing(ws, r);
+	enum sample_status st = first_steps(ws, d, o, r);
 	if (st == SAMPLE_ACCEPTED)
 		st = sws_slp_first_lp1(ws, o, r);
 	if (st == SAMPLE_ACCEPTED)
@@ -535,10 +546,7 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 void sample_run(struct sample_ws *ws, const struct sample_draw *d,
 		const struct sample_opts *o, struct sample_result *r)
 {
-	begin(ws, d, o->forces, r);
-	enum sample_status st = sws_lp_max(ws, r, NULL);
-	if (st == SAMPLE_ACCEPTED)
-		st = sws_standing(ws, r);
+	enum sample_status st = first_steps(ws, d, o, r);
 	if (st == SAMPLE_ACCEPTED)
 		st = sws_slp(ws, o, r);
 	if (st == SAMPLE_ACCEPTED)
