@@ -284,7 +284,8 @@ enum sample_status sws_slp_first_lp1(struct sample_ws *ws,
 	lp1.stabilise = 0;
 	enum sample_status st = slp_map(ws, &lp1, r, &lam, &diff, &failed, 1);
 	r->iterations = 1;
-	r->lambda_max = lam;
+	if (st == SAMPLE_ACCEPTED)	/* lam is set only then */
+		r->lambda_max = lam;
 	return st;
 }
 
