@@ -80,9 +80,11 @@ void lp_solver_fault(struct lp_solver *s, long every, enum lp_status as)
 	s->fault_count = 0;
 }
 
-void lp_solver_iteration_limit(struct lp_solver *s, int limit)
+int lp_solver_iteration_limit(struct lp_solver *s, int limit)
 {
+	int was = s->cfg.iteration_limit;
 	s->cfg.iteration_limit = limit > 0 ? limit : 0;
+	return was;
 }
 
 void lp_thread_done(void)

@@ -68,9 +68,12 @@ struct lp_config {
 	 * error (problems dead, LP_ERROR; lp_glpk.c, "Out of memory").
 	 * The first solver of a thread sets it for the thread. */
 	int mem_limit_mb;
-	/* For tests: the simplex's iteration limit (0: the default,
-	 * 50,000 + 50 (rows + columns)).  A solve that reaches it is
-	 * retried once from an advanced basis, then LP_FAILED. */
+	/* The simplex's iteration limit (0: the default, 50,000 + 50
+	 * (rows + columns)).  A solve that reaches the default is retried
+	 * from an advanced basis and then from the slack basis, as any
+	 * start the simplex cannot leave; one that reaches a limit set
+	 * here is LP_FAILED at once: the caller wanted no more pivots
+	 * (tests; a large wall's set-up, sample.c setup_large). */
 	int iteration_limit;
 };
 void lp_config_default(struct lp_config *c);
@@ -112,10 +115,12 @@ typedef void (*lp_progress_fn)(void *ctx, double incumbent, double bound);
 void lp_solver_progress(struct lp_solver *s, lp_progress_fn fn, void *ctx);
 /* The solver's last line of text (an error's, for one). */
 const char *lp_solver_message(const struct lp_solver *s);
-/* For tests: change the fault injection and iteration limit of a made
- * solver (its fault count starts again from 0). */
+/* For tests: change the fault injection of a made solver (its fault
+ * count starts again from 0). */
 void lp_solver_fault(struct lp_solver *s, long every, enum lp_status as);
-void lp_solver_iteration_limit(struct lp_solver *s, int limit);
+/* Set the simplex's iteration limit of a made solver (lp_config's
+ * iteration_limit; 0: the default); returns the limit it had. */
+int lp_solver_iteration_limit(struct lp_solver *s, int limit);
 /* The calling thread is done with LP solvers (see the top). */
 void lp_thread_done(void);
 

@@ -617,6 +617,13 @@ static int simplex_failed(int rc)
 	       rc == GLP_EFAIL || rc == GLP_EITLIM;
 }
 
+/* glp_simplex reached an iteration limit that the caller set: final, no
+ * solve after it (lp.h, lp_config's iteration_limit) */
+static int capped(const struct lp_solver *s, int rc)
+{
+	return rc == GLP_EITLIM && s->cfg.iteration_limit > 0;
+}
+
 static enum lp_status map_status(glp_prob *P)
 {
 	switch (glp_get_status(P)) {
@@ -1006,7 +1013,8 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 			pp.meth = GLP_PRIMAL;
 			pp.tol_bnd = glpk_feasibility_tol(LP_PRIMAL);
 			rc = glp_simplex(q->P, &pp);
-		} else if (!(rc == 0 && status == GLP_NOFEAS)) {
+		} else if (!(rc == 0 && status == GLP_NOFEAS) &&
+			   !capped(s, rc)) {
 			/* (no feasible point is a verdict whatever the costs)
 			 * anything else: on from there with the own costs */
 			rc = glp_simplex(q->P, &parm);
@@ -1014,7 +1022,8 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	}
 	if (nart) {
 		s->count.art++;
-		if (art_restore(q, rc == 0 && glp_get_status(q->P) == GLP_OPT)) {
+		if (art_restore(q, rc == 0 && glp_get_status(q->P) == GLP_OPT) &&
+		    !capped(s, rc)) {
 			s->count.art_again++;
 			rc = glp_simplex(q->P, &parm);
 		}
@@ -1045,12 +1054,12 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	 * (GLP_EFAIL), so the sample was `numerical`; from the slack basis
 	 * the LP is infeasible, `no_equilibrium`, as 9 of that wall's other
 	 * 11 samples are (tests/cli/realwalls.sh). */
-	if (simplex_failed(rc)) {
+	if (simplex_failed(rc) && !capped(s, rc)) {
 		glp_adv_basis(q->P, 0);
 		parm.meth = GLP_DUALP;
 		rc = glp_simplex(q->P, &parm);
 	}
-	if (simplex_failed(rc)) {
+	if (simplex_failed(rc) && !capped(s, rc)) {
 		glp_std_basis(q->P);
 		parm.meth = GLP_PRIMAL;
 		rc = glp_simplex(q->P, &parm);

@@ -28,9 +28,9 @@
  * The set-up (docs/design.md, "The shared set-up").  Every worker's
  * workspace starts its samples from the canonical bases, which cost one
  * sample's LPs at the classical contact, or on a wall of more than 1,000
- * interfaces the part of them its samples use (2.6 s on walls/large.yaml,
- * 10.6 s on walls/body-1000.yaml: docs/performance.md, "A large wall's
- * set-up").  The
+ * interfaces the part of them its samples use (2.5 s on walls/large.yaml,
+ * 7.4 s on walls/body-1000.yaml: docs/performance.md, "A large wall's
+ * set-up" and "The set-up's LP-min cut").  The
  * pool solves them once: the worker that takes id 0 makes its
  * workspace, which solves them, and publishes them as plain data
  * (sample_ws_setup: row and column statuses; GLPK's state is the

@@ -228,8 +228,9 @@ static void test_sample_faults(const struct wall *w, enum lp_status as)
 }
 
 /* GLPK's iteration limit, reached for real (lp_solver_iteration_limit):
- * an LP that needs more pivots than the limit is LP_FAILED (after the
- * retry), the same problem then solves with the default limit; a sample
+ * an LP that needs more pivots than the limit is LP_FAILED after that
+ * many (a limit the caller set is final: no retry from another basis,
+ * lp.h), the same problem then solves with the default limit; a sample
  * whose LPs hit it is a `numerical` rejection, and the same workspace
  * then gives the clean sample bit for bit. */
 static void test_iteration_limit(const struct wall *w)
@@ -249,16 +250,18 @@ static void test_iteration_limit(const struct wall *w)
 		lp_set_obj(p, j, 1);
 	}
 	lp_set_maximize(p, 1);
-	lp_solver_iteration_limit(S, 1);
+	int was = lp_solver_iteration_limit(S, 1);
 	enum lp_status s1 = lp_solve(p, LP_PRIMAL);
-	lp_solver_iteration_limit(S, 0);
+	int it1 = lp_last_iterations(p);
+	int one = lp_solver_iteration_limit(S, was);
 	lp_reset_basis(p);
 	enum lp_status s2 = lp_solve(p, LP_PRIMAL);
-	tap_ok(s1 == LP_FAILED && s2 == LP_OPTIMAL && lp_obj(p) == N / 2 &&
+	tap_ok(was == 0 && one == 1 && s1 == LP_FAILED && it1 == 1 &&
+	       s2 == LP_OPTIMAL && lp_obj(p) == N / 2 &&
 	       lp_last_iterations(p) > 1,
 	       "an iteration limit of 1 on an LP of %d pivots: LP_FAILED "
-	       "(status %d); without it: optimal, %g", lp_last_iterations(p),
-	       s1, lp_obj(p));
+	       "(status %d) after %d pivot(s) (no retry); without it: optimal, "
+	       "%g", lp_last_iterations(p), s1, it1, lp_obj(p));
 	lp_free(p);
 
 	struct one_sample x;
