@@ -1053,7 +1053,8 @@ static enum lp_status glpk_solve(struct lp *p, enum lp_method m)
 	 * GLPK could not factorize and whose advanced basis failed
 	 * (GLP_EFAIL), so the sample was `numerical`; from the slack basis
 	 * the LP is infeasible, `no_equilibrium`, as 9 of that wall's other
-	 * 11 samples are (tests/cli/realwalls.sh). */
+	 * 11 samples are (tests/cli/realwalls.sh).  Not after a limit the
+	 * caller set (capped): that one ends the solve. */
 	if (simplex_failed(rc) && !capped(s, rc)) {
 		glp_adv_basis(q->P, 0);
 		parm.meth = GLP_DUALP;
