@@ -21,7 +21,9 @@
  * only LP-max's start moved 47-88 % of the demo wall's samples.
  *
  * Walls: the demo, Ferris & Tin-Loi 1 and 2 (depth 0.25, the walls'
- * own seeds), and 200 random small walls, one sample each.
+ * own seeds), and 200 random small walls, one sample each.  Then
+ * walls/body-1000.yaml's set-up alone: its LP-min cut at one pivot per
+ * interface (large_setup_cut).
  */
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -261,6 +263,29 @@ static void wall_file(const char *path, long n)
 	wall_free(w);
 }
 
+/* A large wall's set-up tries LP-min, for a start basis only, with at
+ * most one pivot per interface (sample.c, setup_large): on
+ * walls/body-1000.yaml that solve took 14,282 pivots to prove the LP
+ * infeasible (docs/performance.md, "The set-up's LP-min cut").  About
+ * 8 s: the set-up alone, no sample. */
+static void large_setup_cut(void)
+{
+	const char *path = "walls/body-1000.yaml";
+	struct wall *w = tw_load_file(path);
+	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_lp_stats st[SAMPLE_ROLE_COUNT];
+	sample_ws_stats(ws, st);
+	int amin = role_index("LP-min"), lp1 = role_index("LP1");
+	tap_ok(amin >= 0 && lp1 >= 0 && st[lp1].lps == 1 &&
+	       st[amin].lps == 1 && st[amin].iterations > 0 &&
+	       st[amin].iterations <= w->nifaces,
+	       "%s: the set-up's LP-min takes at most one pivot per interface "
+	       "(%ld pivots, %d interfaces)", path,
+	       amin >= 0 ? st[amin].iterations : -1L, w->nifaces);
+	sample_ws_free(ws);
+	wall_free(w);
+}
+
 /* 200 random small walls (as test_sample's properties), one sample
  * each. */
 static void random_walls(void)
@@ -288,6 +313,7 @@ int main(void)
 	wall_file("walls/ferris-tinloi-1.yaml", 100);
 	wall_file("walls/ferris-tinloi-2.yaml", 60);
 	random_walls();
+	large_setup_cut();
 	tap_ok(edited_opened > 0 && edited_used == edited_opened,
 	       "every workspace opened from an edited wall's set-up started "
 	       "from it (%ld of %ld)", edited_used, edited_opened);
