@@ -226,9 +226,9 @@ static void progress(struct run *run, struct progress_ci *pc, long n,
 		return;
 	}
 	if (rate > 0 && rate < 1)
-		snprintf(speed, sizeof speed, "%.3g s/sample", 1 / rate);
+		snprintf(speed, sizeof speed, "%.3g s a sample", 1 / rate);
 	else
-		snprintf(speed, sizeof speed, "%.1f/s", rate);
+		snprintf(speed, sizeof speed, "%.1f samples/s", rate);
 	fprintf(stderr, "\r%ld/%ld  accepted %ld  rejected %ld  %s%s  "
 		"left %s\033[K", t->samples, n, t->accepted,
 		t->samples - t->accepted, speed, p05s, left);

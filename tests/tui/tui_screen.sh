@@ -10,7 +10,8 @@
 # finished ("first    about N min a sample"), the samples in progress
 # with their age and an estimate of the time left, and standard/gilbert
 # "computing... N s"; and `slipwall run`'s progress line says the first
-# samples are running, how long, and the a-priori estimate.
+# samples are running, how long, and the a-priori estimate, then the
+# speed as the summary words it ("s a sample").
 #
 # Usage (from the source root): bash tests/tui/tui_screen.sh /path/to/slipwall
 # TAP output; skips when tmux is missing.
@@ -208,6 +209,13 @@ if screen_has rp '^0/4  first samples running .*\(estimate: about [0-9]+ (s|min|
 	ok "slipwall run on the large wall: the first progress line has the estimate"
 else
 	not_ok "slipwall run on the large wall: the first progress line has the estimate" "$(screen rp)"
+fi
+# once a sample has finished, the speed in the summary's words (a sample
+# of this wall takes seconds: "s a sample", not "s/sample" or "/s")
+if wait_for rp '^[1-4]/4  accepted [0-4]  rejected [0-4]  [0-9.]+ s a sample  .*left ' 90; then
+	ok "slipwall run on the large wall: the speed in seconds a sample, as the summary says it"
+else
+	not_ok "slipwall run on the large wall: the speed in seconds a sample" "$(screen rp)"
 fi
 kill -INT "$(cat "$tmp/rp.pid")" 2>/dev/null
 
