@@ -27,8 +27,11 @@ struct collapse {
 void collapse_at(const double *sorted, size_t n, double load,
 		 const char *source, struct collapse *c);
 /* "collapse     P(collapse load <= L) = p (k of n accepted), 99 % interval
- * [lo, hi] (exact binomial; --at)" with the given label width. */
-void collapse_print(FILE *f, const char *label, const struct collapse *c);
+ * [lo, hi] (exact binomial; --at)" with the given label width; name is
+ * the loads' quantity (wall_quantity's: "collapse load", "seismic
+ * coefficient" or "load factor"), in which L is given. */
+void collapse_print(FILE *f, const char *label, const char *name,
+		    const struct collapse *c);
 /* {"load", "source", "collapsed", "accepted", "probability", "ci99"} */
 void collapse_json(struct json *j, const struct collapse *c);
 

@@ -546,7 +546,7 @@ static void print_text(const struct compare_args *a, const struct wall *w,
 		collapse_at(sl, (size_t)md->accepted, w->design_load,
 			    "design_load", &cp);
 		free(sl);
-		collapse_print(stdout, "\nmodel: ", &cp);
+		collapse_print(stdout, "\nmodel: ", q.name, &cp);
 	}
 	print_ks(md);
 }

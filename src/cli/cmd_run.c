@@ -374,12 +374,12 @@ static void print_text(const struct run_info *r, const struct tally *t)
 	struct collapse c;
 	if (r->a->at >= 0) {
 		collapse_at(t->lam.x, t->lam.n, r->a->at, "at", &c);
-		collapse_print(stdout, "collapse     ", &c);
+		collapse_print(stdout, "collapse     ", t->q.name, &c);
 	}
 	if (w->design_load > 0) {
 		collapse_at(t->lam.x, t->lam.n, w->design_load, "design_load",
 			    &c);
-		collapse_print(stdout, "collapse     ", &c);
+		collapse_print(stdout, "collapse     ", t->q.name, &c);
 	}
 	if (t->samples > 0)
 		printf("work         %.1f SLP iterations, %.1f LPs per sample\n",

@@ -11,6 +11,7 @@
 #include "cli_opts.h"
 #include "slipwall/json.h"
 #include "slipwall/solve.h"
+#include "slipwall/tally.h"
 
 static const char *method_text[] = {
 	"standard (associative limit analysis)",
@@ -68,6 +69,13 @@ static void print_json(const struct wall *w, const struct solve_result *r,
 	json_double(&j, r->lambda);
 	json_key(&j, "load_newtons");
 	json_double(&j, newtons(w, r->lambda));
+	/* what `run --json` gives its loads in (wall_quantity): a body-loaded
+	 * wall's seismic coefficient is scale * lambda, and no unit */
+	struct wall_quantity q;
+	wall_quantity(w, &q);
+	tally_quantity_json(&j, &q);
+	json_key(&j, "load_value");
+	json_double(&j, q.scale * r->lambda);
 	if (r->method == SOLVE_GILBERT) {
 		/* which of the two loads is the method's answer */
 		json_key(&j, "result");

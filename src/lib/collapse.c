@@ -18,17 +18,18 @@ void collapse_at(const double *sorted, size_t n, double load,
 		c->lo = c->hi = NAN;
 }
 
-void collapse_print(FILE *f, const char *label, const struct collapse *c)
+void collapse_print(FILE *f, const char *label, const char *name,
+		    const struct collapse *c)
 {
 	const char *why = c->source[0] == 'a' ? "--at" : "the wall's design load";
 	if (c->n == 0) {
-		fprintf(f, "%sP(collapse load <= %.6g): no accepted sample (%s)\n",
-			label, c->load, why);
+		fprintf(f, "%sP(%s <= %.6g): no accepted sample (%s)\n",
+			label, name, c->load, why);
 		return;
 	}
-	fprintf(f, "%sP(collapse load <= %.6g) = %.4g (%zu of %zu accepted), "
+	fprintf(f, "%sP(%s <= %.6g) = %.4g (%zu of %zu accepted), "
 		"99 %% interval [%.4g, %.4g] (exact binomial; %s)\n", label,
-		c->load, c->p, c->k, c->n, c->lo, c->hi, why);
+		name, c->load, c->p, c->k, c->n, c->lo, c->hi, why);
 }
 
 void collapse_json(struct json *j, const struct collapse *c)

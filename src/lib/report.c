@@ -605,8 +605,12 @@ static void draw_fragility(struct fig *f, const struct rctx *c)
 		cairo_stroke(cr);
 	}
 	cairo_restore(cr);
-	plot_axes(f, &a, c->axis, "probability of collapse", "Fragility: "
-		  "P(collapse load <= load)", 0);
+	struct wall_quantity q;
+	wall_quantity(c->w, &q);
+	char title[96];
+	snprintf(title, sizeof title, "Fragility: P(%s <= %s)", q.name,
+		 *q.unit ? "load" : "value");
+	plot_axes(f, &a, c->axis, "probability of collapse", title, 0);
 	char lm[96], lb[96], ld[96];
 	snprintf(lm, sizeof lm, "model: empirical CDF (%zu)", c->n);
 	snprintf(lb, sizeof lb, "99 %% simultaneous band (DKW)");

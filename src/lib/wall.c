@@ -123,7 +123,7 @@ void wall_quantity(const struct wall *w, struct wall_quantity *q)
 			"times the load factor lambda)"};
 	} else if (body && !point && same) {
 		*q = (struct wall_quantity){m, "seismic coefficient", "",
-			"seismic coefficient (horizontal force / weight)",
+			"seismic coefficient (body force / weight)",
 			"seismic coefficient, no unit (the body load's force "
 			"on each block over its weight: magnitude times "
 			"lambda)"};

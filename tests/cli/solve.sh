@@ -108,4 +108,34 @@ check "solve --method gilbert --json, a block over a gap: exit 1 ($rc), status h
 "$bin" solve walls/single-block.yaml --method standard --json >"$tmp/ok.json"
 check "solve --json with a load: \"error\": null" \
 	python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not ("error" in d and d["error"] is None and d["load_factor"] > 0))' "$tmp/ok.json"
+# a body load of magnitude 0.5 on a 1.0 x 0.5 m block at depth 0, friction
+# 1.5: it slides at a seismic coefficient of min(mu, b/h) = min(1.5, 2) =
+# 1.5, lambda = 3 (the magnitude times lambda is the coefficient).  The
+# JSON gives the quantity as `run --json` does ("load": quantity, unit,
+# scale) and the value in it, the text's "(seismic coefficient 1.5)"
+cat >"$tmp/body.yaml" <<'WALL'
+name: a block under half its weight sideways
+material: {friction: 1.5, unit_weight: 19620, thickness: 0.1}
+blocks:
+  - {id: blk, vertices: [[0, 0], [1.0, 0], [1.0, 0.5], [0, 0.5]]}
+supports:
+  - ground: {y: 0.0}
+loads:
+  - {body: {direction: [1, 0], magnitude: 0.5}}
+contacts: {depth: 0}
+WALL
+"$bin" solve "$tmp/body.yaml" --method standard >"$tmp/body.txt" 2>&1
+"$bin" solve "$tmp/body.yaml" --method standard --json >"$tmp/body.json" 2>&1
+check "solve --json on a body load: the seismic coefficient min(mu, b/h) = 1.5 as load_value, its quantity and scale, as the text says" \
+	python3 -c '
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+m = re.search(r"\(seismic coefficient ([0-9.e+-]+)\)", open(sys.argv[2]).read())
+q = d["load"]
+sys.exit(not (m and q["quantity"] == "seismic coefficient" and q["unit"] == ""
+              and q["scale"] == 0.5 and abs(d["load_factor"] - 3) < 1e-9
+              and abs(d["load_value"] - 1.5) < 1e-9
+              and abs(float(m.group(1)) - d["load_value"]) < 1e-5
+              and d["load_newtons"] is None))' "$tmp/body.json" "$tmp/body.txt"
+
 tap_end
