@@ -121,6 +121,28 @@ static void test_cut_course(void)
 	tap_near(width(&w->blocks[1]), 0.2, 1e-12,
 		 "the full-start course is one 0.2 cut block");
 	wall_free(w);
+
+	/* a cut narrower than 1e-4 of a block is no block: length
+	 * 0.40000001 with 0.2 blocks is 0.40 (it made a 1e-8 m block that
+	 * no joint carried); a cut of 1e-4 m (5e-4 of a block) stays (the
+	 * half-start course 0.1 + 0.2 + 0.1001, the full one 0.2 + 0.2 +
+	 * 1e-4) */
+	w = make(0.2, 0.1, 2, 0.40000001, BOND_RUNNING, 1);
+	st = layout_generate(w, mark(0, 0), err);
+	tap_ok(st == SW_OK && w->nblocks == 5,
+	       "length 0.40000001: 3 + 2 blocks, no sliver (got %d)", w->nblocks);
+	i = find(w, "c2b2");
+	tap_near(i >= 0 ? width(&w->blocks[i]) : -1, 0.20000001, 1e-12,
+		 "the last block reaches the wall's end");
+	wall_free(w);
+	w = make(0.2, 0.1, 2, 0.4001, BOND_RUNNING, 1);
+	st = layout_generate(w, mark(0, 0), err);
+	tap_ok(st == SW_OK && w->nblocks == 6,
+	       "length 0.4001: 3 + 3 blocks (got %d)", w->nblocks);
+	i = find(w, "c2b3");
+	tap_near(i >= 0 ? width(&w->blocks[i]) : -1, 1e-4, 1e-12,
+		 "the full-start course ends with a 1e-4 m cut block");
+	wall_free(w);
 }
 
 static void test_ferris_counts(void)
