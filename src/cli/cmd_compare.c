@@ -588,6 +588,17 @@ int cmd_compare(int argc, char **argv)
 	int status = parse_args(argc, argv, &a);
 	if (!override_begin(CMD, status, a.wall, &a.ov, &w, &status))
 		return status;
+	if (a.samples && a.ov.n > 0) {
+		/* the loads are the file's, as they were computed: an override
+		 * reaches only the wall's tests and design load */
+		char o[1024];
+		override_describe(&a.ov, o, sizeof o);
+		cli_errorf("slipwall %s: warning: the loads of %s%s%s are read "
+			   "as they were computed: the overrides (%s) do not "
+			   "change them, only the wall's tests and design load",
+			   CMD, a.samples, a.against ? " and " : "",
+			   a.against ? a.against : "", o);
+	}
 	if (a.against) {
 		const struct compare_runs_args ra = {
 			.wall = a.wall, .a = a.samples, .b = a.against,

@@ -105,6 +105,17 @@ for s in "p05 (characteristic)" "99 % interval" "no interval: needs at least 90 
 done
 check "Table 1 for people: p05 side by side, 'no interval' under 90 values, the KS p-values" \
 	[ $ok_txt = 1 ]
+check "compare --samples without overrides: no warning" \
+	eval '! grep -q "warning" "$tmp/ks.err"'
+
+# an override cannot change loads read from a file: it says so, and the
+# result is the file's (the same KS result as without it)
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/tests.txt" \
+	--friction 0.3 --json >"$tmp/ksf.json" 2>"$tmp/ksf.err"
+rc=$?
+check "compare --samples --friction: exit 0, a warning that the file's loads do not change, the same KS result" \
+	eval '[ $rc = 0 ] && grep -q "^slipwall compare: warning: the loads of .*model.csv are read as they were computed: the overrides (material.friction = 0.3" "$tmp/ksf.err" &&
+	python3 -c "import json,sys; sys.exit(json.load(open(sys.argv[1]))[\"ks\"] != json.load(open(sys.argv[2]))[\"ks\"])" "$tmp/ks.json" "$tmp/ksf.json"'
 
 # ---- --against: two runs of the demo wall, friction 0.6 (A) and 0.8 (B) ----
 "$bin" run $demo -n 200 --seed 5 --friction 0.6 --samples "$tmp/fa.csv" --json \
