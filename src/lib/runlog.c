@@ -15,6 +15,7 @@
  * it).  Every field is checked and a problem is reported at its
  * FILE:LINE:COLUMN.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -228,6 +229,11 @@ static const char *fixed_names[FIXED_COLS] = {
 
 /* A CSV file being read: the current line split in place into fields,
  * each with its 1-based column for messages. */
+/* A data row's `sample` number and the line it is on (check_ids). */
+struct row_id {
+	long sample, line;
+};
+
 struct reader {
 	const char *path;
 	FILE *f;
@@ -240,6 +246,8 @@ struct reader {
 	int *col;
 	int nfield, capfield;
 	int nmu;		/* the header's mu_k columns: 0 or its m */
+	struct row_id *ids;	/* each data row's sample number, its line */
+	long nids, capids;
 };
 
 static int reader_open(struct reader *r, const char *path, char *err)
@@ -263,6 +271,7 @@ static void reader_close(struct reader *r)
 	free(r->line);
 	free(r->field);
 	free(r->col);
+	free(r->ids);
 }
 
 /* The next line, split at commas.  Returns 1, 0 at the end of the file,
@@ -428,11 +437,57 @@ static enum sw_status check_row(struct reader *r, int m, int *status,
 			 r->nfield < want ? " (an incomplete row?)" : "");
 		return at(r, r->nfield < want ? r->nfield : want, err, msg);
 	}
+	/* the sample's number: a whole number below ROWS_MAX (check_ids
+	 * finds the ones that repeat) */
+	char *end;
+	errno = 0;
+	long id = strtol(r->field[0], &end, 10);
+	if (!isdigit((unsigned char)r->field[0][0]) || *end || errno ||
+	    id >= ROWS_MAX)
+		return at(r, 0, err, "the sample's number must be a whole "
+			  "number from 0");
+	if (r->nids == r->capids) {
+		r->capids = r->capids ? 2 * r->capids : 256;
+		r->ids = sw_xrealloc(r->ids, sizeof *r->ids *
+				     (size_t)r->capids);
+	}
+	r->ids[r->nids++] = (struct row_id){id, r->lineno};
 	*status = sample_status_parse(r->field[1]);
 	if (*status < 0)
 		return at(r, 1, err, "unknown status (accepted or a "
 			  "rejection reason such as no_mechanism)");
 	return SW_OK;
+}
+
+static int by_sample(const void *a, const void *b)
+{
+	const struct row_id *x = a, *y = b;
+	if (x->sample != y->sample)
+		return x->sample < y->sample ? -1 : 1;
+	return (x->line > y->line) - (x->line < y->line);
+}
+
+/* Every sample once: a number that repeats is two runs' files joined
+ * (or a row copied), whose loads would count twice.  The message names
+ * the repeat's line and the first. */
+static enum sw_status check_ids(struct reader *r, char *err)
+{
+	if (r->nids > 1)
+		qsort(r->ids, (size_t)r->nids, sizeof *r->ids, by_sample);
+	long worst = -1;	/* the earliest line that repeats a number */
+	for (long i = 1; i < r->nids; i++)
+		if (r->ids[i].sample == r->ids[i - 1].sample &&
+		    (worst < 0 || r->ids[i].line < r->ids[worst].line))
+			worst = i;
+	if (worst < 0)
+		return SW_OK;
+	long i = worst;
+	while (i > 0 && r->ids[i - 1].sample == r->ids[worst].sample)
+		i--;
+	return sw_fail(err, SW_EINPUT, "%s:%ld:1: sample %ld again (first on "
+		       "line %ld): every sample once (two runs' files joined?)",
+		       r->path, r->ids[worst].line, r->ids[worst].sample,
+		       r->ids[i].line);
 }
 
 /* The header's interfaces are the wall's: a file of another wall is
@@ -539,6 +594,8 @@ enum sw_status runlog_read_draws(const char *path, const struct wall *w,
 	if (st == SW_OK && n == 0)
 		st = sw_fail(err, SW_EINPUT, "%s:%ld:1: no samples in the file",
 			     path, r.lineno + 1);
+	if (st == SW_OK)
+		st = check_ids(&r, err);
 	reader_warning(&r, warn);
 	reader_close(&r);
 	if (st != SW_OK) {
@@ -587,6 +644,8 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 		}
 		x[k++] = q.scale * v;
 	}
+	if (st == SW_OK)
+		st = check_ids(&r, err);
 	reader_warning(&r, warn);
 	reader_close(&r);
 	if (st != SW_OK) {

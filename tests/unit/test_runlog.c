@@ -236,6 +236,20 @@ static void test_errors(void)
 		"2:14", "lambda_min");
 	refused("loadstatus.csv", HDR "0,accepte,1,1,3,0.1,0.9,0.2,0.8\n", 1,
 		"2:3", "unknown status");
+	/* every sample once: two runs' files joined would count the loads
+	 * twice (the repeat's line, the first's in the message) */
+	refused("twice.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
+		"1,accepted,1,2,3,0.1,0.9,0.2,0.8\n"
+		"0,accepted,1,1,3,0.1,0.9,0.2,0.8\n", 1, "4:1",
+		"sample 0 again (first on line 2)");
+	refused("twice-pos.csv", HDR "5,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
+		"7,no_mechanism,1,,3,0.1,0.9,0.2,0.8\n"
+		"7,accepted,1,2,3,0.1,0.9,0.2,0.8\n", 0, "4:1",
+		"sample 7 again (first on line 3)");
+	refused("negid.csv", HDR "-1,accepted,1,1,3,0.1,0.9,0.2,0.8\n", 1,
+		"2:1", "sample's number");
+	refused("textid.csv", HDR "x,accepted,1,1,3,0.1,0.9,0.2,0.8\n", 0,
+		"2:1", "sample's number");
 
 	char err[SW_ERRLEN];
 	double *x = NULL;
