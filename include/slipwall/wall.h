@@ -217,6 +217,9 @@ int wall_hanging_text(const struct wall *w, char *buf, size_t len);
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */
 extern const char wall_far_text[];
+/* A polygon so thin for its length that geom_far_vertex refuses it at
+ * any position (no move helps): "is too thin: ..." into buf, or NULL. */
+const char *wall_thin_text(const double *xy, int nv, char *buf, size_t len);
 
 /* What a collapse load factor is for people (docs/run.md, "Loads and
  * units").  The LPs' lambda multiplies the reference load: each load's

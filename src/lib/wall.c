@@ -362,6 +362,75 @@ const char wall_far_text[] = "is too far from the origin for the size of "
 	"thickness apart (docs/wall-format.md, \"Coordinates far from the "
 	"origin\"): move the wall nearer the origin";
 
+/* A polygon's thickness (area over its extent, geom_far_vertex's) over
+ * its extent; 0 when it has no area. */
+static double thinness(const double *xy, int nv)
+{
+	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+	for (int i = 0; i < nv; i++) {
+		x0 = fmin(x0, xy[2 * i]);
+		x1 = fmax(x1, xy[2 * i]);
+		y0 = fmin(y0, xy[2 * i + 1]);
+		y1 = fmax(y1, xy[2 * i + 1]);
+	}
+	double extent = fmax(x1 - x0, y1 - y0);
+	double t = fabs(geom_area(xy, nv)) / (extent * extent);
+	return isfinite(t) ? t : 0;
+}
+
+const char *wall_thin_text(const double *xy, int nv, char *buf, size_t len)
+{
+	double t = thinness(xy, nv);
+	/* some coordinate of a polygon of extent E is at least E/2 from 0,
+	 * wherever it lies: its spacing E 2^-53 against 1e-8 of t E */
+	if (!(t > 0) || ldexp(1, -53) <= GEOM_PRECISION_REL * t)
+		return NULL;
+	snprintf(buf, len, "is too thin: %g of its length thick, where "
+		 "doubles need %.2g wherever it is (docs/wall-format.md, "
+		 "\"Coordinates far from the origin\")", t,
+		 ldexp(1, -53) / GEOM_PRECISION_REL);
+	return buf;
+}
+
+/* Why geom_check_polygon found the polygon degenerate, in words a
+ * person can act on (wall_finish): a repeated vertex (the first repeated
+ * at the end, as CAD exports write a closed outline), fewer than three
+ * vertices, all on one line, or no area for vertices out of order (a
+ * rectangle with two corners swapped crosses itself). */
+static const char *degenerate_text(const double *xy, int nv, double tol,
+				   char *buf, size_t len)
+{
+	if (nv < 3) {
+		snprintf(buf, len, "has %d vertices: a polygon needs 3 or "
+			 "more", nv);
+		return buf;
+	}
+	for (int i = 0; i < nv; i++) {
+		int j = (i + 1) % nv;
+		if (hypot(xy[2 * j] - xy[2 * i], xy[2 * j + 1] - xy[2 * i + 1]) >
+		    tol)
+			continue;
+		if (j == 0)
+			snprintf(buf, len, "closed by repeating its first "
+				 "vertex at the end (vertex %d): leave the "
+				 "repeat out, the polygon closes by itself", nv);
+		else
+			snprintf(buf, len, "degenerate: vertices %d and %d "
+				 "are the same point", i + 1, j + 1);
+		return buf;
+	}
+	/* the largest distance of a vertex from the line of the first edge */
+	double ex = xy[2] - xy[0], ey = xy[3] - xy[1], off = 0;
+	for (int i = 2; i < nv; i++)
+		off = fmax(off, fabs(ex * (xy[2 * i + 1] - xy[1]) -
+				     ey * (xy[2 * i] - xy[0])) / hypot(ex, ey));
+	snprintf(buf, len, off <= tol ? "degenerate: its vertices lie on one "
+		 "line (no area)" : "self-intersecting: its area is zero "
+		 "(vertices out of order? they must run around the polygon, "
+		 "counter-clockwise)");
+	return buf;
+}
+
 int wall_id_reserved(const char *id)
 {
 	return !strcmp(id, "ground");
@@ -562,6 +631,13 @@ static enum sw_status finish_polygons(struct wall *w, const struct extent *e,
 				       b->fixed ? "support" : "block", b->id);
 		}
 		int far = geom_far_vertex(b->xy, b->nv);
+		char thin[200];
+		if (far >= 0 && wall_thin_text(b->xy, b->nv, thin, sizeof thin)) {
+			free(corners);
+			return sw_fail(err, SW_EINPUT, "%s%s '%s' %s",
+				       WHERE(b->mark), b->fixed ? "support" :
+				       "block", b->id, thin);
+		}
 		if (far >= 0) {
 			free(corners);
 			return sw_fail(err, SW_EINPUT, "%s%s '%s': vertex %d "
@@ -571,10 +647,14 @@ static enum sw_status finish_polygons(struct wall *w, const struct extent *e,
 		}
 		enum geom_shape s = geom_check_polygon(b->xy, b->nv, tol);
 		if (s != GEOM_OK) {
+			char why[200];
 			free(corners);
 			return sw_fail(err, SW_EINPUT, "%s%s '%s' is %s",
 				       WHERE(b->mark),
 				       b->fixed ? "support" : "block", b->id,
+				       s == GEOM_DEGENERATE ?
+				       degenerate_text(b->xy, b->nv, tol, why,
+						       sizeof why) :
 				       geom_shape_text(s));
 		}
 		int nc = geom_prune(b->xy, b->nv, tol, corners);

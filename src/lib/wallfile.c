@@ -471,6 +471,11 @@ static int reader_polygon(struct reader *r, yaml_node_t *n, const char *what,
 		}
 	}
 	int far = geom_far_vertex(p, m);
+	char thin[200];
+	if (far >= 0 && wall_thin_text(p, m, thin, sizeof thin)) {
+		free(p);
+		return FAIL(r, n, "the polygon %s", thin);
+	}
 	if (far >= 0) {
 		free(p);
 		return FAIL(r, reader_node(r, n->data.sequence.items.start[far]),
