@@ -611,6 +611,14 @@ static int read_layout(struct reader *r, yaml_node_t *n)
 			int k = 0;
 			while (k < w->nblocks && strcmp(w->blocks[k].id, id))
 				k++;
+			for (int j = 0; k == w->nblocks && j < i; j++) {
+				yaml_node_t *e = reader_item(r, v[6], j);
+				if (e && e->type == YAML_SCALAR_NODE &&
+				    !strcmp((const char *)e->data.scalar.value, id))
+					return FAIL(r, c, "layout omit: '%s' is "
+						    "already in the list (item %d)",
+						    id, j + 1);
+			}
 			if (k == w->nblocks)
 				return FAIL(r, c, "layout omit: the layout has no block '%s'",
 					    id);
