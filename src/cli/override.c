@@ -243,12 +243,13 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 	enum sw_status st = wallfile_load_edited(path, e, ov->n, w, err);
 	free(e);
 	if (st != SW_OK) {
-		/* a check of the whole model ("FILE: message") may be about
-		 * an override: say which the wall had */
+		/* a message about the file ("FILE: ..." or "FILE:LINE:COL:
+		 * ...") may be about an override, and a place in the file
+		 * may hold a value that an override replaced (--set
+		 * blocks.0.vertices.0=[0,-1]: "FILE:3:5: block 'a' reaches
+		 * below the ground"): say which overrides the wall had */
 		size_t pl = strlen(path);
-		int placed = !strncmp(err, path, pl) && err[pl] == ':' &&
-			     isdigit((unsigned char)err[pl + 1]);
-		if (!strncmp(err, path, pl) && err[pl] == ':' && !placed) {
+		if (!strncmp(err, path, pl) && err[pl] == ':') {
 			char d[1024];
 			override_describe(ov, d, sizeof d);
 			fprintf(stderr, "%s\n  (in %s as changed by: %s)\n", err,

@@ -139,6 +139,11 @@ bad "--friction 0x1 (not a decimal)" "^--friction 0x1: friction must be a number
 bad "--load-at 1" "--load-at: '1'" run $block --load-at 1
 bad "--load-at outside every block" "--load-at 5,5\\)" run $block --load-at 5,5
 bad "--load-at on a body load" "body load" run $stack --load-at 0,0.1
+# an error at a place in the file whose value an override replaced says
+# which overrides the wall had
+bad "--set a vertex below the ground: the file's place, then the override" \
+	"^  \(in walls/single-block.yaml as changed by: blocks.0.vertices.0 = \[0,-1\]" \
+	run $block --set 'blocks.0.vertices.0=[0,-1]'
 bad "--load-direction 0,0" "^--load-direction 0,0: direction must be a non-zero" run $block --load-direction 0,0
 bad "--set without =" "--set: 'material.friction'" run $block --set material.friction
 bad "--set an unknown key" "^--set material.frict=1: unknown key 'frict' in material" run $block --set material.frict=1
