@@ -356,7 +356,7 @@ int cmd_solve(int argc, char **argv)
 			print_text(w, &r);
 		if (method == SOLVE_GILBERT && !r.converged) {
 			fprintf(stderr, "%s: the sequential LP did not converge in %d iterations\n",
-				path, r.iterations);
+				cli_text(path), r.iterations);
 			rc = 1;
 		}
 	}

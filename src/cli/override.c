@@ -252,10 +252,12 @@ int override_load(const char *cmd, const char *path, struct overrides *ov,
 		if (!strncmp(err, path, pl) && err[pl] == ':') {
 			char d[1024];
 			override_describe(ov, d, sizeof d);
-			fprintf(stderr, "%s\n  (in %s as changed by: %s)\n", err,
-				path, d);
+			/* cleaned: a --set value may hold control
+			 * characters, and the message quotes it */
+			fprintf(stderr, "%s\n  (in %s as changed by: %s)\n",
+				cli_text(err), cli_text(path), cli_text(d));
 		} else {
-			fprintf(stderr, "%s\n", err);
+			cli_errorf("%s", err);
 		}
 		return sw_status_exit(st);
 	}

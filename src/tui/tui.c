@@ -29,6 +29,7 @@
 
 #include <curses.h>
 
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "tui.h"
 #include "workbench.h"
@@ -282,7 +283,9 @@ int tui_main(const char *path, const struct sample_lp_config *lp)
 
 	memset(t, 0, sizeof *t);
 	if (wallfile_load(path, &w, err) != SW_OK) {
-		fprintf(stderr, "%s\n", err);
+		char *c = text_clean(err);	/* the path may hold controls */
+		fprintf(stderr, "%s\n", c);
+		free(c);
 		return 2;
 	}
 	if (!isatty(STDIN_FILENO) || !isatty(STDOUT_FILENO)) {

@@ -139,6 +139,15 @@ bad "--friction 0x1 (not a decimal)" "^--friction 0x1: friction must be a number
 bad "--load-at 1" "--load-at: '1'" run $block --load-at 1
 bad "--load-at outside every block" "--load-at 5,5\\)" run $block --load-at 5,5
 bad "--load-at on a body load" "body load" run $stack --load-at 0,0.1
+# a value's control characters are shown escaped, never sent to the
+# terminal (an escape sequence could clear it or retitle the window)
+"$bin" run $block -n 2 --set "$(printf 'name="a\033[2J"')" >/dev/null 2>"$tmp/esc.err"
+rc=$?
+check "--set with an escape character: exit 2, shown as \\e, no raw escape on stderr" \
+	eval '[ $rc = 2 ] && grep -qF "a\e[2J" "$tmp/esc.err" && ! grep -q "$(printf "\033")" "$tmp/esc.err"'
+"$bin" run $block -n 2 --set "$(printf 'material.frict=1\nx')" >/dev/null 2>"$tmp/nl.err"
+check "--set with a newline in its value: one line of message, the newline shown as \\n" \
+	eval '[ "$(wc -l <"$tmp/nl.err")" = 1 ] && grep -qF "frict=1\nx" "$tmp/nl.err"'
 # an error at a place in the file whose value an override replaced says
 # which overrides the wall had
 bad "--set a vertex below the ground: the file's place, then the override" \
