@@ -100,13 +100,29 @@ enum sw_status layout_generate(struct wall *w, struct wall_mark mark,
 	if (!isfinite(l->x0) || !isfinite(l->y0))
 		return sw_fail(err, SW_EINPUT,
 			       "%slayout origin must be finite", where);
-	/* a course has at most length / w + 2 blocks */
+	/* a course has at most length / w + 2 blocks: a bound first (a
+	 * course of 1e300 blocks is not counted one by one), then the
+	 * count itself (a stack of blocks as wide as the wall is one block
+	 * a course, where the bound said three) */
 	double per_course = floor(l->length / l->block_w) + 2;
-	if (per_course * l->courses > LAYOUT_MAX_BLOCKS)
+	double count = per_course * l->courses;
+	if (per_course <= LAYOUT_MAX_BLOCKS) {
+		/* course 1 and course 2 (odd and even courses differ in
+		 * running bond only) */
+		double n1 = course_joints(l, course_starts_half(l, 1), NULL);
+		double n2 = course_joints(l, course_starts_half(l, 2), NULL);
+		count = n1 * ((l->courses + 1) / 2) + n2 * (l->courses / 2);
+	}
+	if (per_course > LAYOUT_MAX_BLOCKS)
 		return sw_fail(err, SW_EINPUT,
-			       "%slayout would make about %.0f blocks (at most %d)",
-			       where, per_course * l->courses,
-			       LAYOUT_MAX_BLOCKS);
+			       "%slayout would make more than %d blocks in one "
+			       "course (length %g, block width %g), the most "
+			       "it may make in all", where, LAYOUT_MAX_BLOCKS,
+			       l->length, l->block_w);
+	if (count > LAYOUT_MAX_BLOCKS)
+		return sw_fail(err, SW_EINPUT,
+			       "%slayout would make %.0f blocks (at most %d)",
+			       where, count, LAYOUT_MAX_BLOCKS);
 
 	double *e = sw_xmalloc(sizeof(double) * ((size_t)per_course + 2));
 	for (int c = 1; c <= l->courses; c++) {

@@ -189,6 +189,14 @@ static void test_stack(void)
 		       w->blocks[a].xy[2] == w->blocks[b].xy[2],
 	       "stack bond: head joints line up exactly");
 	wall_free(w);
+	/* the limit counts the blocks, not a bound on them: a column of
+	 * 40,000 blocks as wide as the wall is 40,000 blocks (the bound,
+	 * length / width + 2 a course, said 120,000 and refused it) */
+	w = make(0.2, 0.1, 40000, 0.2, BOND_STACK, 0);
+	tap_ok(layout_generate(w, mark(0, 0), err) == SW_OK &&
+	       w->nblocks == 40000, "a stack of 40,000 blocks: made (%d)",
+	       w->nblocks);
+	wall_free(w);
 	/* stack bond, half start: 0.1 + 4 * 0.2 + 0.1 = 6 per course */
 	w = make(0.2, 0.1, 3, 1.0, BOND_STACK, 1);
 	layout_generate(w, mark(0, 0), err);
@@ -226,7 +234,8 @@ static void test_reject(void)
 		{0.2, 0.1, 0, 1, "at least 1 course"},
 		{0.2, 0.1, 2, 0.09, "shorter than half a block"},
 		{0.2, 0.1, 2, INFINITY, "length must be a finite number"},
-		{0.001, 0.1, 1000, 10, "would make about"},
+		{0.001, 0.1, 1000, 10, "would make 10000500 blocks"},
+		{1e-300, 0.1, 2, 10, "more than 100000 blocks in one course"},
 	};
 	for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
 		char err[SW_ERRLEN] = "";
