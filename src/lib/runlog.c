@@ -635,7 +635,7 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 		double v;
 		if (parse_num(r.field[3], &v) || v < 0) {
 			st = at(&r, 3, err, "an accepted sample needs a "
-				"lambda_min >= 0");
+				"lambda_min: a finite number >= 0");
 			break;
 		}
 		if (k == cap) {

@@ -718,6 +718,13 @@ static int read_direction(struct reader *r, yaml_node_t *n, double d[2])
 {
 	if (reader_pair(r, n, "direction", d))
 		return -1;
+	/* a direction only points: [1.7e308, 1.7e308] is [1, 1], whose
+	 * length does not overflow (wall_finish makes it a unit vector) */
+	double big = fmax(fabs(d[0]), fabs(d[1]));
+	if (big > 1 && isfinite(big) && !isfinite(hypot(d[0], d[1]))) {
+		d[0] /= big;
+		d[1] /= big;
+	}
 	double len = hypot(d[0], d[1]);
 	if (!(len > 0) || !isfinite(len))
 		return FAIL(r, n, "direction must be a non-zero vector (got [%g, %g])",

@@ -132,6 +132,17 @@ static void test_defaults(void)
 	tap_ok(w->nfree == 5, "0.4 m of 0.2 blocks: 3 + 2 blocks (got %d)",
 	       w->nfree);
 	wall_free(w);
+	/* a direction only points: one whose length overflows a double is
+	 * still [1, 1] (it was "must be a non-zero vector") */
+	w = parse("layout: {block: [0.2, 0.1], courses: 2, length: 0.4}\n"
+		  "supports: [{ground: {y: 0}}]\n"
+		  "loads: [{body: {direction: [1.7e308, 1.7e308]}}]\n", err);
+	tap_ok(w && fabs(w->loads[0].dir[0] - M_SQRT1_2) < 1e-15 &&
+	       fabs(w->loads[0].dir[1] - M_SQRT1_2) < 1e-15,
+	       "direction [1.7e308, 1.7e308] is the unit vector along [1, 1]");
+	if (!w)
+		tap_diag("%s", err);
+	wall_free(w);
 }
 
 static void test_settings(void)
