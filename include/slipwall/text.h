@@ -46,8 +46,13 @@ int text_is_clean(const char *s);
 int text_utf8_len(const unsigned char *s);
 
 /* Parse a whole number in [lo, hi] / a finite double: the whole of s,
- * decimal; 0 on success, -1 (and *out untouched) otherwise. */
+ * decimal as people write it (text_is_decimal: no spaces, no
+ * hexadecimal, infinity or NaN, which strtod also reads); 0 on
+ * success, -1 (and *out untouched) otherwise. */
 int text_parse_long(const char *s, long lo, long hi, long *out);
 int text_parse_double(const char *s, double *out);
+/* Is s a decimal number: [-+]digits[.digits][(e|E)[-+]digits], with
+ * some digit?  The wall file's numbers and the options' alike. */
+int text_is_decimal(const char *s);
 
 #endif

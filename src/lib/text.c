@@ -1,4 +1,5 @@
 /* text.c - bounded line reading and printable names; see text.h. */
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
@@ -133,8 +134,36 @@ char *text_clean(const char *s)
 	return out;
 }
 
+int text_is_decimal(const char *s)
+{
+	int digits = 0;
+	if (*s == '+' || *s == '-')
+		s++;
+	for (; isdigit((unsigned char)*s); s++)
+		digits++;
+	if (*s == '.')
+		for (s++; isdigit((unsigned char)*s); s++)
+			digits++;
+	if (!digits)
+		return 0;
+	if (*s == 'e' || *s == 'E') {
+		s++;
+		if (*s == '+' || *s == '-')
+			s++;
+		if (!isdigit((unsigned char)*s))
+			return 0;
+		while (isdigit((unsigned char)*s))
+			s++;
+	}
+	return *s == '\0';
+}
+
 int text_parse_long(const char *s, long lo, long hi, long *out)
 {
+	/* digits only, a sign first: strtol also skips spaces */
+	const char *d = s + (*s == '+' || *s == '-');
+	if (!isdigit((unsigned char)*d) || strspn(d, "0123456789") != strlen(d))
+		return -1;
 	char *end;
 	errno = 0;
 	long v = strtol(s, &end, 10);
@@ -146,10 +175,13 @@ int text_parse_long(const char *s, long lo, long hi, long *out)
 
 int text_parse_double(const char *s, double *out)
 {
+	if (!text_is_decimal(s))
+		return -1;
+	/* ERANGE on underflow is fine, as in the wall file (1e-400 is 0);
+	 * an overflow gives an infinity */
 	char *end;
-	errno = 0;
 	double v = strtod(s, &end);
-	if (errno || end == s || *end || !isfinite(v))
+	if (end == s || *end || !isfinite(v))
 		return -1;
 	*out = v;
 	return 0;

@@ -65,6 +65,8 @@
 
 #include <yaml.h>
 
+#include "slipwall/text.h"
+
 #include "slipwall/geom.h"
 #include "slipwall/layout.h"
 #include "slipwall/outfile.h"
@@ -266,30 +268,6 @@ static int reader_map(struct reader *r, yaml_node_t *n, const char *what,
 	return 0;
 }
 
-/* Strict decimal: [-+]digits[.digits][(e|E)[-+]digits], some digit. */
-static int is_decimal(const char *s)
-{
-	int digits = 0;
-	if (*s == '+' || *s == '-')
-		s++;
-	for (; isdigit((unsigned char)*s); s++)
-		digits++;
-	if (*s == '.')
-		for (s++; isdigit((unsigned char)*s); s++)
-			digits++;
-	if (!digits)
-		return 0;
-	if (*s == 'e' || *s == 'E') {
-		s++;
-		if (*s == '+' || *s == '-')
-			s++;
-		if (!isdigit((unsigned char)*s))
-			return 0;
-		while (isdigit((unsigned char)*s))
-			s++;
-	}
-	return *s == '\0';
-}
 
 static int is_nonfinite_word(const char *s)
 {
@@ -324,7 +302,7 @@ static int reader_number(struct reader *r, yaml_node_t *n, const char *what,
 	if (is_nonfinite_word(s))
 		return FAIL(r, n, "%s must be a finite number, got '%s'", what,
 			    shown(n, buf, sizeof buf));
-	if (!is_decimal(s))
+	if (!text_is_decimal(s))
 		return FAIL(r, n, "%s must be a number, got '%s'", what,
 			    shown(n, buf, sizeof buf));
 	char *end;

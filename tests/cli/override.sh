@@ -135,7 +135,7 @@ bad() {		# DESCRIPTION PATTERN ARGS...
 bad "--friction abc" "--friction: 'abc'" run $block --friction abc
 bad "--friction 0.4,0.5,0.6" "--friction" run $block --friction 0.4,0.5,0.6
 bad "--friction -1 (the reader's range check, named)" "^--friction -1: friction must be >= 0" run $block --friction -1
-bad "--friction 0x1 (not a decimal)" "^--friction 0x1: friction must be a number" run $block --friction 0x1
+bad "--friction 0x1 (not a decimal, as in the wall file)" "--friction: '0x1' is neither MU nor BED,HEAD \(numbers\)" run $block --friction 0x1
 bad "--load-at 1" "--load-at: '1'" run $block --load-at 1
 bad "--load-at outside every block" "--load-at 5,5\\)" run $block --load-at 5,5
 bad "--load-at on a body load" "body load" run $stack --load-at 0,0.1
