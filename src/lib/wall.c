@@ -602,11 +602,13 @@ static enum sw_status finish_extent(struct wall *w, struct extent *e,
 		double mu = f ? w->mu_head : w->mu_bed;
 		if (mu > WALL_FRICTION_MAX)
 			return sw_fail(err, SW_EINPUT,
-				       "%sfriction %g is above %g: larger "
+				       "%sfriction %.*g is above %g: larger "
 				       "coefficients change nothing physically "
 				       "and are beyond the accuracy of the LPs; "
 				       "to forbid sliding use friction: %g",
-				       WHERE(w->friction_mark[f]), mu,
+				       WHERE(w->friction_mark[f]),
+				       /* 1000.0000000000001 is not "1000" */
+				       mu < 2 * WALL_FRICTION_MAX ? 17 : 6, mu,
 				       WALL_FRICTION_MAX, WALL_FRICTION_MAX);
 	}
 	return SW_OK;
