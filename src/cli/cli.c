@@ -350,6 +350,9 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 		if (hash)
 			*hash = 0;
 		char *p = line;
+		/* a byte-order mark, as some editors save UTF-8 */
+		if (lineno == 1 && !strncmp(p, "\xef\xbb\xbf", 3))
+			p += 3;
 		while (isspace((unsigned char)*p))
 			p++;
 		if (!*p)
@@ -365,9 +368,11 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 				     "a number, in decimal", path, lineno, col);
 			break;
 		}
-		if (v < 0) {
+		if (!(v > 0)) {
+			/* as the wall file's tests: loads (a wall that fell
+			 * under no load is no test of a collapse load) */
 			st = sw_fail(err, SW_EINPUT, "%s:%ld:%d: a collapse load "
-				     "must be >= 0", path, lineno, col);
+				     "must be > 0", path, lineno, col);
 			break;
 		}
 		char *q = end;

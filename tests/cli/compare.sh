@@ -105,6 +105,15 @@ for s in "p05 (characteristic)" "99 % interval" "no interval: needs at least 90 
 done
 check "Table 1 for people: p05 side by side, 'no interval' under 90 values, the KS p-values" \
 	[ $ok_txt = 1 ]
+# a byte-order mark at the start of either file (a spreadsheet's UTF-8)
+# is read past: the same KS result
+printf '\357\273\277' | cat - "$tmp/tests.txt" >"$tmp/tests-bom.txt"
+printf '\357\273\277' | cat - "$tmp/model.csv" >"$tmp/model-bom.csv"
+"$bin" compare $one --samples "$tmp/model-bom.csv" --tests "$tmp/tests-bom.txt" \
+	--json >"$tmp/ksb.json" 2>"$tmp/ksb.err"
+check "a byte-order mark before the tests file and the samples file: read, the same KS result" \
+	python3 -c 'import json,sys; sys.exit(json.load(open(sys.argv[1]))["ks"] != json.load(open(sys.argv[2]))["ks"])' \
+	"$tmp/ks.json" "$tmp/ksb.json"
 check "compare --samples without overrides: no warning" \
 	eval '! grep -q "warning" "$tmp/ks.err"'
 
@@ -211,7 +220,10 @@ bad "a word in the tests file (FILE:LINE:COL)" "junk.txt:2:3: a load must be a n
 printf '100\n100 200\n' >"$tmp/two.txt"
 bad "two loads on a line" "two.txt:2:5: one load per line" $demo --tests "$tmp/two.txt"
 printf '100\n-3\n' >"$tmp/neg.txt"
-bad "a negative load" "neg.txt:2:1: a collapse load must be >= 0" $demo --tests "$tmp/neg.txt"
+bad "a negative load" "neg.txt:2:1: a collapse load must be > 0" $demo --tests "$tmp/neg.txt"
+printf '100\n0\n' >"$tmp/zero.txt"
+bad "a load of 0 (refused in the wall file's tests: loads too)" \
+	"zero.txt:2:1: a collapse load must be > 0" $demo --tests "$tmp/zero.txt"
 bad "a missing tests file" "cannot open" $demo --tests "$tmp/nope.txt"
 bad "--samples with --fit-depth" "do not apply" $demo --tests "$tmp/tests.txt" \
 	--samples "$tmp/model.csv" --fit-depth
