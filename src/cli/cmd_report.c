@@ -400,11 +400,14 @@ static void add_notes(const struct report_args *a, const struct wall *w,
 			    &cp);
 		free(sl);
 		size_t u = strlen(note);
+		struct wall_quantity q;
+		wall_quantity(w, &q);
 		snprintf(note + u, len - u, "%sDesign load %.6g "
-			 "(analysis.design_load): P(λ_min ≤ %.6g) = %.4g (%zu of "
+			 "(analysis.design_load): P(%s ≤ %.6g) = %.4g (%zu of "
 			 "%zu accepted samples), 99 %% interval [%.4g, %.4g] (exact "
 			 "binomial); see the fragility figure.", u ? " " : "",
-			 cp.load, cp.load, cp.p, cp.k, cp.n, cp.lo, cp.hi);
+			 cp.load, q.name, cp.load, cp.p, cp.k, cp.n, cp.lo,
+			 cp.hi);
 	}
 	if (a->ov.n > 0) {
 		char o[1024];

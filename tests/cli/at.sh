@@ -71,7 +71,7 @@ check "... and run's summary prints it" grep -q "the wall's design load)" "$tmp/
 "$bin" compare "$tmp/dl.yaml" -n 50 --tests walls/demo-loads.txt >"$tmp/cmp.txt" 2>&1
 check "... and compare's" grep -q "^model: P(collapse load <= .*the wall's design load)" "$tmp/cmp.txt"
 "$bin" report "$tmp/dl.yaml" -n 150 --out "$tmp/rep" >/dev/null 2>&1
-check "... and the report's summary" grep -q "^Design load .*(analysis.design_load): P(λ_min ≤" "$tmp/rep/report.md"
+check "... and the report's summary" grep -q "^Design load .*(analysis.design_load): P(collapse load ≤" "$tmp/rep/report.md"
 check "the fragility figure: SVG, PDF, PNG" \
 	eval '[ -s "$tmp/rep/fragility.svg" ] && [ -s "$tmp/rep/fragility.pdf" ] && [ -s "$tmp/rep/fragility.png" ]'
 check "its band is the DKW half-width sqrt(ln(200) / 2n), n = 150, and it marks the design load's interval" python3 -c '
@@ -120,7 +120,7 @@ check "compare on a wall whose design load is the least of 240 loads: exit 0, 1 
 "$bin" report "$tmp/k1.yaml" -n 240 --out "$tmp/k1r" >/dev/null 2>"$tmp/k1r.err"
 rc=$?
 check "... and report: exit 0, the design load's line" \
-	eval '[ $rc = 0 ] && grep -q "^Design load .*(analysis.design_load): P(λ_min ≤" "$tmp/k1r/report.md"'
+	eval '[ $rc = 0 ] && grep -q "^Design load .*(analysis.design_load): P(collapse load ≤" "$tmp/k1r/report.md"'
 
 # ---- bad values ------------------------------------------------------------------------
 "$bin" run $demo --at -1 >/dev/null 2>"$tmp/e1"
