@@ -131,6 +131,21 @@ static void print_json(const struct wall *w, const struct solve_result *r,
 	json_end(&j);
 }
 
+/* Under associative flow a joint that slides also lifts: both points
+ * open by mu |dt| (an opening beyond it is a separation), so the joint
+ * string says `o` where the joint slides.  Say so in words. */
+static int assoc_slide(const struct wall *w, const struct sample_result *m,
+		       int k)
+{
+	double mu = wall_iface_mu(w, k), dt = fabs(m->dt[k]);
+	if (m->joint[k] != JOINT_OPENS || !(dt > 1e-6))
+		return 0;
+	for (int e = 0; e < 2; e++)
+		if (fabs(m->dn[2 * k + e] - mu * dt) > 1e-6 * fmax(1, mu * dt))
+			return 0;
+	return 1;
+}
+
 static void print_text(const struct wall *w, const struct solve_result *r)
 {
 	struct wall_quantity q;
@@ -193,6 +208,10 @@ static void print_text(const struct wall *w, const struct solve_result *r)
 			printf("%-5d %-10s %-10s %s\n", k + 1,
 			       cli_text(w->blocks[w->ifaces[k].a].id),
 			       cli_text(w->blocks[w->ifaces[k].b].id),
+			       r->method == SOLVE_STANDARD &&
+			       assoc_slide(w, &r->mech, k) ?
+			       "slides and lifts (opens by mu |slip|: "
+			       "associative flow)" :
 			       joint_text(r->mech.joint[k]));
 }
 

@@ -138,4 +138,12 @@ sys.exit(not (m and q["quantity"] == "seismic coefficient" and q["unit"] == ""
               and abs(float(m.group(1)) - d["load_value"]) < 1e-5
               and d["load_newtons"] is None))' "$tmp/body.json" "$tmp/body.txt"
 
+# the standard (associative) solution of a block that slides: its joint
+# lifts by mu |slip| as it slides, and the text says both, not "opens"
+sed 's/friction: 1.5/friction: 0.3/' "$tmp/body.yaml" >"$tmp/slide.yaml"
+"$bin" solve "$tmp/slide.yaml" --method standard >"$tmp/slide.txt" 2>&1
+check "standard on a sliding block: its joint 'slides and lifts' (associative flow), at the seismic coefficient mu" \
+	eval 'grep -q "^1  *blk  *ground  *slides and lifts (opens by mu |slip|: associative flow)" "$tmp/slide.txt" &&
+	grep -q "(seismic coefficient 0.3)" "$tmp/slide.txt"'
+
 tap_end
