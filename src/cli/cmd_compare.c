@@ -573,6 +573,13 @@ static int compare(const struct compare_args *a, const struct wall *w,
 			   "samples done were compared");
 		return sw_status_exit(SW_EINTR);
 	}
+	if (run_signal()) {
+		/* caught while the result was written: it is whole */
+		fflush(stdout);
+		cli_errorf("slipwall compare: interrupted (%s) while writing "
+			   "the result: it is whole", strsignal(run_signal()));
+		return sw_status_exit(SW_EINTR);
+	}
 	if (d->md->accepted == 0) {
 		cli_errorf("slipwall compare: no model sample was accepted: "
 			"the analysis failed");

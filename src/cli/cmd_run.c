@@ -761,7 +761,11 @@ static int sample(struct run_setup *s, const struct run_source *src,
 	if (tty)
 		fprintf(stderr, "\r\033[K");
 	run_finish(&run);
-	run_signals_restore(&caught);
+	/* the signals stay caught while the summary is written (a reader
+	 * slow to take it blocks the writing): the first one now only marks,
+	 * the summary is finished, and the exit says so; after a signal
+	 * that stopped the sampling, a second one kills (run.h's policy) */
+	run_signals_watch(NULL);
 
 	char err[SW_ERRLEN];
 	enum sw_status cst = runlog_close(s->log, err);
@@ -774,8 +778,16 @@ static int sample(struct run_setup *s, const struct run_source *src,
 	else
 		print_text(&info, &t);
 	fflush(stdout);
+	int late = run.stop == RUN_SIGNAL ? 0 : run_signal();
+	run_signals_restore(&caught);
 
 	int status = report_end(&run, cst, err, cfg->n);
+	if (late) {
+		cli_errorf("slipwall run: interrupted (%s) while writing the "
+			   "summary: the samples file and the summary are "
+			   "whole", strsignal(late));
+		status = sw_status_exit(SW_EINTR);
+	}
 	run_free(&run);
 	tally_free(&t);
 	return status;

@@ -12,7 +12,9 @@
 # unsigned; the table escapes a wall's name; report and sweep check
 # --out (and sweep --csv) before sampling; a symbolic link to a
 # directory is a directory; report never overwrites an input in its
-# directory; run --samples to a FIFO that nobody reads says so.
+# directory; run --samples to a FIFO that nobody reads says so; a signal
+# while run or compare writes its JSON to a pipe nobody drains yet leaves
+# it whole, with exit 1 and a message.
 # Each of these fails on fa21007.  TAP output.
 
 bin=${1:?usage: cli/outputs.sh SLIPWALL}
@@ -110,6 +112,54 @@ for sig in TERM HUP INT; do
 	fi
 done
 set +m
+
+# ---- a signal while run or compare writes its result -----------------------------
+# stdout a pipe of 4 KiB that nobody reads until the process is blocked
+# writing its JSON (20 KB for 100 samples of Ferris & Tin-Loi wall 2, its
+# mechanisms; 4.7 KB for compare --fit-depth); one signal there, then the pipe is drained: the JSON is
+# whole, and the exit is 1 with a message (it was the signal's default:
+# killed, the JSON cut at 4,096 bytes, nothing on stderr)
+cat >"$tmp/blocked.py" <<'PY'
+import fcntl, json, os, signal, subprocess, sys, time
+sig, cmd = getattr(signal, sys.argv[1]), sys.argv[2:]
+r, w = os.pipe()
+fcntl.fcntl(w, 1031, 4096)	# F_SETPIPE_SZ
+p = subprocess.Popen(cmd, stdout=w, stderr=subprocess.PIPE)
+os.close(w)
+blocked, t0 = False, time.time()
+while not blocked and p.poll() is None and time.time() - t0 < 240:
+    try:
+        blocked = 'pipe_w' in open('/proc/%d/wchan' % p.pid).read()
+    except OSError:
+        break
+    time.sleep(0.02)
+p.send_signal(sig)
+time.sleep(0.5)
+out = b''
+while True:
+    b = os.read(r, 65536)
+    if not b:
+        break
+    out += b
+rc, err = p.wait(), p.stderr.read().decode()
+try:
+    json.loads(out)
+    whole = 'whole JSON'
+except ValueError:
+    whole = 'cut JSON'
+print(blocked, rc, whole, err.strip().replace('\n', ' | '))
+PY
+ft2=walls/ferris-tinloi-2.yaml
+for sig in SIGTERM SIGINT SIGHUP; do
+	res=$(python3 "$tmp/blocked.py" $sig "$bin" run $ft2 -n 100 --threads 1 --json)
+	check "$sig while run writes its JSON: whole, exit 1, 'interrupted ... while writing the summary' ($res)" \
+		eval 'case "$res" in "True 1 whole JSON slipwall run: interrupted ("*") while writing the summary: the samples file and the summary are whole") true ;; *) false ;; esac'
+done
+# compare --fit-depth's JSON on the demo: 4.7 KB
+printf '%s\n' 150 160 170 >"$tmp/demo-tests.txt"
+res=$(python3 "$tmp/blocked.py" SIGTERM "$bin" compare walls/demo.yaml --tests "$tmp/demo-tests.txt" -n 20 --fit-depth --threads 1 --json)
+check "SIGTERM while compare writes its JSON: whole, exit 1, 'interrupted ... while writing the result' ($res)" \
+	eval 'case "$res" in "True 1 whole JSON slipwall compare: interrupted (Terminated) while writing the result: it is whole") true ;; *) false ;; esac'
 
 # ---- a swept value off the wall keeps the values done ----------------------------
 "$bin" sweep $block --load-at 0,0.1:0,5:5 -n 5 --threads 1 --csv "$tmp/off.csv" \
