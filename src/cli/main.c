@@ -49,8 +49,14 @@ static void usage(FILE *f)
  * pipe) is a failure, not a silent success. */
 static int finish(int rc)
 {
+	errno = 0;
 	if (fflush(stdout) != 0 || ferror(stdout)) {
-		fprintf(stderr, "slipwall: standard output: %s\n", strerror(errno));
+		/* errno is the flush's; a write that failed earlier left
+		 * only stdout's error mark, and errno is another call's
+		 * (sweep --csv F | true said "Success") */
+		fprintf(stderr, "slipwall: standard output: %s\n", errno ?
+			strerror(errno) : "a write failed (a closed pipe or a "
+			"full disk): the output is incomplete");
 		return rc ? rc : 1;
 	}
 	return rc;

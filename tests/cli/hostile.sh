@@ -354,6 +354,12 @@ if [ "$rc" = 1 ] && grep -q "/dev/stdout: cannot write: Broken pipe" "$tmp/e"; t
 else
 	not_ok "a closed samples pipe is reported" "exit $rc" "$(head -c 300 "$tmp/e")"
 fi
+# a stdout that closed before the end: never "Success" for the reason
+"$bin" sweep $demo --friction 0.4:0.8:0.1 -n 20 --threads 1 --json --csv "$tmp/cl.csv" \
+	2>"$tmp/e" | true
+rc=${PIPESTATUS[0]}
+check "sweep --json --csv F | true: exit 1, the reason is not 'Success' ($(head -c 120 "$tmp/e"))" \
+	eval '[ "$rc" = 1 ] && grep -q "^slipwall: standard output: " "$tmp/e" && ! grep -q "Success" "$tmp/e"'
 { cat $two; printf 'tests:\n  loads: []\n'; } >"$tmp/empty-tests.yaml"
 "$bin" compare "$tmp/empty-tests.yaml" >/dev/null 2>"$tmp/e"
 rc=$?
