@@ -139,7 +139,7 @@ void tui_history_lines(const struct tui *t, const struct history_row *h,
 		 h->samples, h->accepted, tui_history_num(p, sizeof p, h->p05),
 		 lo, hi, tui_history_num(m, sizeof m, h->p50),
 		 tui_history_num(q, sizeof q, h->p95),
-		 h->load == 1 ? "(load factor)" : "N");
+		 h->load == 1 ? "(seismic coefficient)" : "N");
 }
 
 void tui_history_print(const struct tui *t, FILE *f)

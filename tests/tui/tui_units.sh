@@ -3,7 +3,9 @@
 # run.md, "Loads and units"), in tmux: walls/single-block.yaml with its
 # point load's magnitude 0.5 at depth 0 tips at P = W b / (2 a) =
 # 209.28 N, and the statistics pane shows 209.3 (N) for the run's
-# median and for the standard solution, never lambda = 418.56.
+# median and for the standard solution, never lambda = 418.56; under a
+# body load of magnitude 0.5 the run history gives its p05 as the
+# seismic coefficient b/h = 0.5.
 #
 # Usage (from the source root): bash tests/tui/tui_units.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -31,4 +33,24 @@ if screen_has h 'p05 +209\.3 +p50 +209\.3' && screen_has h 'sd +[0-9.e+-]+ +\(N\
 else
 	not_ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda" "$(screen h)"
 fi
+
+# a body load on the same block (0.4 x 0.8 m, friction 0.6) at depth 0
+# tips at a seismic coefficient of b/h = 0.5: the run history's row says
+# so, as the statistics pane does (it said "(load factor)")
+sed -E 's/^  - point: .*/  - body: {direction: [1, 0], magnitude: 0.5}/' "$tmp/half.yaml" >"$tmp/body.yaml"
+start b LANG=C LC_ALL=C -- "$tmp/body.yaml"
+wait_run b 1 done 60
+T send-keys -t t:b H
+wait_for b 'run history' 5
+if screen_has b 'p05 0\.5 .*\(seismic coefficient\)' && ! screen_has b '\(load factor\)'; then
+	ok "a body load: the run history gives p05 0.5 as a seismic coefficient"
+else
+	not_ok "a body load: the run history gives p05 0.5 as a seismic coefficient" "$(screen b)"
+fi
+# leave both before the directory of their runs is removed
+for w in h b; do
+	T send-keys -t t:$w Escape
+	T send-keys -t t:$w q
+	within 10 gone "$(cat "$tmp/$w.pid")"
+done
 tap_end
