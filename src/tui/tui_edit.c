@@ -132,25 +132,26 @@ static void tui_edit_done(struct tui *t, struct wall *nw, const char *what)
 	}
 }
 
-/* Parse "a" or "a,b" (also spaces); returns how many numbers. */
+/* Parse "a" or "a,b" (also spaces); returns how many numbers, each a
+ * decimal as in the wall file (text_parse_double), or -1. */
 static int tui_edit_numbers(const char *s, double *v, int max)
 {
 	int n = 0;
-	char *end;
-	while (*s && n < max) {
-		while (*s == ' ' || *s == ',' || *s == '\t')
-			s++;
+	for (;;) {
+		s += strspn(s, " ,\t");
 		if (!*s)
-			break;
-		v[n] = strtod(s, &end);
-		if (end == s || !isfinite(v[n]))
+			return n;
+		size_t len = strcspn(s, " ,\t");
+		char tok[64];
+		if (n == max || len >= sizeof tok)
+			return -1;
+		memcpy(tok, s, len);
+		tok[len] = 0;
+		if (text_parse_double(tok, &v[n]))
 			return -1;
 		n++;
-		s = end;
+		s += len;
 	}
-	while (*s == ' ' || *s == ',')
-		s++;
-	return *s ? -1 : n;
 }
 
 /* ---- friction, depth ---- */
@@ -160,6 +161,13 @@ static void tui_edit_friction(struct tui *t, double bed, double head)
 	char what[128];
 	if (bed < 0 || head < 0) {
 		tui_message(t, 1, "friction must be >= 0");
+		return;
+	}
+	if (bed == t->w->mu_bed && head == t->w->mu_head) {
+		/* F at 0, or the same value typed: no new run of the same
+		 * wall */
+		tui_message(t, 0, "friction is already bed %.3g, head %.3g",
+			    bed, head);
 		return;
 	}
 	struct wall *nw = tui_edit_begin(t);
@@ -197,9 +205,14 @@ static void tui_edit_friction_typed(struct tui *t, const char *text)
 static void tui_edit_cov_typed(struct tui *t, const char *text)
 {
 	double v[1];
-	if (tui_edit_numbers(text, v, 1) != 1 || !(v[0] <= WALL_COV_MAX)) {
+	if (tui_edit_numbers(text, v, 1) != 1 || !(v[0] >= 0) ||
+	    !(v[0] <= WALL_COV_MAX)) {
 		tui_message(t, 1, "friction cov: type a number from 0 to 1 "
 			    "(0: fixed friction)");
+		return;
+	}
+	if (v[0] == t->w->mu_cov) {
+		tui_message(t, 0, "friction cov is already %.3g", v[0]);
 		return;
 	}
 	struct wall *nw = tui_edit_begin(t);
@@ -217,11 +230,16 @@ static void tui_edit_cov_typed(struct tui *t, const char *text)
 static void tui_edit_depth(struct tui *t, double d, int anywhere)
 {
 	char what[128];
-	d = fmin(0.5, fmax(0, d));
+	d = round(fmin(0.5, fmax(0, d)) * 1e6) / 1e6;
+	if (d == t->w->depth && anywhere == t->w->anywhere) {
+		/* e at 0.5, E at 0: no new run of the same wall */
+		tui_message(t, 0, "contact depth is already %.3g (0 to 0.5)", d);
+		return;
+	}
 	struct wall *nw = tui_edit_begin(t);
 	if (!nw)
 		return;
-	nw->depth = round(d * 1e6) / 1e6;
+	nw->depth = d;
 	nw->anywhere = anywhere;
 	if (anywhere)
 		snprintf(what, sizeof what, "contact points anywhere");

@@ -268,6 +268,25 @@ else
 	not_ok "history.tsv: run $r1's row ends with its mu_cov, 0.2" "$(tail -n 3 "$SLIPWALL_RUNS/history.tsv")"
 fi
 
+# a value that changes nothing starts no run: a negative cov is refused,
+# the same friction typed again is already the wall's
+runof() { title w | sed -n 's/.*| run \([0-9][0-9]*\).*/\1/p'; }
+wait_for w '^samples +[0-9]+ / ' 5 || wait_for w 'samples +[0-9]+ / ' 5
+r0=$(runof)
+prompt w v 'friction cov' -0.2
+if [ -n "$r0" ] && wait_for w "friction cov: type a number from 0 to 1" 5 && [ "$(runof)" = "$r0" ]; then
+	ok "v -0.2: refused, no new run (run $r0)"
+else
+	not_ok "v -0.2: refused, no new run (run $r0 -> $(runof))" "$(screen w)"
+fi
+mu=$(title w | sed -n 's/.*μ \([0-9.]*\).*/\1/p; s/.*mu \([0-9.]*\).*/\1/p' | head -n 1)
+prompt w g 'friction' "$mu"
+if [ -n "$mu" ] && wait_for w "friction is already bed $mu" 5 && [ "$(runof)" = "$r0" ]; then
+	ok "g $mu (the wall's friction): 'already', no new run"
+else
+	not_ok "g $mu (the wall's friction): 'already', no new run ($r0 -> $(runof))" "$(screen w)" "$(title w)"
+fi
+
 T send-keys -t t:w q
 wait_for w '^samples: ' 10
 

@@ -43,7 +43,7 @@ prompt() {
 	T send-keys -t "t:$1" "$2"
 	wait_for "$1" "$3:" 5
 	T send-keys -t "t:$1" C-u
-	T send-keys -t "t:$1" -l "$4"
+	T send-keys -t "t:$1" -l -- "$4"	# "--": a value may start with "-"
 	T send-keys -t "t:$1" Enter
 }
 # A window per workbench, started through a shell that leaves its pid.
