@@ -42,10 +42,13 @@ static int tui_confirm_discards(const struct tui *t, const struct tui_key *k,
 	case 'h': case 'j': case 'k': case 'l':
 		return !t->cursor_mode;		/* they move the load */
 	}
+	/* a and x edit only in the block cursor mode; outside it they
+	 * say "Tab first" and end nothing */
+	if (k->fn == tui_edit_key_block)
+		return t->cursor_mode;
 	return k->fn == tui_edit_key_undo || k->fn == tui_edit_key_friction ||
 	       k->fn == tui_edit_key_depth || k->fn == tui_edit_key_turn ||
-	       k->fn == tui_edit_key_bond || k->fn == tui_edit_key_prompt ||
-	       k->fn == tui_edit_key_block;
+	       k->fn == tui_edit_key_bond || k->fn == tui_edit_key_prompt;
 }
 
 int tui_confirm_ask(struct tui *t, const struct tui_key *k, int ch)

@@ -14,6 +14,7 @@
 #     (about 1 a second) would leave only twice that room;
 #   - T sets the worker threads (the speed line says how many);
 #   - G sets the design load (the pane shows P(λ <= design ...));
+#   - x outside the block cursor mode says "Tab first" and asks nothing;
 #   - q after more than SLIPWALL_CONFIRM_SECONDS of sampling asks; n
 #     keeps the run, y quits;
 #   - at 80x24, a wall with tests and a design load keeps at least 3
@@ -70,6 +71,14 @@ else
 	not_ok "G: the pane shows P(λ <= design 0.5)" "$(screen p)"
 fi
 
+# x outside the block cursor mode edits nothing: it says so, and does not
+# ask to end the run first
+T send-keys -t t:p x
+if wait_for p 'Tab first: the block cursor' 5 && ! screen_has p 'of sampling \(a new run\)\?'; then
+	ok "x outside the block cursor: 'Tab first', no question"
+else
+	not_ok "x outside the block cursor: 'Tab first', no question" "$(screen p)"
+fi
 T send-keys -t t:p q
 if wait_for p 'quit and end .* of sampling\? y yes' 5; then
 	ok "q after the threshold asks"
