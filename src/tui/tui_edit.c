@@ -504,6 +504,11 @@ void tui_edit_key_prompt(struct tui *t, int ch)
 	const struct wall *w = t->w;
 	char buf[128];
 	int l;
+	if ((ch == 'c' || ch == 'L' || ch == 'w') && !w->layout.present) {
+		/* say it before the prompt, as b and B do */
+		tui_message(t, 1, "this wall has no generated layout to change");
+		return;
+	}
 	switch (ch) {
 	case 'g':
 		snprintf(buf, sizeof buf, "%.4g,%.4g", w->mu_bed, w->mu_head);

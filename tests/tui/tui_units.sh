@@ -34,6 +34,15 @@ else
 	not_ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda" "$(screen h)"
 fi
 
+# the block is given by its vertices: c (courses) says at once that there
+# is no layout to change, not after a prompt of "courses: 0"
+T send-keys -t t:h c
+if wait_for h 'this wall has no generated layout to change' 5 && ! screen_has h 'courses: '; then
+	ok "c on a wall without a layout: said at once, no prompt"
+else
+	not_ok "c on a wall without a layout: said at once, no prompt" "$(screen h)"
+fi
+
 # a body load on the same block (0.4 x 0.8 m, friction 0.6) at depth 0
 # tips at a seismic coefficient of b/h = 0.5: the run history's row says
 # so, as the statistics pane does (it said "(load factor)")
