@@ -121,15 +121,17 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	struct mc_progress pg;
 	tui_run_progress(t, &pg);
 	double v[4];
+	/* the threads the run's last pool had: T sets the next pool's */
+	int th = t->run.cfg.threads > 0 ? t->run.cfg.threads : t->threads;
 	if (ta->samples > 0 && rate < 1) {
 		v[0] = 1 / rate;
 		snprintf(line, sizeof line, "speed    %%s s a sample, %d thread%s",
-			 t->threads, tui_s(t->threads));
+			 th, tui_s(th));
 		tui_stats_nums(p, line, 0, 1, v);
 	} else if (ta->samples > 0 || pg.oldest < 1) {
 		tui_stats_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
 		snprintf(line, sizeof line, "speed    %s /s on %d thread%s", a,
-			 t->threads, tui_s(t->threads));
+			 th, tui_s(th));
 		tui_stats_text(p, line);
 	} else {
 		tui_stats_text(p, "speed    none finished yet");

@@ -5,7 +5,8 @@
 # 209.28 N, and the statistics pane shows 209.3 (N) for the run's
 # median and for the standard solution, never lambda = 418.56; under a
 # body load of magnitude 0.5 the run history gives its p05 as the
-# seismic coefficient b/h = 0.5.
+# seismic coefficient b/h = 0.5; T on a finished run leaves its speed
+# line's threads; c on a wall without a layout says so at once.
 #
 # Usage (from the source root): bash tests/tui/tui_units.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -32,6 +33,17 @@ if screen_has h 'p05 +209\.3 +p50 +209\.3' && screen_has h 'sd +[0-9.e+-]+ +\(N\
 	ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda"
 else
 	not_ok "magnitude 0.5: the pane shows the force, 209.3 N, not lambda" "$(screen h)"
+fi
+
+# T on a finished run sets the next run's threads: the speed line keeps
+# the threads this run had (it said "on 3 threads" for a run on 2)
+th=$(screen h | sed -n 's/.*speed .* on \([0-9]*\) thread.*/\1/p; s/.*speed .* s a sample, \([0-9]*\) thread.*/\1/p' | head -n 1)
+prompt h T threads 7
+if [ -n "$th" ] && wait_for h '7 threads from the next sampling' 5 &&
+   screen_has h "speed .*(on $th thread|, $th thread)" && ! screen_has h 'speed .*7 threads'; then
+	ok "T 7 on a finished run: the speed line keeps its $th thread(s)"
+else
+	not_ok "T 7 on a finished run: the speed line keeps its thread count ($th)" "$(screen h)"
 fi
 
 # the block is given by its vertices: c (courses) says at once that there
