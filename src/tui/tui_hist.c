@@ -335,7 +335,11 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (rows < 1 || w < 10)
 		return;
 	if (!have) {
-		tui_text(y0 + 1, x0, w, "waiting for accepted samples...");
+		/* a run that has ended waits for nothing */
+		tui_text(y0 + 1, x0, w, t->run.mc ? "waiting for accepted "
+			 "samples..." : t->run.tally.samples > 0 ?
+			 "no sample accepted (the rejections are counted "
+			 "on the right)" : "no samples");
 		return;
 	}
 	int cols = tui_hist_bars(t, y0, x0, rows, w, &a);

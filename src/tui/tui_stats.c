@@ -322,8 +322,12 @@ static void tui_stats_tail(struct tui *t, struct tui_lines *p)
 	}
 	const struct family_set *fs = tui_run_families(t);
 	int nf = fs ? fs->nfam : 0;
-	snprintf(line, sizeof line, "%d mechanism%s in %d famil%s; m/M shows "
-		 "them", ta->nmech, tui_s(ta->nmech), nf, nf == 1 ? "y" : "ies");
+	if (ta->nmech > 0)
+		snprintf(line, sizeof line, "%d mechanism%s in %d famil%s; m/M "
+			 "shows them", ta->nmech, tui_s(ta->nmech), nf,
+			 nf == 1 ? "y" : "ies");
+	else
+		snprintf(line, sizeof line, "no mechanism yet");
 	p->opt = 3;
 	tui_stats_text(p, line);
 	p->opt = 0;
@@ -340,8 +344,13 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 	/* twice: first the lines of each level counted, then drawn with
 	 * the levels that fit (the lowest-priority ones dropped first) */
 	for (int pass = 0; pass < 2; pass++) {
-		snprintf(line, sizeof line, "samples  %ld / %ld  %s", ta->samples,
-			 t->run.target, tui_run_state(t));
+		if (ta->samples > t->run.target)	/* n lowered below it */
+			snprintf(line, sizeof line, "samples  %ld  %s (%ld "
+				 "asked)", ta->samples, tui_run_state(t),
+				 t->run.target);
+		else
+			snprintf(line, sizeof line, "samples  %ld / %ld  %s",
+				 ta->samples, t->run.target, tui_run_state(t));
 		tui_stats_text(&p, line);
 		tui_stats_speed(t, &p);
 		tui_stats_counts(t, &p);

@@ -405,7 +405,8 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 			 r->latest_index + 1, ta->nmech);
 		return 1;
 	}
-	snprintf(label, len, "no mechanism yet");
+	snprintf(label, len, r->mc || ta->samples == 0 ? "no mechanism yet" :
+		 "no mechanism: no sample accepted");
 	return 0;
 }
 

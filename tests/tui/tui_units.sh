@@ -6,7 +6,9 @@
 # median and for the standard solution, never lambda = 418.56; under a
 # body load of magnitude 0.5 the run history gives its p05 as the
 # seismic coefficient b/h = 0.5; T on a finished run leaves its speed
-# line's threads; c on a wall without a layout says so at once.
+# line's threads; c on a wall without a layout says so at once; n below
+# the samples done says "30 done (5 asked)"; a run that ended with no
+# sample accepted says so instead of waiting.
 #
 # Usage (from the source root): bash tests/tui/tui_units.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -53,6 +55,23 @@ if wait_for h 'this wall has no generated layout to change' 5 && ! screen_has h 
 	ok "c on a wall without a layout: said at once, no prompt"
 else
 	not_ok "c on a wall without a layout: said at once, no prompt" "$(screen h)"
+fi
+
+# n below the samples done: the run is done with more than were asked
+prompt h n samples 5
+if wait_for h 'samples +30 +done \(5 asked\)' 5; then
+	ok "n 5 after 30 samples: 'samples 30 done (5 asked)', not '30 / 5'"
+else
+	not_ok "n 5 after 30 samples: 'samples 30 done (5 asked)'" "$(screen h)"
+fi
+# friction 0: every sample is rejected; the ended run does not read as
+# one still waiting for samples
+prompt h g friction 0
+if wait_run h 2 done 30 && wait_for h 'no sample accepted \(the rejections' 5 &&
+   screen_has h 'no mechanism: no sample accepted' && ! screen_has h 'waiting for'; then
+	ok "friction 0, every sample rejected: the ended run says 'no sample accepted', waits for nothing"
+else
+	not_ok "friction 0: the ended run says 'no sample accepted'" "$(screen h)"
 fi
 
 # a body load on the same block (0.4 x 0.8 m, friction 0.6) at depth 0
