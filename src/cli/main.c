@@ -49,13 +49,18 @@ static void usage(FILE *f)
  * pipe) is a failure, not a silent success. */
 static int finish(int rc)
 {
+	int before = errno;
 	errno = 0;
 	if (fflush(stdout) != 0 || ferror(stdout)) {
-		/* errno is the flush's; a write that failed earlier left
-		 * only stdout's error mark, and errno is another call's
-		 * (sweep --csv F | true said "Success") */
-		fprintf(stderr, "slipwall: standard output: %s\n", errno ?
-			strerror(errno) : "a write failed (a closed pipe or a "
+		/* errno is the flush's.  A write that failed earlier left
+		 * only stdout's error mark: errno is its reason if it is a
+		 * write's (a full disk: ENOSPC), else another call's (sweep
+		 * --csv F | true said "Success") */
+		int e = errno ? errno : before;
+		int wr = e == EPIPE || e == ENOSPC || e == EIO || e == EFBIG ||
+			 e == EDQUOT;
+		fprintf(stderr, "slipwall: standard output: %s\n", wr ?
+			strerror(e) : "a write failed (a closed pipe or a "
 			"full disk): the output is incomplete");
 		return rc ? rc : 1;
 	}
