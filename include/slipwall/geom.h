@@ -27,6 +27,9 @@ void geom_centroid(const double *xy, int nv, double *cx, double *cy);
  * for a polygon of no area, which geom_check_polygon refuses). */
 #define GEOM_PRECISION_REL 1e-8
 int geom_far_vertex(const double *xy, int nv);
+/* The polygon's thickness (its area over its largest extent, as
+ * geom_far_vertex reads it) over that extent: 0 for no area. */
+double geom_thinness(const double *xy, int nv);
 
 enum geom_shape {
 	GEOM_OK,

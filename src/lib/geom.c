@@ -55,7 +55,8 @@ double geom_area(const double *xy, int nv)
 	return a / 2 * s * s;
 }
 
-int geom_far_vertex(const double *xy, int nv)
+/* The largest side of the polygon's bounding box. */
+static double extent_of(const double *xy, int nv)
 {
 	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
 	for (int i = 0; i < nv; i++) {
@@ -64,7 +65,19 @@ int geom_far_vertex(const double *xy, int nv)
 		y0 = fmin(y0, xy[2 * i + 1]);
 		y1 = fmax(y1, xy[2 * i + 1]);
 	}
-	double extent = fmax(x1 - x0, y1 - y0);
+	return fmax(x1 - x0, y1 - y0);
+}
+
+double geom_thinness(const double *xy, int nv)
+{
+	double extent = extent_of(xy, nv);
+	double t = fabs(geom_area(xy, nv)) / (extent * extent);
+	return isfinite(t) ? t : 0;
+}
+
+int geom_far_vertex(const double *xy, int nv)
+{
+	double extent = extent_of(xy, nv);
 	double thick = fabs(geom_area(xy, nv)) / extent;
 	if (!(thick > 0) || !isfinite(thick))
 		return -1;	/* degenerate: geom_check_polygon says so */

@@ -362,25 +362,9 @@ const char wall_far_text[] = "is too far from the origin for the size of "
 	"thickness apart (docs/wall-format.md, \"Coordinates far from the "
 	"origin\"): move the wall nearer the origin";
 
-/* A polygon's thickness (area over its extent, geom_far_vertex's) over
- * its extent; 0 when it has no area. */
-static double thinness(const double *xy, int nv)
-{
-	double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
-	for (int i = 0; i < nv; i++) {
-		x0 = fmin(x0, xy[2 * i]);
-		x1 = fmax(x1, xy[2 * i]);
-		y0 = fmin(y0, xy[2 * i + 1]);
-		y1 = fmax(y1, xy[2 * i + 1]);
-	}
-	double extent = fmax(x1 - x0, y1 - y0);
-	double t = fabs(geom_area(xy, nv)) / (extent * extent);
-	return isfinite(t) ? t : 0;
-}
-
 const char *wall_thin_text(const double *xy, int nv, char *buf, size_t len)
 {
-	double t = thinness(xy, nv);
+	double t = geom_thinness(xy, nv);
 	/* some coordinate of a polygon of extent E is at least E/2 from 0,
 	 * wherever it lies: its spacing E 2^-53 against 1e-8 of t E */
 	if (!(t > 0) || ldexp(1, -53) <= GEOM_PRECISION_REL * t)
