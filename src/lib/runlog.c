@@ -227,13 +227,14 @@ static const char *fixed_names[FIXED_COLS] = {
 #define ROWS_MAX 1000000000L
 #define POSITIONS_MAX ((size_t)8 << 30)	/* bytes of positions held */
 
-/* A CSV file being read: the current line split in place into fields,
- * each with its 1-based column for messages. */
-/* A data row's `sample` number and the line it is on (check_ids). */
+/* A data row's `sample` number and the line it is on (check_ids): both
+ * below ROWS_MAX + 2, so 8 bytes a row, as much as an accepted load. */
 struct row_id {
-	long sample, line;
+	int sample, line;
 };
 
+/* A CSV file being read: the current line split in place into fields,
+ * each with its 1-based column for messages. */
 struct reader {
 	const char *path;
 	FILE *f;
@@ -456,7 +457,7 @@ static enum sw_status check_row(struct reader *r, int m, int *status,
 		r->ids = sw_xrealloc(r->ids, sizeof *r->ids *
 				     (size_t)r->capids);
 	}
-	r->ids[r->nids++] = (struct row_id){id, r->lineno};
+	r->ids[r->nids++] = (struct row_id){(int)id, (int)r->lineno};
 	*status = sample_status_parse(r->field[1]);
 	if (*status < 0)
 		return at(r, 1, err, "unknown status (accepted or a "
@@ -489,8 +490,8 @@ static enum sw_status check_ids(struct reader *r, char *err)
 	long i = worst;
 	while (i > 0 && r->ids[i - 1].sample == r->ids[worst].sample)
 		i--;
-	return sw_fail(err, SW_EINPUT, "%s:%ld:1: sample %ld again (first on "
-		       "line %ld): every sample once (two runs' files joined?)",
+	return sw_fail(err, SW_EINPUT, "%s:%d:1: sample %d again (first on "
+		       "line %d): every sample once (two runs' files joined?)",
 		       r->path, r->ids[worst].line, r->ids[worst].sample,
 		       r->ids[i].line);
 }

@@ -65,11 +65,10 @@
 
 #include <yaml.h>
 
-#include "slipwall/text.h"
-
 #include "slipwall/geom.h"
 #include "slipwall/layout.h"
 #include "slipwall/outfile.h"
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "wallkeep.h"
 
@@ -267,7 +266,6 @@ static int reader_map(struct reader *r, yaml_node_t *n, const char *what,
 	}
 	return 0;
 }
-
 
 static int is_nonfinite_word(const char *s)
 {
