@@ -20,6 +20,7 @@
  * was written through it).  runlog_create then opens the empty file the
  * session made.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <limits.h>
 #include <fcntl.h>
@@ -32,6 +33,39 @@
 #include "slipwall/wallfile.h"
 #include "tui.h"
 
+/* The length of stem without a run's stamp "-YYYYMMDD-HHMMSS-N" or
+ * "-YYYYMMDD-HHMMSS-N.K" at its end (tui_file_csv_path's), or its whole
+ * length: a run's wall reopened from H is named by the wall it came
+ * from, not by every stamp of its reopenings. */
+static size_t stem_without_stamp(const char *s)
+{
+	size_t n = strlen(s), i = n;
+	int dot = 0;
+	for (;;) {	/* the run number, and a ".K" after it */
+		size_t e = i;
+		while (i > 0 && isdigit((unsigned char)s[i - 1]))
+			i--;
+		if (i == e)
+			return n;
+		if (!dot && i > 0 && s[i - 1] == '.') {
+			dot = 1;
+			i--;
+			continue;
+		}
+		break;
+	}
+	static const int width[2] = {6, 8};	/* HHMMSS, YYYYMMDD */
+	for (int k = 0; k < 2; k++) {
+		if (i < 1 || s[i - 1] != '-')
+			return n;
+		i--;
+		for (int d = 0; d < width[k]; d++, i--)
+			if (i < 1 || !isdigit((unsigned char)s[i - 1]))
+				return n;
+	}
+	return i > 1 && s[i - 1] == '-' ? i - 1 : n;
+}
+
 void tui_file_stem(const struct wall *w, char *out, size_t len)
 {
 	const char *p = w->path ? w->path : (w->name ? w->name : "wall");
@@ -40,6 +74,7 @@ void tui_file_stem(const struct wall *w, char *out, size_t len)
 	char *dot = strrchr(out, '.');
 	if (dot && dot != out && (!strcmp(dot, ".yaml") || !strcmp(dot, ".yml")))
 		*dot = 0;
+	out[stem_without_stamp(out)] = 0;
 	for (char *s = out; *s; s++)
 		if (*s == ' ' || *s == '/' || (unsigned char)*s < 32)
 			*s = '_';

@@ -94,6 +94,14 @@ else
 	not_ok "o in H reopens run 1's wall" "$(screen w)"
 fi
 wait_run w 3 done 60
+# run 3's files are named by the wall it came from (demo-STAMP-3.csv),
+# not by run 1's file name and a second stamp
+c3=$(run_csv 3)
+if [ -n "$c3" ] && basename "$c3" | grep -qE '^demo-[0-9]{8}-[0-9]{6}-3(\.[0-9]+)?\.csv$'; then
+	ok "the reopened wall's run is named demo-STAMP-3.csv ($(basename "$c3"))"
+else
+	not_ok "the reopened wall's run is named demo-STAMP-3.csv" "$c3"
+fi
 T send-keys -t t:w H
 wait_for w '^ run history: 3 runs this session' 5
 T send-keys -t t:w k Enter
