@@ -92,6 +92,8 @@ struct tui_run {
 	char what[96];		/* what this run changed (the history) */
 	double active;		/* seconds spent sampling before t_start */
 	double t_start;		/* when the current pool started */
+	double apriori;		/* tui_pace_apriori of its wall at its start */
+	char wall_path[PATH_MAX];	/* its wall's file ("" for none) */
 };
 
 /* The sample browser (tui_browse.c): the run's latest samples, kept in
@@ -180,6 +182,11 @@ struct tui {
 	double prev_p05;	/* the previous run's p05 (tui_compare_p05) */
 	int threads;
 	long target;		/* samples per run; 0: the wall's analysis.samples */
+	/* the last run that took a sample: its worker seconds a sample,
+	 * the a-priori figure of its wall and that wall's file, which seed
+	 * the next run's a-priori figure (tui_pace_apriori) */
+	double pace_s, pace_apriori;
+	char pace_path[PATH_MAX];
 	/* called when a run ends, its file closed and its tally whole
 	 * (tui_main sets tui_history_record): tui_run.c calls nothing above
 	 * it */
@@ -522,6 +529,10 @@ int tui_keys_help(int line, char *buf, size_t len);
 int tui_pace_left(struct tui *t, double *left, double *total);
 /* Seconds the current run has sampled (its pools' lifetimes). */
 double tui_pace_sampled(const struct tui *t);
+/* The a-priori seconds of a sample of the wall: mc_sample_seconds, or
+ * after an edit of the same wall file the last run's measured figure
+ * (tui_pace.c). */
+double tui_pace_apriori(const struct tui *t);
 /* The keys of tui_knobs.c (tui_keys.c's table): */
 void tui_knobs_key_threads(struct tui *t, int ch);	/* T */
 void tui_knobs_key_design(struct tui *t, int ch);	/* G */

@@ -138,14 +138,22 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	}
 	/* a wall whose first sample will be slow says so from the start,
 	 * with the a-priori estimate (rough: src/lib/mc.c, "Estimate") */
-	double est = mc_sample_seconds(wall);
+	double est = t->run.apriori > 0 ? t->run.apriori :
+		     tui_pace_apriori(t);
+	int measured = est != mc_sample_seconds(wall);
 	if (ta->samples == 0 && est >= 1) {
 		p->opt = 3;
 		mc_about(a, sizeof a, est);
-		snprintf(line, sizeof line, "first    %s a sample (a wall of %d "
-			 "interfaces; rough)", a, wall->nifaces);
+		if (measured)
+			snprintf(line, sizeof line, "first    %s a sample (as "
+				 "the last run of this wall)", a);
+		else
+			snprintf(line, sizeof line, "first    %s a sample (a "
+				 "wall of %d interfaces; rough)", a,
+				 wall->nifaces);
 		if (tui_cols(line) > w)
-			snprintf(line, sizeof line, "first    %s (estimate)", a);
+			snprintf(line, sizeof line, "first    %s (%s)", a,
+				 measured ? "as the last run" : "estimate");
 		tui_stats_text(p, line);
 		p->opt = 0;
 	}
@@ -168,7 +176,8 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 			snprintf(line, sizeof line, "left     %s%s of %s%s",
 				 how == 1 ? "about " : "~", b, how == 1 ? "" : "~", c);
 			if (tui_cols(line) + 11 <= w)
-				strcat(line, how == 1 ? " (a priori)" : " (estimate)");
+				strcat(line, how == 2 ? " (estimate)" : measured ?
+				       " (last run)" : " (a priori)");
 			tui_stats_text(p, line);
 		}
 	}

@@ -29,6 +29,10 @@
 #     after the first, within SLIPWALL_PACE_LARGE_CAP (420 s); fewer by
 #     then is a failure.
 #
+#   - after an edit (f), the first sample's estimate is the last run's
+#     measured time a sample ("as the last run of this wall", the time
+#     left "(last run)"), not the wall's a-priori figure.
+#
 # Not in the fast tier (75 s to a few minutes).  Usage (from the source root):
 # bash tests/tui/tui_pace_large.sh SLIPWALL.  TAP output; skips when
 # tmux is missing.
@@ -91,6 +95,16 @@ while :; do
 		break
 	sleep 5
 done
+# an edit (f, friction +0.05) starts run 2 of the same wall: its first
+# estimate is the last run's measured time a sample, not the wall's
+# a-priori figure (about 6 min here, 12 times the measured one)
+T send-keys -t t:l f
+within 10 screen_has l 'of sampling \(a new run\)\?' && T send-keys -t t:l y
+if wait_for l 'first +about .*\(as the last run' 10 && screen_has l 'left  .*\(last run\)'; then
+	ok "after f: the first sample's estimate and the time left are the last run's ($(screen l | grep -o 'first .*run)\?'))"
+else
+	not_ok "after f: the first sample's estimate is the last run's" "$(screen l)"
+fi
 T send-keys -t t:l q
 within 10 screen_has l 'quit and end'  && T send-keys -t t:l y
 readings=$(tr '\n' ';' <"$log")
