@@ -100,7 +100,8 @@ done
 # a-priori figure (about 6 min here, 12 times the measured one)
 T send-keys -t t:l f
 within 10 screen_has l 'of sampling \(a new run\)\?' && T send-keys -t t:l y
-if wait_for l 'first +about .*\(as the last run' 10 && screen_has l 'left  .*\(last run\)'; then
+# (the left line shows once the new pool's workers have started: wait)
+if wait_for l 'first +about .*\(as the last run' 10 && wait_for l 'left  .*\(last run\)' 10; then
 	ok "after f: the first sample's estimate and the time left are the last run's ($(screen l | grep -o 'first .*run)\?'))"
 else
 	not_ok "after f: the first sample's estimate is the last run's" "$(screen l)"
