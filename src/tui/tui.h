@@ -93,7 +93,6 @@ struct tui_run {
 	double active;		/* seconds spent sampling before t_start */
 	double t_start;		/* when the current pool started */
 	double apriori;		/* tui_pace_apriori of its wall at its start */
-	char wall_path[PATH_MAX];	/* its wall's file ("" for none) */
 };
 
 /* The sample browser (tui_browse.c): the run's latest samples, kept in

@@ -39,8 +39,7 @@ int tui_pace_left(struct tui *t, double *left, double *total)
 		.sampled = tui_pace_sampled(t),
 		.done = (double)r->done,
 		.target = (double)r->target,
-		.apriori = t->run.apriori > 0 ? t->run.apriori :
-			   tui_pace_apriori(t),
+		.apriori = r->apriori,
 	};
 	if (!tui_run_progress(t, &in.now))
 		return 0;

@@ -132,16 +132,8 @@ void tui_run_start(struct tui *t)
 	const struct wall *w = t->w;
 	char err[SW_ERRLEN];
 
-	/* the run it replaces, measured: its worker seconds a sample seed
-	 * this run's a-priori figure (tui_pace_apriori) */
-	if (r->done > 0 && r->cfg.threads > 0 && r->active > 0) {
-		t->pace_s = r->active * r->cfg.threads / (double)r->done;
-		t->pace_apriori = r->apriori;
-		snprintf(t->pace_path, sizeof t->pace_path, "%s", r->wall_path);
-	}
 	memset(r, 0, sizeof *r);
 	r->apriori = tui_pace_apriori(t);
-	snprintf(r->wall_path, sizeof r->wall_path, "%s", w->path ? w->path : "");
 	r->target = t->target > 0 ? t->target : (w->samples > 0 ? w->samples : 1000);
 	r->latest_index = -1;
 	r->latest_joint = calloc((size_t)w->nifaces + 1, 1);
@@ -197,6 +189,14 @@ void tui_run_end(struct tui *t)
 	if (!r->latest_joint)
 		return;		/* never started */
 	tui_run_drain(t);
+	/* measured, while its wall is t->w: its worker seconds a sample
+	 * seed the next run's a-priori figure (tui_pace_apriori) */
+	if (r->done > 0 && r->cfg.threads > 0 && r->active > 0) {
+		t->pace_s = r->active * r->cfg.threads / (double)r->done;
+		t->pace_apriori = r->apriori;
+		snprintf(t->pace_path, sizeof t->pace_path, "%s",
+			 t->w->path ? t->w->path : "");
+	}
 	if (r->log && runlog_close(r->log, err) != SW_OK)
 		tui_message(t, 1, "samples file: %s", err);
 	r->log = NULL;

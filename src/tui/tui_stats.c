@@ -138,8 +138,7 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	}
 	/* a wall whose first sample will be slow says so from the start,
 	 * with the a-priori estimate (rough: src/lib/mc.c, "Estimate") */
-	double est = t->run.apriori > 0 ? t->run.apriori :
-		     tui_pace_apriori(t);
+	double est = t->run.apriori;
 	int measured = est != mc_sample_seconds(wall);
 	if (ta->samples == 0 && est >= 1) {
 		p->opt = 3;
@@ -350,6 +349,11 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 	char line[512];
 
 	tally_summary(ta, &s);
+	/* samples finished behind one still running are shown in order,
+	 * later: say how many (walls/facade.yaml read "2 / 20" for 10 s with
+	 * 17 more finished, and "left ~0 s") */
+	struct mc_progress pg;
+	long ahead = tui_run_progress(t, &pg) ? pg.ahead : 0;
 	/* twice: first the lines of each level counted, then drawn with
 	 * the levels that fit (the lowest-priority ones dropped first) */
 	for (int pass = 0; pass < 2; pass++) {
@@ -360,14 +364,10 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 		else
 			snprintf(line, sizeof line, "samples  %ld / %ld  %s",
 				 ta->samples, t->run.target, tui_run_state(t));
-		/* samples finished behind one still running are shown in
-		 * order, later: say how many (walls/facade.yaml read "2 / 20"
-		 * for 10 s with 17 more finished, and "left ~0 s") */
-		struct mc_progress pg;
-		if (tui_run_progress(t, &pg) && pg.ahead > 0) {
+		if (ahead > 0) {
 			size_t u = strlen(line);
 			snprintf(line + u, sizeof line - u, ", %ld more done",
-				 pg.ahead);
+				 ahead);
 		}
 		tui_stats_text(&p, line);
 		tui_stats_speed(t, &p);
