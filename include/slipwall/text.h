@@ -51,6 +51,9 @@ int text_utf8_len(const unsigned char *s);
  * success, -1 (and *out untouched) otherwise. */
 int text_parse_long(const char *s, long lo, long hi, long *out);
 int text_parse_double(const char *s, double *out);
+/* The length of a UTF-8 byte-order mark at the start of s (len bytes),
+ * as some editors and spreadsheets write one: 3, or 0 without one. */
+size_t text_bom(const char *s, size_t len);
 /* Is s a decimal number: [-+]digits[.digits][(e|E)[-+]digits], with
  * some digit?  The wall file's numbers and the options' alike. */
 int text_is_decimal(const char *s);

@@ -351,8 +351,8 @@ enum sw_status cli_read_tests(const char *path, double **out, long *nout,
 			*hash = 0;
 		char *p = line;
 		/* a byte-order mark, as some editors save UTF-8 */
-		if (lineno == 1 && !strncmp(p, "\xef\xbb\xbf", 3))
-			p += 3;
+		if (lineno == 1)
+			p += text_bom(p, strlen(p));
 		while (isspace((unsigned char)*p))
 			p++;
 		if (!*p)

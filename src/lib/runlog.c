@@ -365,10 +365,9 @@ static enum sw_status read_header(struct reader *r, int *m, char *err)
 			       "file", r->path, r->cut ? "an incomplete header "
 			       "(no end of line)" : "empty file");
 	/* a byte-order mark, as a spreadsheet saves UTF-8 */
-	if (!strncmp(r->field[0], "\xef\xbb\xbf", 3)) {
-		r->field[0] += 3;
-		r->col[0] += 3;
-	}
+	size_t bom = text_bom(r->field[0], strlen(r->field[0]));
+	r->field[0] += bom;
+	r->col[0] += (int)bom;
 	for (int k = 0; k < FIXED_COLS; k++) {
 		if (k >= r->nfield || strcmp(r->field[k], fixed_names[k])) {
 			char msg[128];

@@ -134,6 +134,11 @@ char *text_clean(const char *s)
 	return out;
 }
 
+size_t text_bom(const char *s, size_t len)
+{
+	return len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3) ? 3 : 0;
+}
+
 int text_is_decimal(const char *s)
 {
 	int digits = 0;

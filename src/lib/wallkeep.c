@@ -31,6 +31,7 @@
 #include <string.h>
 
 #include "slipwall/status.h"
+#include "slipwall/text.h"
 #include "wallkeep.h"
 
 /* One parsed text: its document and the byte offset of each character
@@ -57,11 +58,6 @@ struct wallkeep {
 	int np;
 };
 
-static size_t wallkeep_bom(const char *s, size_t len)
-{
-	return len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3) ? 3 : 0;
-}
-
 static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len,
 			  wallkeep_yaml_fn parse)
 {
@@ -73,7 +69,7 @@ static int wallkeep_parse(struct wallkeep_text *t, const char *s, size_t len,
 	t->off = sw_xmalloc(sizeof *t->off * (len + 1));
 	t->n = 0;
 	/* libyaml's marks do not count a byte order mark */
-	for (size_t i = wallkeep_bom(s, len); i < len; i++)
+	for (size_t i = text_bom(s, len); i < len; i++)
 		if (((unsigned char)s[i] & 0xc0) != 0x80)
 			t->off[t->n++] = i;
 	t->off[t->n] = len;
@@ -492,7 +488,7 @@ char *wallkeep_patch(const char *orig, size_t olen, const char *old,
 
 size_t wallkeep_header(const char *text, size_t len)
 {
-	size_t at = wallkeep_bom(text, len);
+	size_t at = text_bom(text, len);
 	while (at < len) {
 		size_t e = at;
 		while (e < len && text[e] != '\n')

@@ -1,7 +1,8 @@
 /*
  * test_text.c - numbers as people write them (text_parse_long,
  * text_parse_double, text_is_decimal: the options' and the wall file's
- * rule) and text_clean (what reaches a terminal).
+ * rule), text_bom (the wall, tests and samples files' readers) and
+ * text_clean (what reaches a terminal).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -50,6 +51,13 @@ static void test_parse(void)
 	tap_ok(text_parse_long("-", 0, 100, &l) == -1, "a sign alone is refused");
 }
 
+static void test_bom(void)
+{
+	tap_ok(text_bom("\xef\xbb\xbfsample", 9) == 3, "a UTF-8 byte-order mark is 3 bytes");
+	tap_ok(text_bom("\xef\xbb", 2) == 0, "two of its bytes are none");
+	tap_ok(text_bom("sample", 6) == 0, "text without one: 0");
+}
+
 static void test_clean(void)
 {
 	char *c = text_clean("a\033[2Jb\nc\td");
@@ -65,6 +73,7 @@ int main(void)
 {
 	test_decimal();
 	test_parse();
+	test_bom();
 	test_clean();
 	return tap_done();
 }
