@@ -81,14 +81,17 @@ void mc_progress(struct mc *m, struct mc_progress *p);
 /* The time left of a run (see mc.c, "Time left"): its workers, the
  * seconds it has sampled, the samples popped and its target, the
  * a-priori seconds of a sample (mc_sample_seconds), and its progress
- * now.  Writes the seconds left; returns 0 when the run is done, 1 when
- * the estimate is the a-priori one alone (no sample finished), 2 when it
- * comes from measured samples. */
+ * now.  Writes the seconds left and the estimate of one sample's worker
+ * seconds (*per); returns 0 when the run is done, 1 when the estimate is
+ * the a-priori one alone (no sample finished), 2 when it comes from
+ * measured samples, 3 when a sample in progress has already run longer
+ * than *per: *left is then the time of the samples not yet started
+ * alone, and how long the slow one will still take is not known. */
 struct mc_pace {
 	double threads, sampled, done, target, apriori;
 	struct mc_progress now;
 };
-int mc_pace_left(const struct mc_pace *in, double *left);
+int mc_pace_left(const struct mc_pace *in, double *left, double *per);
 
 /* A rough a-priori time of one sample of w on one core, in seconds,
  * before any sample has run (to say, on opening a large wall, that its

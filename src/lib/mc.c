@@ -73,6 +73,14 @@
  * then grew, before any sample was popped, from 16,930 s to 22,248 s on
  * walls/large.yaml (28 November 2026, tests/tui/tui_pace_large.sh).
  *
+ * A sample in progress counts as at most s above (min(A, b s)): past s
+ * it has outlived the estimate, and what it still needs is not known.
+ * A large wall's samples differ by ten times and more (docs/
+ * performance.md: 100 to 1,500 SLP iterations a sample on walls/
+ * body-1000.yaml), so a run's last samples can run for minutes after
+ * `left` has reached 0.  mc_pace_left says so (3): `left` is then the
+ * samples not yet started alone, a time the run takes at least.
+ *
  * Why w fades: e0 was fitted to a worker's first sample with its
  * workspace's set-up on a loaded machine (above), which on
  * walls/large.yaml is 10 to 40 times a later sample.  Counted as one
@@ -385,12 +393,13 @@ void mc_progress(struct mc *m, struct mc_progress *p)
 	pthread_mutex_unlock(&m->mu);
 }
 
-int mc_pace_left(const struct mc_pace *in, double *left)
+int mc_pace_left(const struct mc_pace *in, double *left, double *per)
 {
 	const struct mc_progress *pg = &in->now;
 	double T = in->threads > 0 ? in->threads : 1;
 	double N = in->target, d = in->done + (double)pg->ahead;
 	*left = 0;
+	*per = 0;
 	if (!(d < N))
 		return 0;
 	double spent = in->sampled * T - pg->total;
@@ -402,6 +411,9 @@ int mc_pace_left(const struct mc_pace *in, double *left)
 	double work = (N - d) * s - fmin(pg->total, pg->busy * s);
 	double par = fmin(T, N - d);
 	*left = fmax(0, work) / (par > 0 ? par : 1);
+	*per = s;
+	if (pg->busy > 0 && pg->oldest > s)
+		return 3;
 	return d > 0 ? 2 : 1;
 }
 

@@ -31,7 +31,7 @@ double tui_pace_apriori(const struct tui *t)
 	return e;
 }
 
-int tui_pace_left(struct tui *t, double *left, double *total)
+int tui_pace_left(struct tui *t, double *left, double *total, double *per)
 {
 	const struct tui_run *r = &t->run;
 	struct mc_pace in = {
@@ -43,7 +43,7 @@ int tui_pace_left(struct tui *t, double *left, double *total)
 	};
 	if (!tui_run_progress(t, &in.now))
 		return 0;
-	int how = mc_pace_left(&in, left);
+	int how = mc_pace_left(&in, left, per);
 	*total = in.sampled + *left;
 	return how;
 }

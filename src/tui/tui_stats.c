@@ -156,8 +156,8 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 		tui_stats_text(p, line);
 		p->opt = 0;
 	}
-	double left, total;
-	int how = tui_pace_left(t, &left, &total);
+	double left, total, per;
+	int how = tui_pace_left(t, &left, &total, &per);
 	if (pg.busy > 0 && (pg.oldest >= 1 || (how && total >= 10 &&
 						 (ta->samples == 0 || rate < 2)))) {
 		tui_duration(a, sizeof a, pg.oldest);
@@ -166,7 +166,26 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 		p->opt = 2;
 		tui_stats_text(p, line);
 		p->opt = 0;
-		if (how) {
+		if (how == 3) {
+			/* a sample has outlived the estimate of one: what
+			 * it still needs is not known, and the samples not
+			 * started are a time the run takes at least (a run's
+			 * last slow sample read "left ~0 s" for minutes) */
+			char c[32];
+			tui_duration(b, sizeof b, left);
+			tui_duration(c, sizeof c, per);
+			char first[48];
+			if (left >= 1)
+				snprintf(first, sizeof first, "> ~%s", b);
+			else
+				snprintf(first, sizeof first, "unknown");
+			snprintf(line, sizeof line, "left     %s: the oldest has "
+				 "run past a sample's ~%s", first, c);
+			if (tui_cols(line) > w)
+				snprintf(line, sizeof line, "left     %s (a slow "
+					 "sample)", first);
+			tui_stats_text(p, line);
+		} else if (how) {
 			/* an estimate, never a bound that only grows
 			 * (tui_pace.c) */
 			char c[32];

@@ -587,14 +587,14 @@ static void test_estimate(const struct wall *demo)
 static void test_pace(const struct wall *w)
 {
 	struct mc_pace in = {.threads = 2, .target = 100, .apriori = 300};
-	double left, t10, t59, t100, told;
+	double left, per, t10, t59, t100, told;
 	in.sampled = 10;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 10, .total = 20};
-	int h10 = mc_pace_left(&in, &left);
+	int h10 = mc_pace_left(&in, &left, &per);
 	t10 = in.sampled + left;
 	in.sampled = 59;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 59, .total = 118};
-	int h59 = mc_pace_left(&in, &left);
+	int h59 = mc_pace_left(&in, &left, &per);
 	t59 = in.sampled + left;
 	tap_ok(h10 == 1 && h59 == 1 && fabs(t10 - 15000) < 1e-6 &&
 	       fabs(t59 - 15000) < 1e-6,
@@ -605,10 +605,10 @@ static void test_pace(const struct wall *w)
 	in.sampled = 100;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 100, .total = 140,
 				       .ahead = 1};
-	int h100 = mc_pace_left(&in, &left);
+	int h100 = mc_pace_left(&in, &left, &per);
 	t100 = in.sampled + left;
 	in.now.ahead = 0;
-	mc_pace_left(&in, &left);
+	mc_pace_left(&in, &left, &per);
 	told = in.sampled + left;
 	tap_ok(h100 == 2 && t100 <= t59 && fabs(t100 - 6960) < 1e-6 &&
 	       told > t59,
@@ -616,8 +616,35 @@ static void test_pace(const struct wall *w)
 	       "total falls to %.1f s (6,960 s), where without it it grew "
 	       "to %.1f s", t100, told);
 	in.done = 100;
-	tap_ok(mc_pace_left(&in, &left) == 0 && left == 0,
+	tap_ok(mc_pace_left(&in, &left, &per) == 0 && left == 0,
 	       "time left: nothing to say once the target is popped");
+
+	/* a slow sample at the end: 9 of 10 done in 100 s on 2 workers,
+	 * the last one 40 s old, the other worker idle.  A sample took
+	 * (200 - 40) / 9 = 17.8 worker seconds; the last one has outlived
+	 * that, and the time it still needs is not known (the display said
+	 * "left ~0 s" for as long as it ran) */
+	struct mc_pace end = {.threads = 2, .target = 10, .done = 9,
+			      .sampled = 100, .apriori = 300,
+			      .now = {.busy = 1, .oldest = 40, .total = 40}};
+	int hend = mc_pace_left(&end, &left, &per);
+	tap_ok(hend == 3 && left == 0 && fabs(per - 160.0 / 9) < 1e-9,
+	       "time left: the last sample has outlived a sample's %.1f s "
+	       "(17.8 s): unknown (%d, left %.1f s)", per, hend, left);
+	/* in the middle of the run (20 samples): the samples not started
+	 * are the time left at least, 11 at 150 / 9 s, less the 2 s
+	 * running counted as done, on 2 workers: 75 s */
+	end.target = 20;
+	end.now = (struct mc_progress){.busy = 2, .oldest = 40, .total = 50};
+	hend = mc_pace_left(&end, &left, &per);
+	tap_ok(hend == 3 && fabs(left - 75) < 1e-9,
+	       "time left: a slow sample in the middle: at least the samples "
+	       "not started, %.1f s (75 s)", left);
+	end.now = (struct mc_progress){.busy = 2, .oldest = 15, .total = 25};
+	hend = mc_pace_left(&end, &left, &per);
+	tap_ok(hend == 2 && per > 15,
+	       "time left: no sample past the estimate (%.1f s) is the "
+	       "estimate (%d)", per, hend);
 
 	char err[SW_ERRLEN];
 	struct mc_config cfg;
