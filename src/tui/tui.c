@@ -47,8 +47,28 @@ static void tui_switch_screen(struct tui *t, enum tui_screen_id id)
 	tui_screens[id].init(t);
 }
 
+/* Below the least size the screen shows none of the workbench. */
+static int tui_small(const struct tui *t)
+{
+	return t->rows < TUI_MIN_ROWS || t->cols < TUI_MIN_COLS;
+}
+
 static void tui_key(struct tui *t, int ch)
 {
+	/* too small a terminal: q quits (its question, after a long run,
+	 * is drawn on the small screen, and the next key answers it), from
+	 * whatever screen; any other key would edit a wall or end a run
+	 * that nobody sees, and waits for a larger terminal instead */
+	if (tui_small(t) && !t->confirm_key) {
+		if (ch != 'q' && ch != 'Q') {
+			t->small_keys = 1;
+			return;
+		}
+		if (t->prompting)	/* a prompt nobody sees: dropped */
+			tui_prompt_cancel(t, 27);
+		if (t->screen != TUI_SCREEN_MAIN)
+			tui_switch_screen(t, TUI_SCREEN_MAIN);
+	}
 	t->note[0] = 0;		/* seen: the key was the answer */
 	enum tui_screen_id next = tui_screens[t->screen].key(t, ch);
 	if (next != t->screen)
@@ -59,7 +79,7 @@ static void tui_draw(struct tui *t)
 {
 	getmaxyx(stdscr, t->rows, t->cols);
 	erase();
-	if (t->rows < TUI_MIN_ROWS || t->cols < TUI_MIN_COLS) {
+	if (tui_small(t)) {
 		char buf[128];
 		snprintf(buf, sizeof buf,
 			 "terminal too small: %dx%d, the workbench needs %dx%d",
@@ -67,7 +87,13 @@ static void tui_draw(struct tui *t)
 		mvaddnstr(0, 0, buf, t->cols);
 		mvaddnstr(t->rows > 1 ? 1 : 0, 0, "(sampling goes on; q quits)",
 			  t->cols);
+		/* q's question, or why the other keys did nothing */
+		const char *why = t->confirm_key ? t->msg : t->small_keys ?
+			"(other keys wait for a larger terminal)" : "";
+		if (t->rows > 2)
+			mvaddnstr(2, 0, why, t->cols);
 	} else {
+		t->small_keys = 0;
 		tui_screens[t->screen].draw(t);
 	}
 	refresh();

@@ -260,6 +260,9 @@ struct tui {
 	 * for y (tui_confirm.c); NULL: none waits */
 	const struct tui_key *confirm_key;
 	int confirm_ch;
+	/* a key other than q came while the terminal was too small (tui.c:
+	 * it waits for a larger one, and the small screen says so) */
+	int small_keys;
 
 	int quit;
 };

@@ -157,4 +157,43 @@ else
 	not_ok "the last sample outlives the others: the time left is unknown" "$(screen f)"
 fi
 
+# A terminal too small for the workbench (40x10): f, an edit nobody
+# would see, waits for a larger terminal (the run goes on: no run 2);
+# q after a long run asks on the small screen, and y quits.  Before,
+# f edited the wall unseen, and q's question was not drawn, so "q
+# quits" did not.
+T send-keys -t t:f q
+start m LANG=C.UTF-8 LC_ALL=C.UTF-8 SLIPWALL_CONFIRM_SECONDS=2 -- walls/demo.yaml
+wait_for m 'run 1 ' 20
+T resize-window -t t:m -x 40 -y 10
+if wait_for m 'terminal too small' 5; then
+	sleep 3
+	T send-keys -t t:m f
+	if wait_for m 'other keys wait for a larger terminal' 5; then
+		T resize-window -t t:m -x 100 -y 30
+		if within 5 frame_at m 100 30 && wait_for m 'run 1 ' 5 && ! screen_has m 'run 2 '; then
+			ok "too small: f waits for a larger terminal, and edits nothing"
+		else
+			not_ok "too small: f edits nothing" "$(screen m)"
+		fi
+		T resize-window -t t:m -x 40 -y 10
+		wait_for m 'terminal too small' 5
+	else
+		not_ok "too small: f says it waits for a larger terminal" "$(screen m)"
+	fi
+	T send-keys -t t:m q
+	if wait_for m 'quit and end .* of sampling' 5; then
+		T send-keys -t t:m y
+		if wait_for m '^samples: ' 30; then
+			ok "too small: q asks on the small screen, and y quits"
+		else
+			not_ok "too small: y quits" "$(screen m)"
+		fi
+	else
+		not_ok "too small: q asks on the small screen" "$(screen m)"
+	fi
+else
+	not_ok "40x10 says the terminal is too small" "$(screen m)"
+fi
+
 tap_end
