@@ -795,11 +795,62 @@ static enum sw_status finish_supports(struct wall *w, char *err)
 	return SW_OK;
 }
 
+/* Live loads that cancel on every block: zero force and zero moment on
+ * each, to round-off of the loads on it.  The load factor then appears
+ * in no equation, and every LP that maximises it is unbounded, which
+ * the solvers read as a load path into a support ("the live load
+ * pushes against a support ...", not what happens).  Two point loads
+ * at one point in opposite directions are the plain case; loads that
+ * cancel over the wall but not on each block are a load like any other
+ * (docs/wall-format.md). */
+static enum sw_status loads_cancel(const struct wall *w, char *err)
+{
+	char where[SW_ERRLEN / 2];
+	if (w->nloads < 2)
+		return SW_OK;
+	for (int k = 0; k < w->nblocks; k++) {
+		const struct wall_block *b = &w->blocks[k];
+		double fx = 0, fy = 0, m = 0, fa = 0, ma = 0;
+		if (b->fixed)
+			continue;
+		for (int l = 0; l < w->nloads; l++) {
+			const struct wall_load *ld = &w->loads[l];
+			double f, px = b->cx, py = b->cy;
+			if (ld->kind == LOAD_POINT) {
+				if (ld->block != k)
+					continue;
+				f = ld->magnitude;
+				px = ld->at[0];
+				py = ld->at[1];
+			} else {
+				f = ld->magnitude * b->weight;
+			}
+			double gx = f * ld->dir[0], gy = f * ld->dir[1];
+			double mk = (px - b->cx) * gy - (py - b->cy) * gx;
+			fx += gx;
+			fy += gy;
+			m += mk;
+			fa += f;
+			ma += fabs(mk) + f * (fabs(px - b->cx) + fabs(py - b->cy));
+		}
+		if (fabs(fx) > 1e-12 * fa || fabs(fy) > 1e-12 * fa ||
+		    fabs(m) > 1e-12 * ma)
+			return SW_OK;	/* a block the live load moves */
+	}
+	const struct wall_load *last = &w->loads[w->nloads - 1];
+	return sw_fail(err, SW_EINPUT,
+		       "%sthe live loads cancel: on every block their forces "
+		       "and moments sum to zero, so no load factor moves the "
+		       "wall (remove a load or change its direction)",
+		       WHERE(last->mark));
+}
+
 /* The loads: directions, magnitudes, the blocks they act on, and the
  * reference live load against the weights. */
 static enum sw_status finish_loads(struct wall *w, char *err)
 {
 	char where[SW_ERRLEN / 2];
+	enum sw_status st;
 	struct wall_mark none = {0, 0};
 	if (w->nloads == 0)
 		return sw_fail(err, SW_EINPUT,
@@ -836,6 +887,8 @@ static enum sw_status finish_loads(struct wall *w, char *err)
 				       WHERE(ld->mark), ld->at[0], ld->at[1],
 				       w->blocks[ld->block].id);
 	}
+	if ((st = loads_cancel(w, err)) != SW_OK)
+		return st;
 	/* the reference live load, summed (the body loads scale the total
 	 * weight): finite, or every load factor is a NaN */
 	double live = 0;

@@ -96,6 +96,36 @@ static void refusals(void)
 	tw_point_load(w, 5, 0.5, 1, 0);
 	expect_error(w, "load outside", "outside every block");
 
+	/* live loads that cancel on every block: two at one point, and a
+	 * pair that cancels in force but not in moment, which is a load */
+	w = wall_new();
+	tw_rect(w, "A", 0, 0, 1, 1);
+	w->has_ground = 1;
+	tw_point_load(w, 0.3, 0.5, 1, 0.2);
+	tw_point_load(w, 0.3, 0.5, -1, -0.2);
+	expect_error(w, "loads that cancel", "the live loads cancel");
+	w = wall_new();
+	tw_rect(w, "A", 0, 0, 1, 1);
+	w->has_ground = 1;
+	tw_point_load(w, 0, 0.2, 1, 0);
+	tw_point_load(w, 1, 0.8, -1, 0);
+	char err[SW_ERRLEN] = "";
+	tap_ok(wall_finish(w, err) == SW_OK,
+	       "a couple on one block is a load: \"%s\"", err);
+	wall_free(w);
+	/* ... and loads that cancel over the wall but not on each block */
+	w = wall_new();
+	tw_rect(w, "A", 0, 0, 1, 1);
+	tw_rect(w, "B", 1, 0, 1, 1);
+	w->has_ground = 1;
+	tw_point_load(w, 0, 0.5, 1, 0);
+	tw_point_load(w, 2, 0.5, -1, 0);
+	err[0] = 0;
+	tap_ok(wall_finish(w, err) == SW_OK,
+	       "loads that cancel over the wall, not on each block: \"%s\"",
+	       err);
+	wall_free(w);
+
 	w = wall_new();
 	double cw[8] = {0, 0, 0, 1, 1, 1, 1, 0};
 	struct wall_mark mk = {7, 5};
