@@ -84,9 +84,9 @@ void mc_progress(struct mc *m, struct mc_progress *p);
  * now.  Writes the seconds left and the estimate of one sample's worker
  * seconds (*per); returns 0 when the run is done, 1 when the estimate is
  * the a-priori one alone (no sample finished), 2 when it comes from
- * measured samples, 3 when a sample in progress has already run longer
- * than *per: *left is then the time of the samples not yet started
- * alone, and how long the slow one will still take is not known. */
+ * measured samples, 3 when every sample left is in progress and one
+ * has already run longer than *per: how long it will still take is not
+ * known (*left is 0). */
 struct mc_pace {
 	double threads, sampled, done, target, apriori;
 	struct mc_progress now;

@@ -75,11 +75,12 @@
  *
  * A sample in progress counts as at most s above (min(A, b s)): past s
  * it has outlived the estimate, and what it still needs is not known.
- * A large wall's samples differ by ten times and more (docs/
- * performance.md: 100 to 1,500 SLP iterations a sample on walls/
- * body-1000.yaml), so a run's last samples can run for minutes after
- * `left` has reached 0.  mc_pace_left says so (3): `left` is then the
- * samples not yet started alone, a time the run takes at least.
+ * While samples remain to be started that only holds `left` where it
+ * is (the total grows: the estimate was low).  Once every sample left
+ * is in progress, `left` is 0, and a large wall's samples differ by ten
+ * times and more (docs/performance.md: 100 to 1,500 SLP iterations a
+ * sample on walls/body-1000.yaml), so a run's last sample could read
+ * "left ~0 s" for minutes.  mc_pace_left says so instead (3).
  *
  * Why w fades: e0 was fitted to a worker's first sample with its
  * workspace's set-up on a loaded machine (above), which on
@@ -412,7 +413,7 @@ int mc_pace_left(const struct mc_pace *in, double *left, double *per)
 	double par = fmin(T, N - d);
 	*left = fmax(0, work) / (par > 0 ? par : 1);
 	*per = s;
-	if (pg->busy > 0 && pg->oldest > s)
+	if (pg->busy > 0 && N - d <= pg->busy && pg->oldest > s)
 		return 3;
 	return d > 0 ? 2 : 1;
 }

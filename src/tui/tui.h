@@ -527,9 +527,9 @@ int tui_keys_help(int line, char *buf, size_t len);
 
 /* tui_pace.c: the time left of a run (docs/workbench.md, "Time
  * left").  0: nothing to say; 1: *left and *total from the a-priori
- * estimate alone (no sample finished); 2: from the measured rate; 3: a
- * sample in progress has outlived *per, the estimate of one sample,
- * and *left is the samples not started alone (mc_pace_left). */
+ * estimate alone (no sample finished); 2: from the measured rate; 3:
+ * every sample left is in progress, and one has outlived *per, the
+ * estimate of one sample: the time left is not known (mc_pace_left). */
 int tui_pace_left(struct tui *t, double *left, double *total, double *per);
 /* Seconds the current run has sampled (its pools' lifetimes). */
 double tui_pace_sampled(const struct tui *t);

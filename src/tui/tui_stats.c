@@ -167,23 +167,15 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 		tui_stats_text(p, line);
 		p->opt = 0;
 		if (how == 3) {
-			/* a sample has outlived the estimate of one: what
-			 * it still needs is not known, and the samples not
-			 * started are a time the run takes at least (a run's
+			/* the last samples, one past the estimate of a
+			 * sample: what it still needs is not known (a run's
 			 * last slow sample read "left ~0 s" for minutes) */
-			char c[32];
-			tui_duration(b, sizeof b, left);
-			tui_duration(c, sizeof c, per);
-			char first[48];
-			if (left >= 1)
-				snprintf(first, sizeof first, "> ~%s", b);
-			else
-				snprintf(first, sizeof first, "unknown");
-			snprintf(line, sizeof line, "left     %s: the oldest has "
-				 "run past a sample's ~%s", first, c);
+			tui_duration(b, sizeof b, per);
+			snprintf(line, sizeof line, "left     unknown: the oldest "
+				 "has run past a sample's ~%s", b);
 			if (tui_cols(line) > w)
-				snprintf(line, sizeof line, "left     %s (a slow "
-					 "sample)", first);
+				snprintf(line, sizeof line, "left     unknown (a "
+					 "slow sample)");
 			tui_stats_text(p, line);
 		} else if (how) {
 			/* an estimate, never a bound that only grows
