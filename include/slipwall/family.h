@@ -7,14 +7,22 @@
  * interface).  Its moving set is the set of free blocks that are not
  * joined to a support by a chain of closed ('.') joints: the blocks at
  * rest form, with the supports, the connected components that contain a
- * support; every other block moves.  The moving set is a function of the
- * mechanism alone (not of the other samples, the thread count or the
- * order in which samples arrive), and two mechanisms are of one family
- * when their moving sets are equal.  The rigid bodies of a mechanism are
+ * support; every other block moves.  The rigid bodies of a mechanism are
  * the connected components of its moving blocks under closed joints.
+ * Two mechanisms are of one family when they move the same region: the
+ * same set, for sets of at most FAMILY_SMALL blocks; the same outline
+ * for larger ones (the lowest and the highest course, the leftmost and
+ * rightmost moving block of each, and which ends of the wall every
+ * course reaches).  On a wall of hundreds of blocks the sets of one
+ * collapse region differ by a block here and there (walls/body-1000.yaml:
+ * 407-409 blocks, every sample a set of its own).  Both keys are
+ * functions of the mechanism alone (not of the other samples, the thread
+ * count or the order in which samples arrive).
  *
- * A family is named by its blocks (family_name): "c4b3 c5b4: 2 blocks in
- * courses 4-5 at the right end".  Courses are the rows of the wall's free
+ * A family is named by its outline or its blocks (family_label): "c4b3
+ * c5b4: 2 blocks in courses 4-5 at the right end", "c1b24-c1b26 to
+ * c40b10-c40b25: 407-409 blocks in courses 1-40 at the right end".
+ * Courses are the rows of the wall's free
  * blocks by the height of their lowest point (a layout's c<course>b<k>
  * course for a layout wall).  Joints are named by their two bodies
  * (family_joint_name: "c3b4/c4b4").
@@ -39,10 +47,20 @@
 int family_moving(const struct wall *w, const char *joint,
 		  unsigned char *moving, int *nbodies);
 
+/* A moving set of at most this many blocks is its family's key; a
+ * larger one's outline is (family.c; docs/statistics.md, "Mechanism
+ * families") */
+#define FAMILY_SMALL 3
+
 struct family {
-	unsigned char *moving;	/* owned, nblocks: the moving set */
-	int nmoving;
-	unsigned long long key;	/* a hash of moving (FNV-1a), to find it */
+	/* owned, nblocks: the blocks that move in every mechanism of the
+	 * family (its core; a small family's moving set) */
+	unsigned char *moving;
+	int nmoving;		/* the core's blocks */
+	int nmin, nmax;		/* the fewest and most moving blocks of a
+				 * mechanism of it */
+	unsigned long long key;	/* a hash of the key (FNV-1a), to find it */
+	int outline[8];		/* a large family's key (family.c) */
 	long count;		/* accepted samples */
 	double lam_lo, lam_hi;	/* their loads' range (the tally's quantity) */
 	int nmech;		/* distinct mechanisms in it */
@@ -72,9 +90,15 @@ int family_top(const struct family_set *fs, int *idx, int max);
 int family_mechs(const struct family_set *fs, const struct tally *t, int f,
 		 int *idx, int max);
 
-/* A family's name for people, by its blocks (see above), into buf. */
+/* The name for people of one moving set, by its blocks (see above),
+ * into buf. */
 void family_name(const struct family_set *fs, const unsigned char *moving,
 		 char *buf, size_t len);
+/* A family's name: its outline (or its blocks, when small) and the range
+ * of its mechanisms' counts, "c1b24-c1b26 to c40b10-c40b25: 407-409
+ * blocks in courses 1-40 at the right end". */
+void family_label(const struct family_set *fs, const struct family *f,
+		  char *buf, size_t len);
 /* How mechanism joint (moving set mv) comes away from the blocks at
  * rest, by the joints on the set's edge: "slides on bed joints 3-4,
  * hinges at 2 joints".  Bed joint k lies between courses k and k + 1

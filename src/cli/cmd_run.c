@@ -263,13 +263,13 @@ static void print_families(const struct wall *w, const struct tally *t)
 	family_update(&fs, t);
 	int idx[TOP_MECHANISMS];
 	int nf = family_top(&fs, idx, TOP_MECHANISMS);
-	printf("families     %d (mechanisms with the same moving blocks); "
+	printf("families     %d (mechanisms with the same moving region); "
 	       "%s:\n", fs.nfam, fs.nfam > nf ? "the most frequent" :
 	       "by frequency");
 	for (int i = 0; i < nf; i++) {
 		const struct family *f = &fs.fam[idx[i]];
 		char name[256], j[160];
-		family_name(&fs, f->moving, name, sizeof name);
+		family_label(&fs, f, name, sizeof name);
 		printf("  %7ld %5.1f %%  %s %.4g..%.4g  %s\n", f->count,
 		       100.0 * (double)f->count / (double)t->accepted, unit,
 		       f->lam_lo, f->lam_hi, cli_text(name));
@@ -425,7 +425,7 @@ static void families_json(const struct wall *w, const struct tally *t,
 	for (int i = 0; i < nf; i++) {
 		const struct family *f = &fs.fam[fi[i]];
 		char name[256];
-		family_name(&fs, f->moving, name, sizeof name);
+		family_label(&fs, f, name, sizeof name);
 		json_object_begin(j);
 		json_key_string(j, "name", name);
 		json_key(j, "blocks");

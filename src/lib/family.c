@@ -8,10 +8,11 @@
  * supports' component.  This is O(nifaces + nblocks) per mechanism, and
  * a family_set classifies each distinct mechanism of a tally once
  * (family_update only looks at the mechanisms added since its last
- * call).  Families are found again by their moving set: a linear search
- * over the families that compares a hash of the set (and its size)
- * before the set itself; there are far fewer families than mechanisms
- * (measured in docs/statistics.md).
+ * call).  Families are found again by their key (family.h: the moving
+ * set up to FAMILY_SMALL blocks, its outline above): a linear search
+ * over the families that compares a hash of the key before the key
+ * itself; there are far fewer families than mechanisms (measured in
+ * docs/statistics.md).
  */
 #include <stdarg.h>
 #include <stdio.h>
@@ -150,17 +151,81 @@ static unsigned long long fnv1a(const unsigned char *s, size_t n)
 	return h;
 }
 
+/* The outline of a moving set of more than FAMILY_SMALL blocks: its
+ * lowest and highest courses, the leftmost and rightmost moving block of
+ * each, and whether it reaches the wall's left and right ends (every
+ * course it spans).  What its name says, but for the count. */
+struct outline {
+	int rlo, rhi, lo[2], hi[2], left, right;
+};
+_Static_assert(sizeof(struct outline) == sizeof(((struct family *)0)->outline),
+	       "struct family keeps an outline");
+
+static void row_span(const struct family_set *fs, const unsigned char *mv,
+		     int r, int *lo, int *hi, int *left, int *right);
+
+static void outline_of(const struct family_set *fs, const unsigned char *mv,
+		       struct outline *o)
+{
+	const struct wall *w = fs->w;
+	memset(o, 0, sizeof *o);
+	for (int b = 0; b < w->nblocks; b++) {
+		if (!mv[b])
+			continue;
+		if (o->rlo == 0 || fs->row[b] < o->rlo)
+			o->rlo = fs->row[b];
+		if (fs->row[b] > o->rhi)
+			o->rhi = fs->row[b];
+	}
+	o->left = o->right = 1;
+	for (int r = o->rlo; r <= o->rhi; r++) {
+		int lo, hi, l, rt;
+		row_span(fs, mv, r, &lo, &hi, &l, &rt);
+		if (lo < 0)
+			continue;	/* a course the set skips */
+		o->left = o->left && l;
+		o->right = o->right && rt;
+	}
+	int l, rt;
+	row_span(fs, mv, o->rlo, &o->lo[0], &o->hi[0], &l, &rt);
+	row_span(fs, mv, o->rhi, &o->lo[1], &o->hi[1], &l, &rt);
+}
+
 /* The family of moving set mv (n blocks), adding it (first mechanism k)
- * if new. */
+ * if new: of the same set, for at most FAMILY_SMALL blocks; of the same
+ * outline, for more (family.h).  A member's set narrows the family's
+ * core (the blocks that move in every member) and widens its range of
+ * counts. */
 static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 		       int k)
 {
 	size_t nb = (size_t)fs->w->nblocks;
-	unsigned long long key = fnv1a(mv, nb);
-	for (int f = 0; f < fs->nfam; f++)
-		if (fs->fam[f].key == key && fs->fam[f].nmoving == n &&
-		    !memcmp(fs->fam[f].moving, mv, nb))
-			return f;
+	struct outline o;
+	unsigned long long key;
+	if (n > FAMILY_SMALL) {
+		outline_of(fs, mv, &o);
+		key = fnv1a((const unsigned char *)&o, sizeof o);
+	} else {
+		key = fnv1a(mv, nb);
+	}
+	for (int f = 0; f < fs->nfam; f++) {
+		struct family *fa = &fs->fam[f];
+		if (fa->key != key || (fa->nmax > FAMILY_SMALL) !=
+		    (n > FAMILY_SMALL))
+			continue;
+		if (n > FAMILY_SMALL) {
+			if (memcmp(&o, fa->outline, sizeof o))
+				continue;
+		} else if (memcmp(fa->moving, mv, nb)) {
+			continue;
+		}
+		fa->nmoving = 0;
+		for (size_t b = 0; b < nb; b++)
+			fa->nmoving += fa->moving[b] = fa->moving[b] && mv[b];
+		fa->nmin = n < fa->nmin ? n : fa->nmin;
+		fa->nmax = n > fa->nmax ? n : fa->nmax;
+		return f;
+	}
 	if (fs->nfam == fs->capfam) {
 		fs->capfam = fs->capfam ? 2 * fs->capfam : 8;
 		fs->fam = sw_xrealloc(fs->fam, sizeof *fs->fam *
@@ -170,7 +235,9 @@ static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 	memset(f, 0, sizeof *f);
 	f->moving = sw_xmalloc(nb + 1);
 	memcpy(f->moving, mv, nb);
-	f->nmoving = n;
+	f->nmoving = f->nmin = f->nmax = n;
+	if (n > FAMILY_SMALL)
+		memcpy(f->outline, &o, sizeof o);
 	f->key = key;
 	f->first = k;
 	return fs->nfam++;
@@ -289,36 +356,26 @@ static void row_span(const struct family_set *fs, const unsigned char *mv,
 	*right = fhi >= 0 && mv[fhi];
 }
 
-void family_name(const struct family_set *fs, const unsigned char *mv,
-		 char *buf, size_t len)
+/* The name of moving set mv, with its count as nmin-nmax blocks; by
+ * its blocks' ids when small (the set itself is the family's key) */
+static void name_of(const struct family_set *fs, const unsigned char *mv,
+		    const struct outline *out, int nmin, int nmax, int small,
+		    char *buf, size_t len)
 {
 	const struct wall *w = fs->w;
 	size_t used = 0;
 	buf[0] = 0;
-	int n = 0, rlo = 0, rhi = 0;
-	for (int b = 0; b < w->nblocks; b++) {
-		if (!mv[b])
-			continue;
-		n++;
-		if (rlo == 0 || fs->row[b] < rlo)
-			rlo = fs->row[b];
-		if (fs->row[b] > rhi)
-			rhi = fs->row[b];
-	}
-	if (n == 0) {
+	if (nmax == 0) {
 		put(buf, len, &used, "no block moves");
 		return;
 	}
-	int left = 1, right = 1;
-	for (int r = rlo; r <= rhi; r++) {
-		int lo, hi, l, rt;
-		row_span(fs, mv, r, &lo, &hi, &l, &rt);
-		if (lo < 0)
-			continue;	/* a course the set skips */
-		left = left && l;
-		right = right && rt;
-	}
-	if (n <= 3) {
+	struct outline o;
+	if (out)
+		o = *out;
+	else
+		outline_of(fs, mv, &o);
+	int rlo = o.rlo, rhi = o.rhi;
+	if (small) {
 		int any = 0;
 		for (int b = 0; b < w->nblocks; b++)
 			if (mv[b]) {
@@ -327,26 +384,46 @@ void family_name(const struct family_set *fs, const unsigned char *mv,
 				any = 1;
 			}
 	} else {
-		int ends[2] = {rlo, rhi};
 		for (int e = 0; e < (rhi > rlo ? 2 : 1); e++) {
-			int lo, hi, l, rt;
-			row_span(fs, mv, ends[e], &lo, &hi, &l, &rt);
 			put(buf, len, &used, "%s%s", e ? " to " : "",
-			    w->blocks[lo].id);
-			if (hi != lo)
-				put(buf, len, &used, "-%s", w->blocks[hi].id);
+			    w->blocks[o.lo[e]].id);
+			if (o.hi[e] != o.lo[e])
+				put(buf, len, &used, "-%s", w->blocks[o.hi[e]].id);
 		}
 	}
-	put(buf, len, &used, ": %d block%s in course%s %d", n, n > 1 ? "s" : "",
+	put(buf, len, &used, ": %d", nmin);
+	if (nmax > nmin)
+		put(buf, len, &used, "-%d", nmax);
+	put(buf, len, &used, " block%s in course%s %d", nmax > 1 ? "s" : "",
 	    rhi > rlo ? "s" : "", rlo);
 	if (rhi > rlo)
 		put(buf, len, &used, "-%d", rhi);
-	if (left && right)
+	if (o.left && o.right)
 		put(buf, len, &used, " across the wall");
-	else if (left)
+	else if (o.left)
 		put(buf, len, &used, " at the left end");
-	else if (right)
+	else if (o.right)
 		put(buf, len, &used, " at the right end");
+}
+
+void family_name(const struct family_set *fs, const unsigned char *mv,
+		 char *buf, size_t len)
+{
+	int n = 0;
+	for (int b = 0; b < fs->w->nblocks; b++)
+		n += mv[b] != 0;
+	name_of(fs, mv, NULL, n, n, n <= FAMILY_SMALL, buf, len);
+}
+
+void family_label(const struct family_set *fs, const struct family *f,
+		  char *buf, size_t len)
+{
+	int small = f->nmax <= FAMILY_SMALL;
+	struct outline o;
+	if (!small)
+		memcpy(&o, f->outline, sizeof o);
+	name_of(fs, f->moving, small ? NULL : &o, f->nmin, f->nmax, small,
+		buf, len);
 }
 
 void family_motion(const struct family_set *fs, const char *joint,

@@ -1018,7 +1018,7 @@ static void panel_caption(struct fig *f, const struct rctx *c, int rank,
 	double pct = 100.0 * (double)fa->count / (double)(t->accepted ?
 							  t->accepted : 1);
 	char name[256];
-	family_name(&c->fams, fa->moving, name, sizeof name);
+	family_label(&c->fams, fa, name, sizeof name);
 	plot_rgb(f->cr, C_BLACK, 1);
 	plot_text(f, px + 12, py + 4, 10.5, 1, 0, 0, 0,
 		  "#%d: %.1f %% (%ld of %ld), %d mechanism%s", rank + 1, pct,

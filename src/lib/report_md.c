@@ -204,7 +204,7 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 	if (in->mech)
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);
 	if (in->mech && c->fams.w)
-		fprintf(f, "| mechanism families (same moving blocks) | %d |\n",
+		fprintf(f, "| mechanism families (same moving region) | %d |\n",
 			c->fams.nfam);
 	if (c->m)
 		fprintf(f, "| experimental loads | %zu, from %s |\n", c->m,
@@ -222,7 +222,7 @@ static void md_families(FILE *f, const struct rctx *c)
 	if (!t || !c->fams.w || c->ntop == 0)
 		return;
 	fprintf(f, "\n## Mechanism families\n\n"
-		"Mechanisms grouped by the set of blocks that move "
+		"Mechanisms grouped by the region that moves "
 		"(docs/statistics.md), the most frequent first; %d famil%s of "
 		"%d distinct mechanisms in %ld accepted samples.\n\n"
 		"| # | share | samples | load%s%s%s | moving blocks | mechanisms "
@@ -236,8 +236,13 @@ static void md_families(FILE *f, const struct rctx *c)
 		const struct family *fa = &c->fams.fam[c->topfam[i]];
 		char name[256], j[400], how[160];
 		const char *joint = t->mech[c->top[i]].joint;
-		family_name(&c->fams, fa->moving, name, sizeof name);
-		family_motion(&c->fams, joint, fa->moving, how, sizeof how);
+		family_label(&c->fams, fa, name, sizeof name);
+		/* how the mechanism itself comes away: its own moving set
+		 * (a large family's core is narrower) */
+		unsigned char *mv = sw_xmalloc((size_t)c->w->nblocks + 1);
+		family_moving(c->w, joint, mv, NULL);
+		family_motion(&c->fams, joint, mv, how, sizeof how);
+		free(mv);
 		family_fmt_joints(c->w, joint, j, sizeof j);
 		char *nm = md_clean(name), *jm = md_clean(j);
 		fprintf(f, "| %d | %.1f %% | %ld | %.5g to %.5g | %s | %d | %s; "

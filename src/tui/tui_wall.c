@@ -375,7 +375,7 @@ int tui_wall_mechanism(const struct tui *t, const char **joint,
 		*joint = mm->joint;
 		*vel = mm->vel;
 		char name[256];
-		family_name(fs, fa->moving, name, sizeof name);
+		family_label(fs, fa, name, sizeof name);
 		const char *what = strstr(name, ": ");
 		/* the long form if it fits the pane, else shorter; the
 		 * numbers whole */

@@ -9,8 +9,12 @@
 # families' counts add up to the accepted samples, and their mechanisms'
 # counts to each family's; every mechanism's moving blocks (the free
 # blocks not joined to a support by closed joints, by a union-find in
-# Python) are exactly its family's `blocks`, and two families never have
-# the same blocks; each family's load range is its mechanisms'; each
+# Python) have its family's key (the set itself, up to 3 blocks; else
+# its outline: lowest and highest course, the end blocks of each, which
+# wall ends it reaches), two families never have the same key, a
+# family's `blocks` are those that all its mechanisms move, and its name
+# counts their fewest to most blocks; each family's load range is its
+# mechanisms'; each
 # mechanism's `family` points back to it.  The text summary lists the
 # same families, with the count and name of the JSON's first one, and
 # names every joint by its two blocks.  The families do not depend on
@@ -46,12 +50,33 @@ def moving(joint):
             par[f(s)] = f("ground")
     g = f("ground")
     return frozenset(b for b in ids if b not in fixed and f(b) != g)
+# courses: the free blocks' lowest points, equal within 1e-6 m here
+free = [b for b in chk["blocks"] if not b["fixed"]]
+ymin = {b["id"]: min(v[1] for v in b["vertices"]) for b in free}
+xmin = {b["id"]: min(v[0] for v in b["vertices"]) for b in free}
+levels = sorted({round(y, 6) for y in ymin.values()})
+row = {i: levels.index(round(y, 6)) + 1 for i, y in ymin.items()}
+def key(s):
+    # at most 3 blocks: the set; more: its outline (lowest and highest
+    # course, the leftmost and rightmost moving block of each, whether
+    # every course it spans reaches the wall's left / right end)
+    if len(s) <= 3:
+        return ("set", s)
+    rows = sorted({row[b] for b in s})
+    def ends(r, among):
+        bs = sorted((b for b in among if row[b] == r), key=lambda b: xmin[b])
+        return bs[0], bs[-1]
+    left = all(ends(r, ids_free)[0] in s for r in rows)
+    right = all(ends(r, ids_free)[1] in s for r in rows)
+    return ("outline", rows[0], ends(rows[0], s), rows[-1], ends(rows[-1], s), left, right)
+ids_free = [b["id"] for b in free]
 errs = []
 fams, mechs = run["families"], run["mechanisms"]
 if sum(x["count"] for x in fams) != run["accepted"]:
     errs.append("family counts do not add up to accepted")
-if len({frozenset(x["blocks"]) for x in fams}) != len(fams):
-    errs.append("two families with the same blocks")
+keys = [key(moving(mechs[fa["mechanisms"][0]]["joints"])) for fa in fams]
+if len(set(keys)) != len(fams):
+    errs.append("two families with the same key")
 seen = set()
 for i, fa in enumerate(fams):
     ms = [mechs[k] for k in fa["mechanisms"]]
@@ -61,9 +86,15 @@ for i, fa in enumerate(fams):
     if min(m["lambda_lo"] for m in ms) != fa["lambda_lo"] or \
        max(m["lambda_hi"] for m in ms) != fa["lambda_hi"]:
         errs.append("family %d: load range" % i)
-    for m in ms:
-        if moving(m["joints"]) != frozenset(fa["blocks"]):
-            errs.append("family %d: a mechanism moves other blocks" % i)
+    sets = [moving(m["joints"]) for m in ms]
+    if frozenset.intersection(*sets) != frozenset(fa["blocks"]):
+        errs.append("family %d: its blocks are not those every mechanism moves" % i)
+    lo, hi = min(map(len, sets)), max(map(len, sets))
+    if (": %d block" % lo if lo == hi else ": %d-%d blocks" % (lo, hi)) not in fa["name"]:
+        errs.append("family %d: its name does not count %d-%d blocks" % (i, lo, hi))
+    for m, st in zip(ms, sets):
+        if key(st) != keys[i]:
+            errs.append("family %d: a mechanism moves another region" % i)
         if m["family"] != i:
             errs.append("family %d: a mechanism points elsewhere" % i)
     if i and fa["count"] > fams[i - 1]["count"]:
@@ -103,6 +134,11 @@ done
 "$bin" run walls/demo.yaml -n 200 --seed 1 --threads 1 --json >"$tmp/run.json" 2>"$tmp/err"
 check "demo: the most frequent family is c4b3 and c5b4" \
 	eval "[ \"\$(json_field '$tmp/run.json' 'sorted(d[\"families\"][0][\"blocks\"])')\" = \"['c4b3', 'c5b4']\" ]"
+"$bin" run walls/demo.yaml -n 200 --seed 1 --threads 1 >"$tmp/run.txt" 2>"$tmp/err"
+# two of the demo's regions are reached by mechanisms that move different
+# counts of blocks (19-20 and 11-12 blocks at seed 1): one family each
+check "demo: a family of mechanisms with different counts of moving blocks" \
+	grep -Eq '^ +[0-9]+ .*: [0-9]+-[0-9]+ blocks in courses' "$tmp/run.txt"
 # ... and it slides out between its neighbours: on the bed joints under
 # c4b3 (3), between c4b3 and c5b3 (4) and above c5b4 (5)
 "$bin" run walls/demo.yaml -n 200 --seed 1 --threads 1 >"$tmp/run.txt" 2>"$tmp/err"

@@ -139,7 +139,7 @@ T send-keys -t t:b q
 # = on a wall of real size: walls/body-100.yaml (105 blocks), 20
 # samples.  Nearly every sample has joint states of its own; on one
 # that is the only one of its mechanism, = pairs its family instead
-# (the same moving blocks): the least and the largest load of the
+# (the same moving region): the least and the largest load of the
 # family's samples.  Which sample that is, and its family, come from
 # `run --replay` of run 1's samples file (its JSON's mechanisms: count
 # 1, and the family number).
