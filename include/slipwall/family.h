@@ -52,6 +52,14 @@ int family_moving(const struct wall *w, const char *joint,
  * families") */
 #define FAMILY_SMALL 3
 
+/* A large moving set's outline (its family's key): its lowest and
+ * highest course (1-based), the leftmost and rightmost moving block of
+ * each (lo[0], hi[0]: the lowest), and whether every course it spans
+ * reaches the wall's left and right end. */
+struct family_outline {
+	int rlo, rhi, lo[2], hi[2], left, right;
+};
+
 struct family {
 	/* owned, nblocks: the blocks that move in every mechanism of the
 	 * family (its core; a small family's moving set) */
@@ -60,7 +68,7 @@ struct family {
 	int nmin, nmax;		/* the fewest and most moving blocks of a
 				 * mechanism of it */
 	unsigned long long key;	/* a hash of the key (FNV-1a), to find it */
-	int outline[8];		/* a large family's key (family.c) */
+	struct family_outline outline;	/* a large family's key */
 	long count;		/* accepted samples */
 	double lam_lo, lam_hi;	/* their loads' range (the tally's quantity) */
 	int nmech;		/* distinct mechanisms in it */

@@ -151,21 +151,14 @@ static unsigned long long fnv1a(const unsigned char *s, size_t n)
 	return h;
 }
 
-/* The outline of a moving set of more than FAMILY_SMALL blocks: its
- * lowest and highest courses, the leftmost and rightmost moving block of
- * each, and whether it reaches the wall's left and right ends (every
- * course it spans).  What its name says, but for the count. */
-struct outline {
-	int rlo, rhi, lo[2], hi[2], left, right;
-};
-_Static_assert(sizeof(struct outline) == sizeof(((struct family *)0)->outline),
-	       "struct family keeps an outline");
+/* The outline of a moving set of more than FAMILY_SMALL blocks
+ * (family.h): what its name says, but for the count. */
 
 static void row_span(const struct family_set *fs, const unsigned char *mv,
 		     int r, int *lo, int *hi, int *left, int *right);
 
 static void outline_of(const struct family_set *fs, const unsigned char *mv,
-		       struct outline *o)
+		       struct family_outline *o)
 {
 	const struct wall *w = fs->w;
 	memset(o, 0, sizeof *o);
@@ -200,7 +193,7 @@ static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 		       int k)
 {
 	size_t nb = (size_t)fs->w->nblocks;
-	struct outline o;
+	struct family_outline o;
 	unsigned long long key;
 	if (n > FAMILY_SMALL) {
 		outline_of(fs, mv, &o);
@@ -214,7 +207,7 @@ static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 		    (n > FAMILY_SMALL))
 			continue;
 		if (n > FAMILY_SMALL) {
-			if (memcmp(&o, fa->outline, sizeof o))
+			if (memcmp(&o, &fa->outline, sizeof o))
 				continue;
 		} else if (memcmp(fa->moving, mv, nb)) {
 			continue;
@@ -237,7 +230,7 @@ static int find_or_add(struct family_set *fs, unsigned char *mv, int n,
 	memcpy(f->moving, mv, nb);
 	f->nmoving = f->nmin = f->nmax = n;
 	if (n > FAMILY_SMALL)
-		memcpy(f->outline, &o, sizeof o);
+		f->outline = o;
 	f->key = key;
 	f->first = k;
 	return fs->nfam++;
@@ -359,7 +352,7 @@ static void row_span(const struct family_set *fs, const unsigned char *mv,
 /* The name of moving set mv, with its count as nmin-nmax blocks; by
  * its blocks' ids when small (the set itself is the family's key) */
 static void name_of(const struct family_set *fs, const unsigned char *mv,
-		    const struct outline *out, int nmin, int nmax, int small,
+		    const struct family_outline *out, int nmin, int nmax, int small,
 		    char *buf, size_t len)
 {
 	const struct wall *w = fs->w;
@@ -369,7 +362,7 @@ static void name_of(const struct family_set *fs, const unsigned char *mv,
 		put(buf, len, &used, "no block moves");
 		return;
 	}
-	struct outline o;
+	struct family_outline o;
 	if (out)
 		o = *out;
 	else
@@ -419,11 +412,8 @@ void family_label(const struct family_set *fs, const struct family *f,
 		  char *buf, size_t len)
 {
 	int small = f->nmax <= FAMILY_SMALL;
-	struct outline o;
-	if (!small)
-		memcpy(&o, f->outline, sizeof o);
-	name_of(fs, f->moving, small ? NULL : &o, f->nmin, f->nmax, small,
-		buf, len);
+	name_of(fs, f->moving, small ? NULL : &f->outline, f->nmin, f->nmax,
+		small, buf, len);
 }
 
 void family_motion(const struct family_set *fs, const char *joint,
