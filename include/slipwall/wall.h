@@ -147,6 +147,15 @@ int wall_add_block(struct wall *w, const char *id, const double *xy, int nv,
 /* Add a load (copied). */
 void wall_add_load(struct wall *w, const struct wall_load *ld);
 
+/* The force of live load ld on block k at load factor 1 (N; a body
+ * load's is its factor times the block's weight) and the point where it
+ * acts (a body load: the centroid).  Returns 0, and leaves the outputs
+ * alone, when it does not act on k: a support, or a point load's other
+ * blocks.  Its direction is ld->dir.  Reads what wall_finish derives
+ * (the point load's block, the weights). */
+int wall_load_on(const struct wall *w, const struct wall_load *ld, int k,
+		 double *f, double *px, double *py);
+
 /* Compute what is derived and validate.  On failure fills err with
  * "FILE:LINE:COLUMN: message" (the mark of the offending item) and
  * returns SW_EINPUT.  Must be called once, after all adds. */

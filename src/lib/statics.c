@@ -46,21 +46,11 @@ void statics_init(struct statics *s, const struct wall *w)
 		for (int k = 0; k < w->nblocks; k++) {
 			const struct wall_block *b = &w->blocks[k];
 			double f, px, py;
-			if (b->fixed)
+			/* finite: wall_finish checked the magnitude times the
+			 * whole wall's weight */
+			if (!wall_load_on(w, ld, k, &f, &px, &py))
 				continue;
-			if (ld->kind == LOAD_POINT) {
-				if (ld->block != k)
-					continue;
-				f = ld->magnitude / unit;
-				px = ld->at[0];
-				py = ld->at[1];
-			} else {
-				/* finite: wall_finish checked the magnitude
-				 * times the whole wall's weight */
-				f = ld->magnitude * b->weight / unit;
-				px = b->cx;
-				py = b->cy;
-			}
+			f /= unit;
 			double fx = f * ld->dir[0], fy = f * ld->dir[1];
 			/* the lever over L: F * L overflows on a wall whose
 			 * weights and sizes are large (1e290 N and 1e20 m) */

@@ -803,6 +803,24 @@ static enum sw_status finish_supports(struct wall *w, char *err)
  * at one point in opposite directions are the plain case; loads that
  * cancel over the wall but not on each block are a load like any other
  * (docs/wall-format.md). */
+int wall_load_on(const struct wall *w, const struct wall_load *ld, int k,
+		 double *f, double *px, double *py)
+{
+	const struct wall_block *b = &w->blocks[k];
+	if (b->fixed || (ld->kind == LOAD_POINT && ld->block != k))
+		return 0;
+	if (ld->kind == LOAD_POINT) {
+		*f = ld->magnitude;
+		*px = ld->at[0];
+		*py = ld->at[1];
+	} else {
+		*f = ld->magnitude * b->weight;
+		*px = b->cx;
+		*py = b->cy;
+	}
+	return 1;
+}
+
 static enum sw_status loads_cancel(const struct wall *w, char *err)
 {
 	char where[SW_ERRLEN / 2];
@@ -815,16 +833,9 @@ static enum sw_status loads_cancel(const struct wall *w, char *err)
 			continue;
 		for (int l = 0; l < w->nloads; l++) {
 			const struct wall_load *ld = &w->loads[l];
-			double f, px = b->cx, py = b->cy;
-			if (ld->kind == LOAD_POINT) {
-				if (ld->block != k)
-					continue;
-				f = ld->magnitude;
-				px = ld->at[0];
-				py = ld->at[1];
-			} else {
-				f = ld->magnitude * b->weight;
-			}
+			double f, px, py;
+			if (!wall_load_on(w, ld, k, &f, &px, &py))
+				continue;
 			double gx = f * ld->dir[0], gy = f * ld->dir[1];
 			double mk = (px - b->cx) * gy - (py - b->cy) * gx;
 			fx += gx;
