@@ -56,6 +56,7 @@ struct outfile {
 	char *path;	/* as given (messages) */
 	char *dest;	/* what is replaced: path, or the file a link names */
 	char *tmp;	/* DEST.tmp; NULL when written directly (a stream) */
+	int err;	/* the first failed outfile_flush's errno, or 0 */
 };
 
 /* The index in inputs (NULL-terminated; NULL itself: none) of the input
@@ -69,11 +70,22 @@ int outfile_input(const struct stat *st, const char *const *inputs);
 enum sw_status outfile_check(const char *path, const char *const *inputs,
 			     int flags, const char *what, char *err);
 
+/* Would outfile_open(path, ..., OUTFILE_STREAM, ...) write path
+ * directly - one of the process's own descriptors (/dev/stdout,
+ * /dev/fd/N), or a FIFO or character device that exists - rather than
+ * into PATH.tmp?  (sweep --csv streams its rows into PATH.tmp as the
+ * values finish, but writes a stream after its table.) */
+int outfile_is_stream(const char *path);
+
 /* Open path for writing (outfile_check first): o->f is PATH.tmp, or the
  * stream itself. */
 enum sw_status outfile_open(struct outfile *o, const char *path,
 			    const char *const *inputs, int flags,
 			    const char *what, char *err);
+/* Flush what was written so far (a file written as its work goes on:
+ * sweep's rows).  The first failure's errno is kept for
+ * outfile_commit, which then fails with it; returns it, or 0. */
+int outfile_flush(struct outfile *o);
 /* Flush (fsync a file), close and rename PATH.tmp over the destination.
  * On any failure PATH.tmp is removed: SW_EIO, "PATH: cannot write: why".
  * o is released either way. */

@@ -20,8 +20,10 @@
  * mechanisms, families), or --json; --csv FILE writes the table's rows;
  * --out DIR draws sweep.svg/.pdf/.png (report.c, report_write_sweep).
  * The output policy (outfile.h): --csv and --out are checked before the
- * first value; --csv is never the wall and is written whole (or into a
- * stream); the signal handlers stay through the writing, which finishes
+ * first value; --csv is never the wall; a file gets each value's row in
+ * FILE.tmp as the value finishes (nothing done is lost to a SIGKILL)
+ * and is renamed whole at the end, a stream gets the rows after the
+ * table; the signal handlers stay through the writing, which finishes
  * the table and the CSV and cancels the figure.  A value that stops the
  * sweep (a load point off the wall, a run that fails) keeps the values
  * done: they are printed and written, then the message.
@@ -459,9 +461,54 @@ static void print_json(const struct sweep_args *a, const struct wall *w,
 	json_end(&j);
 }
 
-/* --csv: written whole (PATH.tmp, then renamed: a full disk leaves the
- * old file), or straight into a stream (a FIFO, /dev/stdout); never
- * over the wall (outfile.h). */
+/* --csv's header and one value's row (full precision). */
+static void csv_header(FILE *f, const struct sweep_args *a)
+{
+	fprintf(f, "%s,%ssamples,accepted,p05,p05_lo,p05_hi,p50,p95,"
+		"mechanisms,families\n", a->param == SW_LOAD_AT ? "distance" :
+		param_name(a->param), a->param == SW_LOAD_AT ? "x,y," : "");
+}
+
+static void csv_row(FILE *f, const struct sweep_args *a,
+		    const struct point *p)
+{
+	fprintf(f, "%.17g,", p->value);
+	if (a->param == SW_LOAD_AT)
+		fprintf(f, "%.17g,%.17g,", p->at[0], p->at[1]);
+	fprintf(f, "%ld,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n",
+		p->samples, p->accepted, p->s.p05, p->s.p05_lo, p->s.p05_hi,
+		p->s.p50, p->s.p95, p->mechanisms, p->families);
+}
+
+/* --csv FILE, a file: opened before the first value, so that each
+ * value's row goes into FILE.tmp as the value finishes (flushed: a
+ * SIGKILL, an out-of-memory kill or a lost machine leaves every value
+ * done in FILE.tmp, the old FILE as it was), and renamed over FILE
+ * when the sweep ends (outfile.h: a full disk leaves the old file).
+ * A stream (a FIFO, /dev/stdout) is written after the table instead
+ * (write_csv), so that `--csv /dev/stdout` keeps the CSV after it and
+ * a FIFO is not opened, and waited on, before the sampling.  0 with
+ * o->f NULL for a stream or no --csv, 0 with o open, or 1 after the
+ * message. */
+static int csv_open_rows(const struct sweep_args *a, struct outfile *o)
+{
+	memset(o, 0, sizeof *o);
+	if (!a->csv || outfile_is_stream(a->csv))
+		return 0;
+	const char *in[] = {a->wall, NULL};
+	char err[SW_ERRLEN];
+	if (outfile_open(o, a->csv, in, OUTFILE_STREAM, "the CSV", err) !=
+	    SW_OK) {
+		cli_errorf("slipwall sweep: %s", err);
+		return 1;
+	}
+	csv_header(o->f, a);
+	outfile_flush(o);
+	return 0;
+}
+
+/* --csv into a stream, after the table: the values done (outfile.h:
+ * never over the wall). */
 static int write_csv(const struct sweep_args *a, const struct point *pt)
 {
 	const char *in[] = {a->wall, NULL};
@@ -472,21 +519,22 @@ static int write_csv(const struct sweep_args *a, const struct point *pt)
 		cli_errorf("slipwall sweep: %s", err);
 		return 1;
 	}
-	FILE *f = o.f;
-	fprintf(f, "%s,%ssamples,accepted,p05,p05_lo,p05_hi,p50,p95,"
-		"mechanisms,families\n", a->param == SW_LOAD_AT ? "distance" :
-		param_name(a->param), a->param == SW_LOAD_AT ? "x,y," : "");
-	for (int k = 0; k < a->nval; k++) {
-		const struct point *p = &pt[k];
-		fprintf(f, "%.17g,", p->value);
-		if (a->param == SW_LOAD_AT)
-			fprintf(f, "%.17g,%.17g,", p->at[0], p->at[1]);
-		fprintf(f, "%ld,%ld,%.17g,%.17g,%.17g,%.17g,%.17g,%d,%d\n",
-			p->samples, p->accepted, p->s.p05, p->s.p05_lo,
-			p->s.p05_hi, p->s.p50, p->s.p95, p->mechanisms,
-			p->families);
-	}
+	csv_header(o.f, a);
+	for (int k = 0; k < a->nval; k++)
+		csv_row(o.f, a, &pt[k]);
 	if (outfile_commit(&o, err) != SW_OK) {
+		cli_errorf("slipwall sweep: %s", err);
+		return 1;
+	}
+	return 0;
+}
+
+/* --csv FILE opened by csv_open_rows, its rows written: renamed over
+ * FILE.  0, or 1 after the message. */
+static int commit_csv(struct outfile *o)
+{
+	char err[SW_ERRLEN];
+	if (outfile_commit(o, err) != SW_OK) {
 		cli_errorf("slipwall sweep: %s", err);
 		return 1;
 	}
@@ -578,11 +626,14 @@ static void value_name(const struct sweep_args *a, int k, char *buf,
 
 /* Run the values in order until the last, a signal or a failure.
  * *done: the values finished (pt[0..*done)), *failed: those of them
- * without an accepted sample.  Returns 0, or the exit status of the
+ * without an accepted sample.  rows: --csv's file when it is open
+ * (rows->f), which gets each value's row as it finishes
+ * (csv_open_rows).  Returns 0, or the exit status of the
  * failure after its message: 2 when a value makes the wall invalid (a
  * load point off the wall), 1 when its run failed. */
 static int sample_values(const struct sweep_args *a, unsigned long seed,
-			 long n, struct point *pt, int *done, int *failed)
+			 long n, struct point *pt, struct outfile *rows,
+			 int *done, int *failed)
 {
 	char what[160], err[SW_ERRLEN];
 	int rc = 0;
@@ -620,18 +671,24 @@ static int sample_values(const struct sweep_args *a, unsigned long seed,
 		}
 		*failed += pt[k].accepted == 0;
 		++*done;
+		if (rows->f) {
+			/* a failed write shows at the commit */
+			csv_row(rows->f, a, &pt[k]);
+			outfile_flush(rows);
+		}
 	}
 	if (isatty(STDERR_FILENO))
 		fprintf(stderr, "\r\033[K");
 	return rc;
 }
 
-/* The values done (a->nval of them): the table or the JSON, --csv, the
- * figure (cancelled between two formats by a signal when cancel is
- * set).  0, or 1 after the message. */
+/* The values done (a->nval of them): the table or the JSON, --csv (a
+ * file whose rows are written, rows->f set, is renamed into place; a
+ * stream is written now), the figure (cancelled between two formats by
+ * a signal when cancel is set).  0, or 1 after the message. */
 static int write_outputs(const struct sweep_args *a, const struct wall *base,
 			 const struct point *pt, unsigned long seed, long n,
-			 int cancel)
+			 struct outfile *rows, int cancel)
 {
 	if (a->json)
 		print_json(a, base, pt, seed, n);
@@ -639,7 +696,9 @@ static int write_outputs(const struct sweep_args *a, const struct wall *base,
 		print_table(a, base, pt, seed, n);
 	fflush(stdout);
 	int rc = 0;
-	if (a->csv)
+	if (rows->f)
+		rc = commit_csv(rows);
+	else if (a->csv)
 		rc = write_csv(a, pt);
 	if (!rc && a->out)
 		rc = write_figure(a, base, pt, seed, n, cancel);
@@ -672,9 +731,14 @@ int cmd_sweep(int argc, char **argv)
 	 * are written (the figure too); during the writing the table and
 	 * the CSV are finished and the figure is not drawn (the formats
 	 * drawn are whole).  Exit 1 either way, with a message. */
+	struct outfile rows;
+	if ((rc = csv_open_rows(&a, &rows))) {
+		free(pt);
+		goto out;
+	}
 	struct run_signals caught;
 	run_signals_catch(&caught, 1);
-	rc = sample_values(&a, seed, n, pt, &done, &failed);
+	rc = sample_values(&a, seed, n, pt, &rows, &done, &failed);
 	int intr = run_signal();
 	a.nval = done;	/* the values done, each whole */
 	if (a.out && done < 2 && done < nval) {
@@ -684,8 +748,11 @@ int cmd_sweep(int argc, char **argv)
 	}
 	/* nothing to write when the first value failed; an interrupted
 	 * sweep says what it did, even nothing */
-	int wrc = done > 0 || intr ? write_outputs(&a, base, pt, seed, n,
-						   !intr) : 0;
+	int wrc = 0;
+	if (done > 0 || intr)
+		wrc = write_outputs(&a, base, pt, seed, n, &rows, !intr);
+	else if (rows.f)
+		outfile_abort(&rows);	/* no CSV, as the first value failed */
 	int late = intr ? 0 : run_signal();
 	run_signals_restore(&caught);
 	if (rc && done > 0 && !wrc)

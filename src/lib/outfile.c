@@ -145,6 +145,13 @@ static enum sw_status check(const char *path, const char *const *inputs,
 	return rc;
 }
 
+int outfile_is_stream(const char *path)
+{
+	struct stat st;
+	return own_fd(path) >= 0 ||
+	       (stat(path, &st) == 0 && is_stream(st.st_mode));
+}
+
 enum sw_status outfile_check(const char *path, const char *const *inputs,
 			     int flags, const char *what, char *err)
 {
@@ -259,10 +266,17 @@ enum sw_status outfile_open(struct outfile *o, const char *path,
 	return SW_OK;
 }
 
+int outfile_flush(struct outfile *o)
+{
+	if (!o->err && (ferror(o->f) || fflush(o->f) != 0))
+		o->err = errno ? errno : EIO;
+	return o->err;
+}
+
 enum sw_status outfile_commit(struct outfile *o, char *err)
 {
-	int e = 0;
-	if (ferror(o->f) || fflush(o->f) != 0)
+	int e = o->err;
+	if (!e && (ferror(o->f) || fflush(o->f) != 0))
 		e = errno ? errno : EIO;
 	if (!e && o->tmp && fsync(fileno(o->f)) != 0)
 		e = errno;

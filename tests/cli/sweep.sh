@@ -141,4 +141,31 @@ else
 	not_ok "SIGTERM during a sweep: exit 1, the values done written whole" "exit $rc" "$res" "$(cat "$tmp/sig.err")"
 fi
 
+# nothing done is lost to a SIGKILL: with --csv FILE each value's row
+# goes into FILE.tmp as the value finishes (the old FILE untouched until
+# the rename at the end), so a kill leaves every value done, each row as
+# the sweep of that value alone writes it
+printf 'old,csv\n' >"$tmp/kill.csv"
+"$bin" sweep walls/demo.yaml --friction 0.3:1:0.1 -n 100 --threads 1 \
+	--csv "$tmp/kill.csv" >/dev/null 2>"$tmp/kill.err" &
+pid=$!
+for _ in $(seq 600); do
+	[ -f "$tmp/kill.csv.tmp" ] && [ "$(wc -l <"$tmp/kill.csv.tmp")" -ge 2 ] && break
+	sleep 0.1
+done
+kill -KILL "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+"$bin" sweep walls/demo.yaml --friction 0.3:0.3:0.1 -n 100 --threads 1 \
+	--csv "$tmp/one.csv" >/dev/null 2>&1
+if [ "$(cat "$tmp/kill.csv")" = "old,csv" ] && [ -f "$tmp/kill.csv.tmp" ] &&
+   rows=$(($(wc -l <"$tmp/kill.csv.tmp") - 1)) && [ "$rows" -ge 1 ] &&
+   [ "$rows" -lt 8 ] &&
+   [ "$(head -n 2 "$tmp/kill.csv.tmp")" = "$(cat "$tmp/one.csv")" ]; then
+	ok "SIGKILL during a sweep: the $rows value(s) done in FILE.tmp, the first row as its own sweep's, the old FILE as it was"
+else
+	not_ok "SIGKILL during a sweep leaves the values done in FILE.tmp" \
+		"$(cat "$tmp/kill.csv")" "$(cat "$tmp/kill.csv.tmp" 2>&1)" \
+		"$(cat "$tmp/one.csv")"
+fi
+
 tap_end

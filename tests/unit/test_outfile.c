@@ -118,6 +118,31 @@ static void test_whole(void)
 	       "a symbolic link stays a link; the file it names is replaced");
 }
 
+/* A file written as its work goes on (sweep's rows): the first failed
+ * flush's errno is what the commit reports, whatever errno says by then,
+ * and the old file stays. */
+static void test_flush(void)
+{
+	char err[SW_ERRLEN];
+	put(at("rows.csv"), "old\n");
+	struct outfile o;
+	outfile_open(&o, at("rows.csv"), NULL, 0, "the test", err);
+	tap_ok(outfile_flush(&o) == 0, "outfile_flush: 0 while writes succeed");
+	/* a write that fails (the file shut under the stream) */
+	int fd = open("/dev/null", O_RDONLY);
+	dup2(fd, fileno(o.f));
+	close(fd);
+	fputs("row\n", o.f);
+	int e = outfile_flush(&o);
+	errno = ENOTTY;	/* what later calls leave */
+	fputs("row\n", o.f);
+	tap_ok(e == EBADF && outfile_flush(&o) == EBADF &&
+	       outfile_commit(&o, err) == SW_EIO && strstr(err, strerror(EBADF)) &&
+	       has(at("rows.csv"), "old\n") && !exists(at("rows.csv.tmp")),
+	       "a failed flush: the commit fails with its reason (%s), the old "
+	       "file as it was", err);
+}
+
 static void test_streams(void)
 {
 	char err[SW_ERRLEN];
@@ -194,6 +219,7 @@ int main(void)
 	}
 	test_inputs();
 	test_whole();
+	test_flush();
 	test_streams();
 	test_dirs();
 	char cmd[600];
