@@ -188,13 +188,15 @@ static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
 			 int ch, struct tui_map *m)
 {
 	double box[4];
-	int vert = 0;
+	int vert = 0, nbody = 0;
 	wedit_bounds(w, 0, box);
 	double x0 = box[0], y0 = box[1], x1 = box[2], y1 = box[3];
-	for (int l = 0; l < w->nloads; l++)
+	for (int l = 0; l < w->nloads; l++) {
 		if (w->loads[l].kind == LOAD_POINT &&
 		    fabs(w->loads[l].dir[1]) > 0.38)
 			vert = 1;
+		nbody += w->loads[l].kind == LOAD_BODY;
+	}
 	if (w->has_ground)
 		y0 = fmin(y0, w->ground_y);
 	if (cursor) {
@@ -207,14 +209,17 @@ static void tui_wall_fit(const struct wall *w, const double *cursor, int cw,
 	 * has a row of its own between its joint lines (the loaded one
 	 * too): with the usual margins, else with the least ones; when
 	 * even then a course gets fewer than two rows, the drawing is
-	 * coarse: one row per course (or less), no joint lines. */
+	 * coarse: one row per course (or less), no joint lines.  Each
+	 * body load's label has a row of its own above the wall
+	 * (tui_wall_loads), in every try. */
 	double bh = w->layout.present ? w->layout.block_h
 				      : w->mean_size / sqrt(2);
 	double mx = 4, top = 0, bottom = 0, aw = cw - 1 - 2 * mx, s = 0;
 	double dx = fmax(x1 - x0, 1e-9), dy = fmax(y1 - y0, 1e-9);
 	m->coarse = 0;
 	for (int tries = 0; tries < 2; tries++) {
-		top = tries == 0 ? (vert ? 4 : 1) : (vert ? 2 : 0);
+		top = fmax(tries == 0 ? (vert ? 4 : 1) : (vert ? 2 : 0),
+			   nbody);
 		bottom = tries == 0 ? (vert ? 4 : 2) : (vert ? 2 : 1);
 		double ah = ch - 1 - top - bottom;
 		s = fmin(ah / dy, aw / (2 * dx));
@@ -599,6 +604,7 @@ static void tui_wall_loads(const struct tui *t, struct tui_canvas *cv,
 {
 	const struct wall *w = t->w;
 	int attr = (t->colors ? COLOR_PAIR(2) : 0) | A_BOLD;
+	int body = 0;	/* the body loads' labels, a row each (tui_wall_fit) */
 	for (int l = 0; l < w->nloads; l++) {
 		const struct wall_load *ld = &w->loads[l];
 		int k = tui_wall_octant(ld->dir[0], ld->dir[1]);
@@ -607,7 +613,7 @@ static void tui_wall_loads(const struct tui *t, struct tui_canvas *cv,
 			char buf[64];
 			snprintf(buf, sizeof buf, "body load %s%s W on every block %s",
 				 tui_lam(t), t->utf8 ? "·" : "*", head);
-			tui_wall_label(cv, 0, l, buf, attr);
+			tui_wall_label(cv, 0, body++, buf, attr);
 			continue;
 		}
 		int pc = (int)lround(tui_wall_col(m, ld->at[0]));

@@ -88,6 +88,20 @@ if screen_has b 'p05 0\.5 .*\(seismic coefficient\)' && ! screen_has b '\(load f
 else
 	not_ok "a body load: the run history gives p05 0.5 as a seismic coefficient" "$(screen b)"
 fi
+# a body load's label has a row of its own above the wall: at 80 x 24
+# walls/body-100.yaml is drawn coarse, and its label was drawn over the
+# top course ("... on every block >.....")
+start y LANG=C LC_ALL=C -- walls/body-100.yaml
+T resize-window -t t:y -x 80 -y 24
+if wait_for y 'body load' 10 && sleep 1 &&
+   screen y | grep -E 'body load' | grep -qE 'on every block > +\|' &&
+   screen y | grep -A1 -E 'body load' | tail -n 1 | grep -qE '^ +[.]'; then
+	ok "a body load's label at 80 x 24: a row of its own, the top course below it"
+else
+	not_ok "a body load's label at 80 x 24: a row of its own" "$(screen y)"
+fi
+T send-keys -t t:y q
+
 # samples finished behind a slow one are shown in order, later: the
 # samples line says how many more are done (walls/facade.yaml, seed 1:
 # sample 2 takes several times as long as the others, and the line read
