@@ -280,6 +280,11 @@ void tui_put(struct tui *t, int y, int x, const char *utf8, const char *ascii);
 /* Draw s at (y, x), at most w columns (UTF-8 aware: one column per code
  * point, which holds for the text this program writes). */
 void tui_text(int y, int x, int w, const char *s);
+/* tui_text, but a string longer than w columns ends in the locale's
+ * "…" (or "~") in its last column, so that a cut shows. */
+void tui_text_cut(const struct tui *t, int y, int x, int w, const char *s);
+/* The locale's mark of a cut: "…" or "~". */
+const char *tui_dots(const struct tui *t);
 /* Code point k of s (its end if shorter). */
 const char *tui_skip(const char *s, int k);
 /* Columns of a UTF-8 string (one per code point). */

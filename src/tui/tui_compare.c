@@ -287,7 +287,7 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 				      A->mu_cov),
 		 B->run, tui_friction(t, fb, sizeof fb, B->mu_bed, B->mu_head,
 				      B->mu_cov));
-	tui_text(y0, 0, C, buf);
+	tui_text_cut(t, y0, 0, C, buf);
 	attroff(A_BOLD);
 	if (c->err[0]) {
 		tui_text(y0 + 1, 0, C, c->err);
@@ -311,7 +311,7 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 		 "B %s", c->nb, t->utf8 ? "═" : "=", c->na,
 		 tui_compare_num(pa, sizeof pa, sa.p05),
 		 tui_compare_num(pb, sizeof pb, sb.p05));
-	tui_text(y++, 0, C, buf);
+	tui_text_cut(t, y++, 0, C, buf);
 	int n = tui_compare_delta(t, buf, sizeof buf, "p05", sa.p05, sb.p05);
 	n += snprintf(buf + n, sizeof buf - (size_t)n, "  ");
 	n += tui_compare_delta(t, buf + n, sizeof buf - (size_t)n, "p50",
@@ -319,7 +319,7 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 	n += snprintf(buf + n, sizeof buf - (size_t)n, "  ");
 	tui_compare_delta(t, buf + n, sizeof buf - (size_t)n, "p95", sa.p95,
 			  sb.p95);
-	tui_text(y++, 0, C, buf);
+	tui_text_cut(t, y++, 0, C, buf);
 	if (c->ks_ok) {
 		char d[32], p2[32], pg[32];
 		tui_pct(p2, sizeof p2, c->ks.p_two_sided);
@@ -330,9 +330,9 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 	} else {
 		snprintf(buf, sizeof buf, "KS B vs A: -");
 	}
-	tui_text(y++, 0, C, buf);
+	tui_text_cut(t, y++, 0, C, buf);
 	if (c->note[0])
-		tui_text(y++, 0, C, c->note);
+		tui_text_cut(t, y++, 0, C, c->note);
 }
 
 /* ---- reopen ---- */

@@ -85,6 +85,21 @@ void tui_text(int y, int x, int w, const char *s)
 		mvaddnstr(y, x, s, (int)n);
 }
 
+const char *tui_dots(const struct tui *t)
+{
+	return t->utf8 ? "\u2026" : "~";
+}
+
+void tui_text_cut(const struct tui *t, int y, int x, int w, const char *s)
+{
+	if (w < 2 || tui_cols(s) <= w) {
+		tui_text(y, x, w, s);
+		return;
+	}
+	tui_text(y, x, w - 1, s);
+	tui_text(y, x + w - 1, 1, tui_dots(t));
+}
+
 int tui_cols(const char *s)
 {
 	int n = 0;
@@ -115,7 +130,7 @@ void tui_abbrev(const struct tui *t, char *out, size_t len, const char *s, int w
 		return;
 	}
 	/* keep more of the end: a path's file name */
-	const char *dots = t->utf8 ? "\u2026" : "~";
+	const char *dots = tui_dots(t);
 	int keep = w - 1, head = keep / 3, tail = keep - head;
 	snprintf(out, len, "%.*s%s%s", (int)(tui_skip(s, head) - s), s, dots,
 		 tui_skip(s, n - tail));

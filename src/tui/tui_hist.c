@@ -82,7 +82,7 @@ static void tui_hist_title(struct tui *t, int y0, int x0, int w, size_t n,
 		snprintf(buf, sizeof buf, "%s_min histogram (%zu accepted)",
 			 tui_lam(t), n);
 	attron(A_BOLD);
-	tui_text(y0, x0, w, buf);
+	tui_text_cut(t, y0, x0, w, buf);
 	attroff(A_BOLD);
 }
 
@@ -357,5 +357,5 @@ void tui_hist_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (wall->ntests && len > 0 && (size_t)len < sizeof buf)
 		snprintf(buf + len, sizeof buf - (size_t)len, "  T tests (%d)",
 			 wall->ntests);
-	tui_text(ya + 2, x0, w, buf);
+	tui_text_cut(t, ya + 2, x0, w, buf);
 }

@@ -320,14 +320,14 @@ static int tui_history_draw_row(const struct tui *t, int y, int y1,
 		int attr = (live ? A_BOLD : 0) | (sel ? A_REVERSE : 0);
 		if (attr)
 			attron(attr);
-		tui_text(y, 0, t->cols, head);
+		tui_text_cut(t, y, 0, t->cols, head);
 		if (attr)
 			attroff(attr);
 	}
 	if (y + 1 >= 1 && y + 1 < y1)
-		tui_text(y + 1, 5, t->cols - 5, a);
+		tui_text_cut(t, y + 1, 5, t->cols - 5, a);
 	if (y + 2 >= 1 && y + 2 < y1)
-		tui_text(y + 2, 5, t->cols - 5, b);
+		tui_text_cut(t, y + 2, 5, t->cols - 5, b);
 	return 3;
 }
 
@@ -399,7 +399,7 @@ void tui_history_draw(struct tui *t)
 			continue;
 		snprintf(buf, sizeof buf, "%s%s", i ? "" : "not kept: ", why[i]);
 		if (y >= 1 && y < y1)
-			tui_text(y, 0, C, buf);
+			tui_text_cut(t, y, 0, C, buf);
 		y++;
 	}
 	if (t->hist_nold) {

@@ -177,7 +177,7 @@ static void tui_present_number(struct tui *t, int y, int x, int w,
 			       struct tui_big z, int attr)
 {
 	attron(A_BOLD);
-	tui_text(y, x, w, label);
+	tui_text_cut(t, y, x, w, label);
 	attroff(A_BOLD);
 	tui_big_draw(t, y + 1, x, w, num, z, attr);
 }
@@ -219,7 +219,7 @@ static void tui_present_numbers(struct tui *t, int y, int w, int h)
 	} else if (has_s) {
 		snprintf(label, sizeof label, "sample %ld: %s", s.index + 1,
 			 sample_status_text(s.status));
-		tui_text(y, 1, hw, label);
+		tui_text_cut(t, y, 1, hw, label);
 	} else {
 		tui_text(y, 1, hw, "no sample yet");
 	}
@@ -230,7 +230,7 @@ static void tui_present_numbers(struct tui *t, int y, int w, int h)
 		tui_present_number(t, y, x, hw, label, num[1], z,
 				   t->colors ? COLOR_PAIR(3) | A_BOLD : A_BOLD);
 	} else {
-		tui_text(y, x, hw, "p05: no accepted sample yet");
+		tui_text_cut(t, y, x, hw, "p05: no accepted sample yet");
 	}
 }
 

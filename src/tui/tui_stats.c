@@ -45,10 +45,12 @@ struct tui_lines {
 	int y, end, x0, w;
 	int opt, keep, dry;
 	int n[4];
+	const char *dots;	/* the mark of a cut line (tui_dots) */
 };
 
 /* A line longer than the pane is cut at a word boundary (a space in its
- * right half), not in the middle of a word. */
+ * right half), not in the middle of a word, and ends in the mark of a
+ * cut ("sd 0.0076 (seismic…"). */
 static void tui_stats_text(struct tui_lines *p, const char *line)
 {
 	char buf[512];
@@ -60,16 +62,18 @@ static void tui_stats_text(struct tui_lines *p, const char *line)
 	}
 	if (p->y >= p->end)
 		return;
-	if (tui_cols(line) > p->w) {
-		const char *cut = tui_skip(line, p->w);
+	if (tui_cols(line) > p->w && p->w >= 2) {
+		int w = p->w - 1;	/* and the mark */
+		const char *cut = tui_skip(line, w);
 		const char *sp = cut;
 		while (sp > line && *sp != ' ')
 			sp--;
-		if (*cut == ' ' || tui_cols(line) - tui_cols(sp) > p->w / 2)
+		if (*cut == ' ' || tui_cols(line) - tui_cols(sp) > w / 2)
 			cut = *cut == ' ' ? cut : sp;
 		while (cut > line && cut[-1] == ' ')
 			cut--;
-		snprintf(buf, sizeof buf, "%.*s", (int)(cut - line), line);
+		snprintf(buf, sizeof buf, "%.*s%s", (int)(cut - line), line,
+			 p->dots);
 		line = buf;
 	}
 	tui_text(p->y++, p->x0, p->w, line);
@@ -356,7 +360,7 @@ int tui_stats_draw(struct tui *t, int y0, int x0, int h, int w)
 {
 	const struct tally *ta = &t->run.tally;
 	struct stats_summary s;
-	struct tui_lines p = {y0, y0 + h, x0, w, 0, 3, 1, {0}};
+	struct tui_lines p = {y0, y0 + h, x0, w, 0, 3, 1, {0}, tui_dots(t)};
 	char line[512];
 
 	tally_summary(ta, &s);

@@ -764,11 +764,11 @@ void tui_wall_draw(struct tui *t, int y0, int x0, int h, int w)
 	if (browse) {
 		char legend[512];
 		tui_wall_browse_legend(t, &bs, legend, sizeof legend, w);
-		tui_text(y0 + h - 1, x0, w, legend);
+		tui_text_cut(t, y0 + h - 1, x0, w, legend);
 	} else {
-		tui_text(y0 + h - 1, x0, w,
-			 t->utf8 ? "▒ moving  = slides  * hinge  : opens  ● load"
-				 : "# moving  = slides  * hinge  : opens  o load");
+		tui_text_cut(t, y0 + h - 1, x0, w,
+			     t->utf8 ? "▒ moving  = slides  * hinge  : opens  ● load"
+				     : "# moving  = slides  * hinge  : opens  o load");
 	}
 out:
 	free(cv.conn);
