@@ -92,6 +92,12 @@ const char *tui_dots(const struct tui *t)
 
 void tui_text_cut(const struct tui *t, int y, int x, int w, const char *s)
 {
+	if (!text_is_clean(s)) {	/* measured as drawn (tui_text) */
+		char *c = text_clean(s);
+		tui_text_cut(t, y, x, w, c);
+		free(c);
+		return;
+	}
 	if (w < 2 || tui_cols(s) <= w) {
 		tui_text(y, x, w, s);
 		return;
