@@ -210,6 +210,10 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len);
  * (or on those), so that no chain of joints carries them to a support
  * from below either (tests/data/stack-gap.yaml: c3b2 on c2b2). */
 int wall_hanging(const struct wall *w, int *blk, int *above);
+/* The body that rests on interface f: the one its normal points up into
+ * (an upward component beyond 1e-9), or -1 for a vertical joint.  The
+ * hanging and overhang tests' one notion of "rests on". */
+int wall_iface_rests(const struct wall_interface *f);
 /* The clamp of those blocks: the side joints (normal horizontal) of
  * every block that no chain of joints carries to a support from below
  * (those blocks, and any that rests only on them), into k when not NULL
@@ -222,6 +226,19 @@ int wall_clamp_joints(const struct wall *w, int *k);
  * and M other blocks only on it (them)" when blocks rest on those, into
  * buf; 0 (buf untouched) when none hangs. */
 int wall_hanging_text(const struct wall *w, char *buf, size_t len);
+/* Blocks that overhang the joints they rest on: a free block that rests
+ * on joints (an interface whose normal has an upward component into
+ * it) and whose centroid lies at or beyond the edge, in x, of their
+ * span (to 1e-9 of the block's size) - a running-bond block half over
+ * an opening.  At a contact depth above 0 its weight acts beyond its
+ * contact points, and it is held by its neighbours' clamp, which the
+ * SLP can lose: such samples are rejected as `hanging` (docs/method.md,
+ * "Blocks that overhang an opening").  For people: "block ID overhangs
+ * what it rests on (its centroid, at x = X m, is at the edge of the
+ * joints below it)" ("beyond" the edge), with ", and N other blocks
+ * likewise" when there are more, into buf; 0 (buf untouched) when none
+ * does. */
+int wall_overhang_text(const struct wall *w, char *buf, size_t len);
 
 /* The end of the message of a vertex too far from the origin for its
  * polygon (geom_far_vertex): "... vertex K " wall_far_text. */

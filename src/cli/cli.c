@@ -80,8 +80,9 @@ int cli_load_wall(const char *path, struct wall **w)
 
 /* The wall's warnings, each into buf without the wall's path: 0, the
  * friction lock (wall_friction_lock); 1, blocks that rest on no joint
- * (wall_hanging).  Returns 0 when w has no such thing. */
-#define WALL_WARNINGS 2
+ * (wall_hanging); 2, blocks that overhang their bearing
+ * (wall_overhang_text).  Returns 0 when w has no such thing. */
+#define WALL_WARNINGS 3
 static int warning_text(const struct wall *w, int which, char *buf,
 			size_t len)
 {
@@ -100,6 +101,14 @@ static int warning_text(const struct wall *w, int which, char *buf,
 			 "can lose: such samples are rejected as `hanging` "
 			 "(docs/method.md, \"What the method cannot answer\")",
 			 what);
+	else if (which == 2 && wall_overhang_text(w, what, sizeof what))
+		snprintf(buf, len, "%s: at a contact depth above 0 its weight "
+			 "acts beyond its contact points, and it is held by the "
+			 "friction and contact of its neighbours (a jamb half "
+			 "over an opening?), a clamp that the sequential LP's "
+			 "fixed capacities can lose: such samples are rejected "
+			 "as `hanging` (docs/method.md, \"Blocks that overhang "
+			 "an opening\")", what);
 	else
 		return 0;
 	return 1;

@@ -521,29 +521,95 @@ static enum sample_status slp_solve(struct sample_ws *ws,
 	return st;
 }
 
+/* The blocks that overhang on this sample's contact points: a free
+ * block whose weight acts outside the span, in x, of the contact points
+ * it rests on (those of its interfaces whose normal has an upward
+ * component into it: wall_iface_rests, as the hanging test), by more
+ * than 1e-9 of the wall's length scale.  A running-bond block at the
+ * edge of an opening, half over the void, has its centroid on the edge
+ * of its bearing: at depth 0 the contact point is there, at any other
+ * depth the contact points fall short of it, and the block is held
+ * against tipping into the opening only by its neighbours - the
+ * friction and the contact of its side joints and of the joints above
+ * it, the clamp of a block that hangs (docs/method.md, "Blocks that
+ * overhang an opening").  Marks in give[] each such joint of each such
+ * block (not the joints it rests on); returns how many were marked. */
+static int slp_overhang_joints(const struct sample_ws *ws, char *give)
+{
+	const struct wall *w = ws->w;
+	int nb = w->nblocks, n = 0;
+	double *lo = sw_xmalloc(sizeof(double) * 2 * (size_t)nb), *hi = lo + nb;
+	for (int b = 0; b < nb; b++) {
+		lo[b] = HUGE_VAL;
+		hi[b] = -HUGE_VAL;
+	}
+	for (int k = 0; k < ws->m; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		int up = wall_iface_rests(f);
+		if (up < 0 || up >= nb)
+			continue;
+		for (int e = 0; e < 2; e++) {
+			double x = ws->st.q[4 * k + 2 * e];
+			lo[up] = fmin(lo[up], x);
+			hi[up] = fmax(hi[up], x);
+		}
+	}
+	double tol = 1e-9 * ws->st.L;
+	for (int k = 0; k < ws->m; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		int up = wall_iface_rests(f);
+		int ends[2] = {f->a, f->b};
+		for (int e = 0; e < 2 && !give[k]; e++) {
+			int b = ends[e];
+			if (b >= nb || b == up || w->blocks[b].fixed ||
+			    !(hi[b] >= lo[b]))	/* it rests on nothing: hangs */
+				continue;
+			double cx = w->blocks[b].cx;
+			if (cx < lo[b] - tol || cx > hi[b] + tol) {
+				give[k] = 1;
+				n++;
+			}
+		}
+	}
+	free(lo);
+	return n;
+}
+
 /* A sample that the SLP leaves not converged because its last path
- * ended on an LP1 without equilibrium (path_end), on a wall with blocks
- * that hang on friction (wall_clamp_joints; docs/method.md, "What the
- * method cannot answer: blocks that hang on friction"): is the clamp
- * what it lost?  LP1 once more at the capacities it failed at
- * (ws->clost), with each side joint of a hanging block given back at
- * least its capacity at the SLP's start (ws->c0, LP-max's field or the
- * floor's, where LP1 has an equilibrium).  If that admits an
- * equilibrium, the failure was the clamp's: `hanging`.  Otherwise the
- * sample stays `not_converged`.  Feasibility is a verdict, and
+ * ended on an LP1 without equilibrium (path_end): is a clamp what it
+ * lost?  The clamped joints are the side joints of the blocks that hang
+ * on friction (wall_clamp_joints; docs/method.md, "What the method
+ * cannot answer: blocks that hang on friction") and the joints that
+ * hold a block overhanging its bearing on this sample's contact points
+ * (slp_overhang_joints).  Where there are any, LP1 once more at the
+ * capacities the path failed at (ws->clost), with each clamped joint
+ * given back at least its capacity at the SLP's start (ws->c0, LP-max's
+ * field or the floor's, where LP1 has an equilibrium).  If that admits
+ * an equilibrium, the failure was the clamp's: `hanging`.  Otherwise
+ * the sample stays `not_converged`.  Feasibility is a verdict, and
  * "infeasible" is sws_solve's fixed path: the status does not depend on
  * the start. */
 static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 					 struct sample_result *r)
 {
-	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
+	char *give = sw_xcalloc((size_t)ws->m + 1, 1);
+	int n = slp_overhang_joints(ws, give);
 	for (int i = 0; i < ws->nclamp; i++) {
-		int k = ws->clamp_k[i];
-		ws->c[k] = fmax(ws->c[k], ws->c0[k]);
+		n += !give[ws->clamp_k[i]];
+		give[ws->clamp_k[i]] = 1;
 	}
-	enum lp_status s = lp1_solve(ws, r);
-	return s == LP_OPTIMAL || s == LP_UNBOUNDED ? SAMPLE_HANGING
-						    : SAMPLE_NOT_CONVERGED;
+	enum sample_status st = SAMPLE_NOT_CONVERGED;
+	if (n > 0) {
+		memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
+		for (int k = 0; k < ws->m; k++)
+			if (give[k])
+				ws->c[k] = fmax(ws->c[k], ws->c0[k]);
+		enum lp_status s = lp1_solve(ws, r);
+		if (s == LP_OPTIMAL || s == LP_UNBOUNDED)
+			st = SAMPLE_HANGING;
+	}
+	free(give);
+	return st;
 }
 
 enum sample_status sws_slp(struct sample_ws *ws,
@@ -552,7 +618,7 @@ enum sample_status sws_slp(struct sample_ws *ws,
 {
 	ws->slp_lost = 0;
 	enum sample_status st = slp_solve(ws, o, r);
-	if (st == SAMPLE_NOT_CONVERGED && ws->slp_lost && ws->nclamp > 0)
+	if (st == SAMPLE_NOT_CONVERGED && ws->slp_lost)
 		st = slp_clamp_lost(ws, r);
 	return st;
 }

@@ -70,12 +70,14 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 	case SAMPLE_HANGING:
 		return sw_fail(err, SW_EANALYSIS,
 			       "the sequential LP lost the clamp that holds "
-			       "blocks which rest on no joint: their weight "
-			       "hangs on friction, whose normal forces rigid "
-			       "blocks leave free, so the wall has no "
-			       "non-associative answer (docs/method.md, \"What "
-			       "the method cannot answer\"); the standard "
-			       "value is the associative one");
+			       "blocks which rest on no joint, or whose weight "
+			       "acts beyond the contact points they rest on: "
+			       "they hang on their neighbours' friction, whose "
+			       "normal forces rigid blocks leave free, so the "
+			       "wall has no non-associative answer "
+			       "(docs/method.md, \"What the method cannot "
+			       "answer\"); the standard value is the "
+			       "associative one");
 	default:
 		return sw_fail(err, SW_EANALYSIS, "the solver failed (%s)",
 			       sample_status_text(s));

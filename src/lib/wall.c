@@ -248,6 +248,12 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
  * blocks, so that no chain of joints carries them to a support from
  * below (wall_clamp_joints, and wall_hanging's count of them;
  * tests/data/stack-gap.yaml: c3b2 on c2b2). */
+int wall_iface_rests(const struct wall_interface *f)
+{
+	/* n points from a into b: the force on b is along n, on a along -n */
+	return f->n[1] > 1e-9 ? f->b : f->n[1] < -1e-9 ? f->a : -1;
+}
+
 static char *hanging_marks(const struct wall *w, int chain)
 {
 	int nb = w->nblocks;
@@ -258,9 +264,7 @@ static char *hanging_marks(const struct wall *w, int chain)
 		more = 0;
 		for (int k = 0; k < w->nifaces; k++) {
 			const struct wall_interface *f = &w->ifaces[k];
-			/* n points from a into b: the force on b is along
-			 * n, on a along -n */
-			int up = f->n[1] > 1e-9 ? f->b : f->n[1] < -1e-9 ? f->a : -1;
+			int up = wall_iface_rests(f);
 			int down = up == f->b ? f->a : f->b;
 			if (up >= 0 && hang[up] && !(chain && hang[down])) {
 				hang[up] = 0;
@@ -301,6 +305,50 @@ int wall_clamp_joints(const struct wall *w, int *k)
 	}
 	free(hang);
 	return n;
+}
+
+int wall_overhang_text(const struct wall *w, char *buf, size_t len)
+{
+	int nb = w->nblocks, n = 0, first = -1;
+	double *lo = sw_xmalloc(sizeof(double) * 2 * ((size_t)nb + 1));
+	double *hi = lo + nb + 1;
+	for (int b = 0; b <= nb; b++) {
+		lo[b] = HUGE_VAL;
+		hi[b] = -HUGE_VAL;
+	}
+	for (int k = 0; k < w->nifaces; k++) {
+		const struct wall_interface *f = &w->ifaces[k];
+		int up = wall_iface_rests(f);
+		if (up < 0 || up >= nb)
+			continue;
+		lo[up] = fmin(lo[up], fmin(f->p1[0], f->p2[0]));
+		hi[up] = fmax(hi[up], fmax(f->p1[0], f->p2[0]));
+	}
+	for (int b = 0; b < nb; b++) {
+		const struct wall_block *bl = &w->blocks[b];
+		double tol = 1e-9 * bl->size;
+		if (bl->fixed || !(hi[b] >= lo[b]) ||
+		    (bl->cx > lo[b] + tol && bl->cx < hi[b] - tol))
+			continue;
+		if (!n++)
+			first = b;
+	}
+	if (n) {
+		const struct wall_block *bl = &w->blocks[first];
+		char more[64] = "";
+		if (n > 1)
+			snprintf(more, sizeof more, ", and %d other block%s "
+				 "likewise", n - 1, n > 2 ? "s" : "");
+		double tol = 1e-9 * bl->size;
+		int at = fabs(bl->cx - lo[first]) <= tol ||
+			 fabs(bl->cx - hi[first]) <= tol;
+		snprintf(buf, len, "block %s overhangs what it rests on (its "
+			 "centroid, at x = %.6g m, is %s the edge of the joints "
+			 "below it)%s", bl->id, bl->cx, at ? "at" : "beyond",
+			 more);
+	}
+	free(lo);
+	return n > 0;
 }
 
 int wall_hanging_text(const struct wall *w, char *buf, size_t len)

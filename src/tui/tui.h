@@ -201,7 +201,7 @@ struct tui {
 	char lock[192];
 	/* which blocks rest on no joint (wall_hanging; tui_edit_lock), or
 	 * "" */
-	char hang[192];
+	char hang[320];
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */

@@ -35,7 +35,8 @@
  * title marks such a wall (tui_home_title), and the message
  * of the edit or the opening that made it says why (docs/workbench.md,
  * "Friction that locks").  And t->hang: the blocks that rest on no
- * joint (wall_hanging_text), or "": the message says that too
+ * joint (wall_hanging_text), else those that overhang what they rest
+ * on (wall_overhang_text), or "": the message says that too
  * (docs/workbench.md, "Blocks that hang"). */
 void tui_edit_lock(struct tui *t)
 {
@@ -45,7 +46,8 @@ void tui_edit_lock(struct tui *t)
 		snprintf(t->lock, sizeof t->lock, "%s lock under associative "
 			 "friction: loads may be the lock's, not the wall's "
 			 "(docs/method.md)", joints);
-	if (t->w && wall_hanging_text(t->w, blocks, sizeof blocks))
+	if (t->w && (wall_hanging_text(t->w, blocks, sizeof blocks) ||
+		     wall_overhang_text(t->w, blocks, sizeof blocks)))
 		snprintf(t->hang, sizeof t->hang, "%s: samples may be "
 			 "rejected as hanging (docs/method.md)", blocks);
 }

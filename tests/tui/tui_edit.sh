@@ -301,4 +301,14 @@ else
 fi
 T send-keys -t t:h q
 wait_for h '^samples: ' 10
+# jamb blocks half over an opening (tests/data/opening-overhang.yaml):
+# the opening's message says they overhang
+start o LANG=C.UTF-8 LC_ALL=C.UTF-8 -- tests/data/opening-overhang.yaml
+if wait_for o 'warning: block c6b2 overhangs what it rests on' 20; then
+	ok "jamb blocks half over an opening: the opening's message says they overhang"
+else
+	not_ok "jamb blocks half over an opening: the opening's message says they overhang" "$(screen o)"
+fi
+T send-keys -t t:o q
+wait_for o '^samples: ' 10
 tap_end
