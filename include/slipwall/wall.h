@@ -214,6 +214,14 @@ int wall_hanging(const struct wall *w, int *blk, int *above);
  * (an upward component beyond 1e-9), or -1 for a vertical joint.  The
  * hanging and overhang tests' one notion of "rests on". */
 int wall_iface_rests(const struct wall_interface *f);
+/* The span in x of what each block rests on (the interfaces
+ * wall_iface_rests gives it): of the contact points q (4 numbers an
+ * interface, q_a's x and y then q_b's, as a sample's statics has them)
+ * or, when q is NULL, of the joints' ends.  lo[b] = HUGE_VAL and hi[b] =
+ * -HUGE_VAL for a block that rests on nothing; lo and hi have room for
+ * w->nblocks. */
+void wall_rest_span(const struct wall *w, const double *q, double *lo,
+		    double *hi);
 /* The clamp of those blocks: the side joints (normal horizontal) of
  * every block that no chain of joints carries to a support from below
  * (those blocks, and any that rests only on them), into k when not NULL

@@ -539,21 +539,7 @@ static int slp_overhang_joints(const struct sample_ws *ws, char *give)
 	const struct wall *w = ws->w;
 	int nb = w->nblocks, n = 0;
 	double *lo = sw_xmalloc(sizeof(double) * 2 * (size_t)nb), *hi = lo + nb;
-	for (int b = 0; b < nb; b++) {
-		lo[b] = HUGE_VAL;
-		hi[b] = -HUGE_VAL;
-	}
-	for (int k = 0; k < ws->m; k++) {
-		const struct wall_interface *f = &w->ifaces[k];
-		int up = wall_iface_rests(f);
-		if (up < 0 || up >= nb)
-			continue;
-		for (int e = 0; e < 2; e++) {
-			double x = ws->st.q[4 * k + 2 * e];
-			lo[up] = fmin(lo[up], x);
-			hi[up] = fmax(hi[up], x);
-		}
-	}
+	wall_rest_span(w, ws->st.q, lo, hi);
 	double tol = 1e-9 * ws->st.L;
 	for (int k = 0; k < ws->m; k++) {
 		const struct wall_interface *f = &w->ifaces[k];

@@ -307,23 +307,31 @@ int wall_clamp_joints(const struct wall *w, int *k)
 	return n;
 }
 
-int wall_overhang_text(const struct wall *w, char *buf, size_t len)
+void wall_rest_span(const struct wall *w, const double *q, double *lo,
+		    double *hi)
 {
-	int nb = w->nblocks, n = 0, first = -1;
-	double *lo = sw_xmalloc(sizeof(double) * 2 * ((size_t)nb + 1));
-	double *hi = lo + nb + 1;
-	for (int b = 0; b <= nb; b++) {
+	for (int b = 0; b < w->nblocks; b++) {
 		lo[b] = HUGE_VAL;
 		hi[b] = -HUGE_VAL;
 	}
 	for (int k = 0; k < w->nifaces; k++) {
 		const struct wall_interface *f = &w->ifaces[k];
 		int up = wall_iface_rests(f);
-		if (up < 0 || up >= nb)
+		if (up < 0 || up >= w->nblocks)	/* a support */
 			continue;
-		lo[up] = fmin(lo[up], fmin(f->p1[0], f->p2[0]));
-		hi[up] = fmax(hi[up], fmax(f->p1[0], f->p2[0]));
+		double x1 = q ? q[4 * k] : f->p1[0];
+		double x2 = q ? q[4 * k + 2] : f->p2[0];
+		lo[up] = fmin(lo[up], fmin(x1, x2));
+		hi[up] = fmax(hi[up], fmax(x1, x2));
 	}
+}
+
+int wall_overhang_text(const struct wall *w, char *buf, size_t len)
+{
+	int nb = w->nblocks, n = 0, first = -1;
+	double *lo = sw_xmalloc(sizeof(double) * 2 * ((size_t)nb + 1));
+	double *hi = lo + nb;
+	wall_rest_span(w, NULL, lo, hi);
 	for (int b = 0; b < nb; b++) {
 		const struct wall_block *bl = &w->blocks[b];
 		double tol = 1e-9 * bl->size;

@@ -295,11 +295,15 @@ check "the same gap in running bond: nothing hangs, 5 of 5 accepted" \
 # blocks): some samples keep the clamp and are accepted, the others are
 # `hanging`; nothing else, and the same statuses and loads from three
 # starts (the verdict is LP1's feasibility, by sws_solve's fixed path).
-for s in auto slack-primal support; do
-	SLIPWALL_LP_START=$s "$bin" run tests/data/opening-nolintel.yaml -n 12 \
-		--threads 2 --samples "$tmp/open-$s.csv" >/dev/null 2>&1
-done
-python3 - "$tmp"/open-auto.csv "$tmp"/open-slack-primal.csv "$tmp"/open-support.csv <<'PY'
+# clamp_starts WALL NAME: 12 samples of WALL from the starts auto,
+# slack-primal and support; true when each is accepted or hanging, some
+# of each, and the three runs agree on every status and load.
+clamp_starts() {
+	for s in auto slack-primal support; do
+		SLIPWALL_LP_START=$s "$bin" run "$1" -n 12 --threads 2 \
+			--samples "$tmp/$2-$s.csv" >/dev/null 2>&1
+	done
+	python3 - "$tmp/$2"-auto.csv "$tmp/$2"-slack-primal.csv "$tmp/$2"-support.csv <<'PY'
 import csv, sys
 runs = [[(r["status"], r["lambda_min"]) for r in csv.DictReader(open(f))] for f in sys.argv[1:]]
 st = [s for s, _ in runs[0]]
@@ -307,28 +311,17 @@ print("# statuses:", " ".join(st))
 sys.exit(not (len(st) == 12 and set(st) == {"accepted", "hanging"}
               and all(r == runs[0] for r in runs)))
 PY
+}
 check "an opening without a lintel: 12 samples accepted or hanging (some of each), the same statuses and loads from auto, slack-primal and support" \
-	[ $? = 0 ]
+	clamp_starts tests/data/opening-nolintel.yaml open
 # Blocks that overhang an opening (docs/method.md, "Blocks that overhang
 # an opening"): tests/data/opening-overhang.yaml has a lintel, but jamb
 # blocks half over the void, their weight beyond the contact points they
 # rest on at depth 0.45; the samples whose SLP drops the clamp that
 # holds them were `not_converged` (3 of 12 at seed 1) and are `hanging`,
 # the same statuses and loads from three starts.
-for s in auto slack-primal support; do
-	SLIPWALL_LP_START=$s "$bin" run tests/data/opening-overhang.yaml \
-		--threads 2 --samples "$tmp/over-$s.csv" >/dev/null 2>&1
-done
-python3 - "$tmp"/over-auto.csv "$tmp"/over-slack-primal.csv "$tmp"/over-support.csv <<'PY'
-import csv, sys
-runs = [[(r["status"], r["lambda_min"]) for r in csv.DictReader(open(f))] for f in sys.argv[1:]]
-st = [s for s, _ in runs[0]]
-print("# statuses:", " ".join(st))
-sys.exit(not (len(st) == 12 and set(st) == {"accepted", "hanging"}
-              and all(r == runs[0] for r in runs)))
-PY
 check "jamb blocks over an opening with a lintel, depth 0.45: 12 samples accepted or hanging (some of each, none not_converged), the same statuses and loads from auto, slack-primal and support" \
-	[ $? = 0 ]
+	clamp_starts tests/data/opening-overhang.yaml over
 
 # The piece jump on a wall of hundreds of interfaces (docs/method.md,
 # "The SLP's answer", rule 2): below a residual of 2e-4 the joints'
