@@ -480,21 +480,11 @@ static void csv_row(FILE *f, const struct sweep_args *a,
 		p->s.p50, p->s.p95, p->mechanisms, p->families);
 }
 
-/* --csv FILE, a file: opened before the first value, so that each
- * value's row goes into FILE.tmp as the value finishes (flushed: a
- * SIGKILL, an out-of-memory kill or a lost machine leaves every value
- * done in FILE.tmp, the old FILE as it was), and renamed over FILE
- * when the sweep ends (outfile.h: a full disk leaves the old file).
- * A stream (a FIFO, /dev/stdout) is written after the table instead
- * (write_csv), so that `--csv /dev/stdout` keeps the CSV after it and
- * a FIFO is not opened, and waited on, before the sampling.  0 with
- * o->f NULL for a stream or no --csv, 0 with o open, or 1 after the
- * message. */
-static int csv_open_rows(const struct sweep_args *a, struct outfile *o)
+/* --csv opened (outfile.h: never over the wall, a file into
+ * FILE.tmp, a stream directly) and its header written.  0, or 1 after
+ * the message. */
+static int csv_open(const struct sweep_args *a, struct outfile *o)
 {
-	memset(o, 0, sizeof *o);
-	if (!a->csv || outfile_is_stream(a->csv))
-		return 0;
 	const char *in[] = {a->wall, NULL};
 	char err[SW_ERRLEN];
 	if (outfile_open(o, a->csv, in, OUTFILE_STREAM, "the CSV", err) !=
@@ -503,35 +493,13 @@ static int csv_open_rows(const struct sweep_args *a, struct outfile *o)
 		return 1;
 	}
 	csv_header(o->f, a);
-	outfile_flush(o);
 	return 0;
 }
 
-/* --csv into a stream, after the table: the values done (outfile.h:
- * never over the wall). */
-static int write_csv(const struct sweep_args *a, const struct point *pt)
-{
-	const char *in[] = {a->wall, NULL};
-	char err[SW_ERRLEN];
-	struct outfile o;
-	if (outfile_open(&o, a->csv, in, OUTFILE_STREAM, "the CSV", err) !=
-	    SW_OK) {
-		cli_errorf("slipwall sweep: %s", err);
-		return 1;
-	}
-	csv_header(o.f, a);
-	for (int k = 0; k < a->nval; k++)
-		csv_row(o.f, a, &pt[k]);
-	if (outfile_commit(&o, err) != SW_OK) {
-		cli_errorf("slipwall sweep: %s", err);
-		return 1;
-	}
-	return 0;
-}
-
-/* --csv FILE opened by csv_open_rows, its rows written: renamed over
- * FILE.  0, or 1 after the message. */
-static int commit_csv(struct outfile *o)
+/* --csv closed: a file renamed over FILE (a full disk, or a row that
+ * could not be written, leaves the old file).  0, or 1 after the
+ * message. */
+static int csv_commit(struct outfile *o)
 {
 	char err[SW_ERRLEN];
 	if (outfile_commit(o, err) != SW_OK) {
@@ -539,6 +507,37 @@ static int commit_csv(struct outfile *o)
 		return 1;
 	}
 	return 0;
+}
+
+/* --csv FILE, a file: opened before the first value, so that each
+ * value's row goes into FILE.tmp as the value finishes (flushed: a
+ * SIGKILL, an out-of-memory kill or a lost machine leaves every value
+ * done in FILE.tmp, the old FILE as it was), and renamed over FILE
+ * when the sweep ends (csv_commit).  A stream (a FIFO, /dev/stdout) is
+ * written after the table instead (write_csv), so that `--csv
+ * /dev/stdout` keeps the CSV after it and a FIFO is not opened, and
+ * waited on, before the sampling.  0 with o->f NULL for a stream or no
+ * --csv, 0 with o open, or 1 after the message. */
+static int csv_open_rows(const struct sweep_args *a, struct outfile *o)
+{
+	memset(o, 0, sizeof *o);
+	if (!a->csv || outfile_is_stream(a->csv))
+		return 0;
+	if (csv_open(a, o))
+		return 1;
+	outfile_flush(o);
+	return 0;
+}
+
+/* --csv into a stream, after the table: the values done. */
+static int write_csv(const struct sweep_args *a, const struct point *pt)
+{
+	struct outfile o;
+	if (csv_open(a, &o))
+		return 1;
+	for (int k = 0; k < a->nval; k++)
+		csv_row(o.f, a, &pt[k]);
+	return csv_commit(&o);
 }
 
 /* --out: the figure, its formats cancelled by a signal when cancel is
@@ -697,7 +696,7 @@ static int write_outputs(const struct sweep_args *a, const struct wall *base,
 	fflush(stdout);
 	int rc = 0;
 	if (rows->f)
-		rc = commit_csv(rows);
+		rc = csv_commit(rows);
 	else if (a->csv)
 		rc = write_csv(a, pt);
 	if (!rc && a->out)

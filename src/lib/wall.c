@@ -329,7 +329,7 @@ void wall_rest_span(const struct wall *w, const double *q, double *lo,
 int wall_overhang_text(const struct wall *w, char *buf, size_t len)
 {
 	int nb = w->nblocks, n = 0, first = -1;
-	double *lo = sw_xmalloc(sizeof(double) * 2 * ((size_t)nb + 1));
+	double *lo = sw_xmalloc(sizeof(double) * 2 * (size_t)nb);
 	double *hi = lo + nb;
 	wall_rest_span(w, NULL, lo, hi);
 	for (int b = 0; b < nb; b++) {
