@@ -561,20 +561,40 @@ static int slp_overhang_joints(const struct sample_ws *ws, char *give)
 	return n;
 }
 
+/* Has LP1 an equilibrium at the capacities the path failed at
+ * (ws->clost), with each joint that give[] marks (want 1) or does not
+ * mark (want 0) given back at least its capacity at the SLP's start
+ * (ws->c0, LP-max's field or the floor's, where LP1 has one)? */
+static int lp1_given_back(struct sample_ws *ws, const char *give, int want,
+			  struct sample_result *r)
+{
+	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
+	for (int k = 0; k < ws->m; k++)
+		if (!give[k] == !want)
+			ws->c[k] = fmax(ws->c[k], ws->c0[k]);
+	enum lp_status s = lp1_solve(ws, r);
+	return s == LP_OPTIMAL || s == LP_UNBOUNDED;
+}
+
 /* A sample that the SLP leaves not converged because its last path
  * ended on an LP1 without equilibrium (path_end): is a clamp what it
  * lost?  The clamped joints are the side joints of the blocks that hang
  * on friction (wall_clamp_joints; docs/method.md, "What the method
  * cannot answer: blocks that hang on friction") and the joints that
  * hold a block overhanging its bearing on this sample's contact points
- * (slp_overhang_joints).  Where there are any, LP1 once more at the
- * capacities the path failed at (ws->clost), with each clamped joint
- * given back at least its capacity at the SLP's start (ws->c0, LP-max's
- * field or the floor's, where LP1 has an equilibrium).  If that admits
- * an equilibrium, the failure was the clamp's: `hanging`.  Otherwise
- * the sample stays `not_converged`.  Feasibility is a verdict, and
- * "infeasible" is sws_solve's fixed path: the status does not depend on
- * the start. */
+ * (slp_overhang_joints).  Where there are any, the clamp's loss is
+ * tested both ways (docs/method.md, "The clamp's loss, sufficient or
+ * necessary"):
+ *   sufficient: the clamped joints alone given back their start
+ *     capacities, LP1 has an equilibrium again;
+ *   necessary: every other joint given back its start capacity, and
+ *     the clamped joints left where the path failed, LP1 still has
+ *     none (the clamp's thrust runs through the wall, so the path can
+ *     lose a joint far from the opening as well, and the clamped joints
+ *     alone do not restore the equilibrium).
+ * Either makes the sample `hanging`; otherwise it stays
+ * `not_converged`.  Feasibility is a verdict, and "infeasible" is
+ * sws_solve's fixed path: the status does not depend on the start. */
 static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 					 struct sample_result *r)
 {
@@ -585,15 +605,9 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 		give[ws->clamp_k[i]] = 1;
 	}
 	enum sample_status st = SAMPLE_NOT_CONVERGED;
-	if (n > 0) {
-		memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
-		for (int k = 0; k < ws->m; k++)
-			if (give[k])
-				ws->c[k] = fmax(ws->c[k], ws->c0[k]);
-		enum lp_status s = lp1_solve(ws, r);
-		if (s == LP_OPTIMAL || s == LP_UNBOUNDED)
-			st = SAMPLE_HANGING;
-	}
+	if (n > 0 && (lp1_given_back(ws, give, 1, r) ||
+		      !lp1_given_back(ws, give, 0, r)))
+		st = SAMPLE_HANGING;
 	free(give);
 	return st;
 }
