@@ -561,19 +561,21 @@ static int slp_overhang_joints(const struct sample_ws *ws, char *give)
 	return n;
 }
 
-/* Has LP1 an equilibrium at the capacities the path failed at
- * (ws->clost), with each joint that give[] marks (want 1) or does not
- * mark (want 0) given back at least its capacity at the SLP's start
- * (ws->c0, LP-max's field or the floor's, where LP1 has one)? */
-static int lp1_given_back(struct sample_ws *ws, const char *give, int want,
-			  struct sample_result *r)
+/* LP1 at the capacities the path failed at (ws->clost), with each
+ * joint that give[] marks (want 1) or does not mark (want 0) given back
+ * at least its capacity at the SLP's start (ws->c0, LP-max's field or
+ * the floor's, where LP1 has an equilibrium): its status, so that
+ * "has an equilibrium" (optimal or unbounded) and "has none"
+ * (infeasible) are each the LP's own verdict, and a failed or stopped
+ * LP is neither. */
+static enum lp_status lp1_given_back(struct sample_ws *ws, const char *give,
+				     int want, struct sample_result *r)
 {
 	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
 	for (int k = 0; k < ws->m; k++)
 		if (!give[k] == !want)
 			ws->c[k] = fmax(ws->c[k], ws->c0[k]);
-	enum lp_status s = lp1_solve(ws, r);
-	return s == LP_OPTIMAL || s == LP_UNBOUNDED;
+	return lp1_solve(ws, r);
 }
 
 /* A sample that the SLP leaves not converged because its last path
@@ -605,9 +607,14 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 		give[ws->clamp_k[i]] = 1;
 	}
 	enum sample_status st = SAMPLE_NOT_CONVERGED;
-	if (n > 0 && (lp1_given_back(ws, give, 1, r) ||
-		      !lp1_given_back(ws, give, 0, r)))
-		st = SAMPLE_HANGING;
+	if (n > 0) {
+		enum lp_status back = lp1_given_back(ws, give, 1, r);
+		int sufficient = back == LP_OPTIMAL || back == LP_UNBOUNDED;
+		int necessary = back == LP_INFEASIBLE &&
+				lp1_given_back(ws, give, 0, r) == LP_INFEASIBLE;
+		if (sufficient || necessary)
+			st = SAMPLE_HANGING;
+	}
 	free(give);
 	return st;
 }
