@@ -229,6 +229,10 @@ void wall_rest_span(const struct wall *w, const double *q, double *lo,
  * is rejected as `hanging` (docs/method.md, "What the method cannot
  * answer: blocks that hang on friction"). */
 int wall_clamp_joints(const struct wall *w, int *k);
+/* Those blocks: mark[b] = 1 for each block that no chain of joints
+ * carries to a support from below (mark has room for w->nblocks; the
+ * other entries are left as they are); how many. */
+int wall_clamp_blocks(const struct wall *w, char *mark);
 /* The same, for people: "block ID rests on no joint below it" (or
  * "block ID and N others rest on no joint below them"), followed by ",
  * and M other blocks only on it (them)" when blocks rest on those, into

@@ -532,32 +532,34 @@ static enum sample_status slp_solve(struct sample_ws *ws,
  * against tipping into the opening only by its neighbours - the
  * friction and the contact of its side joints and of the joints above
  * it, the clamp of a block that hangs (docs/method.md, "Blocks that
- * overhang an opening").  Marks in give[] each such joint of each such
- * block (not the joints it rests on); returns how many were marked. */
-static int slp_overhang_joints(const struct sample_ws *ws, char *give)
+ * overhang an opening").  Marks in blk[] each such block, and in give[]
+ * each joint of each such block but those it rests on; returns how many
+ * joints were marked. */
+static int slp_overhang(const struct sample_ws *ws, char *blk, char *give)
 {
 	const struct wall *w = ws->w;
 	int nb = w->nblocks, n = 0;
 	double *lo = sw_xmalloc(sizeof(double) * 2 * (size_t)nb), *hi = lo + nb;
 	wall_rest_span(w, ws->st.q, lo, hi);
 	double tol = 1e-9 * ws->st.L;
+	for (int b = 0; b < nb; b++) {
+		double cx = w->blocks[b].cx;
+		/* a block that rests on nothing hangs (wall_clamp_blocks) */
+		if (!w->blocks[b].fixed && hi[b] >= lo[b] &&
+		    (cx < lo[b] - tol || cx > hi[b] + tol))
+			blk[b] = 1;
+	}
+	free(lo);
 	for (int k = 0; k < ws->m; k++) {
 		const struct wall_interface *f = &w->ifaces[k];
 		int up = wall_iface_rests(f);
 		int ends[2] = {f->a, f->b};
-		for (int e = 0; e < 2 && !give[k]; e++) {
-			int b = ends[e];
-			if (b >= nb || b == up || w->blocks[b].fixed ||
-			    !(hi[b] >= lo[b]))	/* it rests on nothing: hangs */
-				continue;
-			double cx = w->blocks[b].cx;
-			if (cx < lo[b] - tol || cx > hi[b] + tol) {
+		for (int e = 0; e < 2 && !give[k]; e++)
+			if (ends[e] < nb && ends[e] != up && blk[ends[e]]) {
 				give[k] = 1;
 				n++;
 			}
-		}
 	}
-	free(lo);
 	return n;
 }
 
@@ -578,45 +580,83 @@ static enum lp_status lp1_given_back(struct sample_ws *ws, const char *give,
 	return lp1_solve(ws, r);
 }
 
+/* LP1 at the capacities the path failed at (ws->clost), at zero load,
+ * with the blocks that blk[] marks weightless (their equilibrium rows'
+ * dead load 0): its status.  Only bounds change, and they are put back
+ * as write_points (sample_lp.c) writes them at every sample: each row
+ * at its dead load, the load factor free. */
+static enum lp_status lp1_weightless(struct sample_ws *ws, const char *blk,
+				     struct sample_result *r)
+{
+	const struct wall *w = ws->w;
+	struct lp *P = ws->lp[LP1];
+	for (int b = 0; b < w->nblocks; b++) {
+		if (!blk[b] || w->blocks[b].fixed)
+			continue;
+		int row = 3 * w->blocks[b].eq;	/* its three rows */
+		for (int i = row; i < row + 3; i++)
+			lp_set_row_bounds(P, i, 0, 0);
+	}
+	lp_set_col_bounds(P, COL_LAMBDA(ws), 0, 0);
+	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
+	enum lp_status s = lp1_solve(ws, r);
+	for (int i = 0; i < ws->R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	lp_set_col_bounds(P, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	return s;
+}
+
 /* A sample that the SLP leaves not converged because its last path
  * ended on an LP1 without equilibrium (path_end): is a clamp what it
- * lost?  The clamped joints are the side joints of the blocks that hang
- * on friction (wall_clamp_joints; docs/method.md, "What the method
- * cannot answer: blocks that hang on friction") and the joints that
- * hold a block overhanging its bearing on this sample's contact points
- * (slp_overhang_joints).  Where there are any, the clamp's loss is
- * tested both ways (docs/method.md, "The clamp's loss, sufficient or
- * necessary"):
- *   sufficient: the clamped joints alone given back their start
+ * lost?  The clamped blocks are those that no chain of joints carries
+ * to a support from below (wall_clamp_blocks; docs/method.md, "What the
+ * method cannot answer: blocks that hang on friction") and those that
+ * overhang their bearing on this sample's contact points
+ * (slp_overhang); the clamped joints are the side joints of the first
+ * (wall_clamp_joints) and the joints of the second but those they rest
+ * on.  Where there are any, LP1 at the capacities the path failed at
+ * answers three questions, each a way the clamp can be what was lost
+ * (docs/method.md, "The clamp's loss: sufficient, necessary, its
+ * weight"):
+ *   sufficient: with the clamped joints alone given back their start
  *     capacities, LP1 has an equilibrium again;
- *   necessary: every other joint given back its start capacity, and
- *     the clamped joints left where the path failed, LP1 still has
+ *   necessary: with every other joint given back its start capacity,
+ *     and the clamped joints left where the path failed, LP1 still has
  *     none (the clamp's thrust runs through the wall, so the path can
- *     lose a joint far from the opening as well, and the clamped joints
- *     alone do not restore the equilibrium).
- * Either makes the sample `hanging`; otherwise it stays
- * `not_converged`.  Feasibility is a verdict, and "infeasible" is
- * sws_solve's fixed path: the status does not depend on the start. */
+ *     lose a joint far from the opening as well);
+ *   its weight: with the clamped blocks weightless, the wall stands at
+ *     zero load (the path lost, far from the opening, a joint of the
+ *     thrust that carries their weight, and not the clamped joints).
+ * Any makes the sample `hanging`; otherwise it stays `not_converged`.
+ * Each is a verdict of feasibility (an LP that fails is none), and
+ * "infeasible" is sws_solve's fixed path: the status does not depend on
+ * the start. */
 static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 					 struct sample_result *r)
 {
+	const struct wall *w = ws->w;
 	char *give = sw_xcalloc((size_t)ws->m + 1, 1);
-	int n = slp_overhang_joints(ws, give);
+	char *blk = sw_xcalloc((size_t)w->nblocks + 1, 1);
+	int n = slp_overhang(ws, blk, give);
 	for (int i = 0; i < ws->nclamp; i++) {
 		n += !give[ws->clamp_k[i]];
 		give[ws->clamp_k[i]] = 1;
 	}
-	enum sample_status st = SAMPLE_NOT_CONVERGED;
-	if (n > 0) {
-		enum lp_status back = lp1_given_back(ws, give, 1, r);
-		int sufficient = back == LP_OPTIMAL || back == LP_UNBOUNDED;
-		int necessary = back == LP_INFEASIBLE &&
-				lp1_given_back(ws, give, 0, r) == LP_INFEASIBLE;
-		if (sufficient || necessary)
-			st = SAMPLE_HANGING;
+	wall_clamp_blocks(w, blk);
+	/* each question asked only after the last was answered no */
+	enum lp_status s = n > 0 ? lp1_given_back(ws, give, 1, r) : LP_FAILED;
+	int hanging = s == LP_OPTIMAL || s == LP_UNBOUNDED;
+	if (s == LP_INFEASIBLE) {
+		s = lp1_given_back(ws, give, 0, r);
+		hanging = s == LP_INFEASIBLE;
+		if (s == LP_OPTIMAL || s == LP_UNBOUNDED) {
+			s = lp1_weightless(ws, blk, r);
+			hanging = s == LP_OPTIMAL || s == LP_UNBOUNDED;
+		}
 	}
+	free(blk);
 	free(give);
-	return st;
+	return hanging ? SAMPLE_HANGING : SAMPLE_NOT_CONVERGED;
 }
 
 enum sample_status sws_slp(struct sample_ws *ws,

@@ -246,8 +246,8 @@ int wall_friction_lock_text(const struct wall *w, char *buf, size_t len)
  * to round-off, does not count.  chain = 0: the blocks that rest on no
  * joint (wall_hanging); chain = 1: also those that rest only on hanging
  * blocks, so that no chain of joints carries them to a support from
- * below (wall_clamp_joints, and wall_hanging's count of them;
- * tests/data/stack-gap.yaml: c3b2 on c2b2). */
+ * below (wall_clamp_joints, wall_clamp_blocks, and wall_hanging's
+ * count of them; tests/data/stack-gap.yaml: c3b2 on c2b2). */
 int wall_iface_rests(const struct wall_interface *f)
 {
 	/* n points from a into b: the force on b is along n, on a along -n */
@@ -288,6 +288,19 @@ int wall_hanging(const struct wall *w, int *blk, int *above)
 	free(chain);
 	if (above)
 		*above = na;
+	return n;
+}
+
+int wall_clamp_blocks(const struct wall *w, char *mark)
+{
+	char *hang = hanging_marks(w, 1);
+	int n = 0;
+	for (int b = 0; b < w->nblocks; b++)
+		if (hang[b]) {
+			mark[b] = 1;
+			n++;
+		}
+	free(hang);
 	return n;
 }
 

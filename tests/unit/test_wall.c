@@ -144,11 +144,11 @@ static void refusals(void)
 	expect_error(w, "duplicate ids", "'A' is used twice");
 }
 
-/* Blocks that hang (wall_hanging, wall_clamp_joints): a 3 x 3 stack of
- * 0.3 x 0.15 m blocks with the middle one of the first course left out
- * (tests/data/stack-gap.yaml).  B22 rests on no joint; B32 rests on B22
- * only, so no chain of joints carries it either; their clamp is their
- * four side joints.  With the gap filled nothing hangs. */
+/* Blocks that hang (wall_hanging, wall_clamp_joints, wall_clamp_blocks):
+ * a 3 x 3 stack of 0.3 x 0.15 m blocks with the middle one of the first
+ * course left out (tests/data/stack-gap.yaml).  B22 rests on no joint;
+ * B32 rests on B22 only, so no chain of joints carries it either; their
+ * clamp is their four side joints.  With the gap filled nothing hangs. */
 static void hanging(void)
 {
 	for (int filled = 0; filled < 2; filled++) {
@@ -173,6 +173,23 @@ static void hanging(void)
 				(!strcmp(a, "B22") || !strcmp(b, "B22") ||
 				 !strcmp(a, "B32") || !strcmp(b, "B32"));
 		}
+		/* the clamped blocks, marked over a mark already set on B11 */
+		char mark[16] = {0}, want[16] = {0};
+		int b11 = -1;
+		for (int b = 0; b < w->nblocks; b++) {
+			const char *id = w->blocks[b].id;
+			b11 = !strcmp(id, "B11") ? b : b11;
+			want[b] = !strcmp(id, "B11") ||
+				  (!filled && (!strcmp(id, "B22") ||
+					       !strcmp(id, "B32")));
+		}
+		mark[b11] = 1;
+		int nmark = wall_clamp_blocks(w, mark);
+		tap_ok(nmark == (filled ? 0 : 2) &&
+		       !memcmp(mark, want, sizeof mark),
+		       "%s: the clamped blocks marked (%d), the mark set "
+		       "before kept", filled ? "without the gap" : "over the gap",
+		       nmark);
 		if (filled) {
 			tap_ok(hang == 0 && above == 0 && n == 0 &&
 			       wall_clamp_joints(w, NULL) == 0,
