@@ -16,8 +16,9 @@
 #     856 s at 3 samples and 912 s at 4, 6.5 %, with another test on
 #     the two cores); the old bound grew by minutes between readings
 #     (> 53 s, then > 14:08);
-#   - while no sample has finished it says "about ... (a priori)", and
-#     its total stays within 2 % of the first reading;
+#   - while no sample has finished (none counted, none "more done"
+#     behind an earlier one) it says "about ... (a priori)", and its
+#     total stays within 2 % of the first reading;
 #   - within a factor 3 of the truth: once 4 samples or more have
 #     finished after the first one, the rate between the first finished
 #     sample and the last reading gives the true total (elapsed + the
@@ -82,7 +83,14 @@ while :; do
 	# read 0 samples, then no "(a priori)" on 27 November 2026)
 	shot=$(screen l)
 	tot=$(printf '%s\n' "$shot" | total)
+	# finished: those counted and those done behind an earlier one
+	# ("samples  0 / 100  running, 1 more done"), which the estimate
+	# counts too (src/lib/mc.c, "Time left": a clean-clone CI read the
+	# a-priori mark gone at "0 / 100" on 2 December 2026, with sample 1
+	# done before sample 0)
 	d=$(printf '%s\n' "$shot" | samples_of)
+	more=$(printf '%s\n' "$shot" | sed -n 's/.*samples  *[0-9][0-9]* \/ .*, \([0-9][0-9]*\) more done.*/\1/p' | head -n 1)
+	[ -n "$d" ] && d=$((d + ${more:-0}))
 	apr=0
 	printf '%s\n' "$shot" | grep -qE 'left  .*\(a priori\)' && apr=1
 	[ -n "$tot" ] && [ -n "$d" ] && echo "$el $tot $d $apr" >>"$log"
