@@ -86,13 +86,22 @@ void sws_put_kin_objective(struct sample_ws *ws)
 		lp_set_obj(ws->lp[KIN], i, g[i]);
 }
 
+/* Each equilibrium row of P at its dead load: A x + lambda f_L = -f_D
+ * (docs/method.md, "The operator").  Every problem's rows are
+ * written by it, and so are LP1's put back after lp1_weightless
+ * (sample_slp.c) took a weight away. */
+void sws_put_dead_load(struct sample_ws *ws, struct lp *P)
+{
+	for (int i = 0; i < ws->R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+}
+
 /* The rows, bounds and fixed columns of an associative problem (amax,
  * amin) or an SLP problem (lp1, lp2); the point-dependent columns are
  * written by sws_put_column(). */
 static void build_assoc(struct sample_ws *ws, struct lp *P)
 {
-	for (int i = 0; i < ws->R; i++)
-		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	sws_put_dead_load(ws, P);
 	for (int j = 0; j < 4 * ws->m; j++)
 		lp_set_col_bounds(P, j, 0, HUGE_VAL);
 }
@@ -101,17 +110,15 @@ static void build_assoc(struct sample_ws *ws, struct lp *P)
  * optimum can be recognised as unique, and LP2 skipped. */
 static void build_lp1(struct sample_ws *ws, struct lp *P)
 {
-	for (int i = 0; i < ws->R; i++)
-		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	sws_put_dead_load(ws, P);
 	for (int j = 0; j < 3 * ws->m; j++)
 		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
 }
 
 static void build_slp(struct sample_ws *ws, struct lp *P)
 {
-	int m = ws->m, R = ws->R;
-	for (int i = 0; i < R; i++)
-		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	int m = ws->m;
+	sws_put_dead_load(ws, P);
 	for (int j = 0; j < 3 * m; j++)
 		lp_set_col_bounds(P, j, j % 3 == 2 ? -HUGE_VAL : 0, HUGE_VAL);
 	for (int k = 0; k < m; k++) {

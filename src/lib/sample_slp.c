@@ -584,7 +584,7 @@ static enum lp_status lp1_given_back(struct sample_ws *ws, const char *give,
  * with the blocks that blk[] marks weightless (their equilibrium rows'
  * dead load 0): its status.  Only bounds change, and they are put back
  * as write_points (sample_lp.c) writes them at every sample: each row
- * at its dead load, the load factor free. */
+ * at its dead load (sws_put_dead_load), the load factor free. */
 static enum lp_status lp1_weightless(struct sample_ws *ws, const char *blk,
 				     struct sample_result *r)
 {
@@ -600,8 +600,7 @@ static enum lp_status lp1_weightless(struct sample_ws *ws, const char *blk,
 	lp_set_col_bounds(P, COL_LAMBDA(ws), 0, 0);
 	memcpy(ws->c, ws->clost, sizeof(double) * (size_t)ws->m);
 	enum lp_status s = lp1_solve(ws, r);
-	for (int i = 0; i < ws->R; i++)
-		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	sws_put_dead_load(ws, P);
 	lp_set_col_bounds(P, COL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
 	return s;
 }
