@@ -356,6 +356,8 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->R = ws->st.nrows;
 	ws->clamp_k = sw_xmalloc(sizeof(int) * ((size_t)ws->m + 1));
 	ws->nclamp = wall_clamp_joints(w, ws->clamp_k);
+	ws->clamp_blk = sw_xcalloc((size_t)w->nblocks + 1, 1);
+	wall_clamp_blocks(w, ws->clamp_blk);
 	size_t m = (size_t)ws->m, big = 3 * m + (size_t)ws->R + 16;
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
@@ -445,6 +447,7 @@ void sample_ws_free(struct sample_ws *ws)
 	free(ws->c);
 	free(ws->c0);
 	free(ws->clamp_k);
+	free(ws->clamp_blk);
 	free(ws->clost);
 	lp_basis_free(&ws->slp_start[0]);
 	lp_basis_free(&ws->slp_start[1]);

@@ -641,7 +641,8 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 		n += !give[ws->clamp_k[i]];
 		give[ws->clamp_k[i]] = 1;
 	}
-	wall_clamp_blocks(w, blk);
+	for (int b = 0; b < w->nblocks; b++)
+		blk[b] |= ws->clamp_blk[b];
 	/* each question asked only after the last was answered no */
 	enum lp_status s = n > 0 ? lp1_given_back(ws, give, 1, r) : LP_FAILED;
 	int hanging = s == LP_OPTIMAL || s == LP_UNBOUNDED;

@@ -88,8 +88,10 @@ struct sample_ws {
 	const struct wall *w;
 	struct statics st;
 	int m, R;		/* interfaces, equilibrium rows */
-	/* the side joints of blocks that hang (wall_clamp_joints) */
+	/* the side joints of blocks that hang (wall_clamp_joints), and
+	 * those blocks, 1 each (wall_clamp_blocks) */
 	int nclamp, *clamp_k;
+	char *clamp_blk;
 	/* the SLP's last path ended on an LP1 without equilibrium, at
 	 * the capacities clost (m) */
 	int slp_lost;
