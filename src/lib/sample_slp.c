@@ -563,6 +563,13 @@ static int slp_overhang(const struct sample_ws *ws, char *blk, char *give)
 	return n;
 }
 
+/* LP1's verdict "has an equilibrium": optimal, or unbounded (any load
+ * factor).  Not its negation: a failed or stopped LP has no verdict. */
+static int lp1_stands(enum lp_status s)
+{
+	return s == LP_OPTIMAL || s == LP_UNBOUNDED;
+}
+
 /* LP1 at the capacities the path failed at (ws->clost), with each
  * joint that give[] marks (want 1) or does not mark (want 0) given back
  * at least its capacity at the SLP's start (ws->c0, LP-max's field or
@@ -645,13 +652,13 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 		blk[b] |= ws->clamp_blk[b];
 	/* each question asked only after the last was answered no */
 	enum lp_status s = n > 0 ? lp1_given_back(ws, give, 1, r) : LP_FAILED;
-	int hanging = s == LP_OPTIMAL || s == LP_UNBOUNDED;
+	int hanging = lp1_stands(s);
 	if (s == LP_INFEASIBLE) {
 		s = lp1_given_back(ws, give, 0, r);
 		hanging = s == LP_INFEASIBLE;
-		if (s == LP_OPTIMAL || s == LP_UNBOUNDED) {
+		if (lp1_stands(s)) {
 			s = lp1_weightless(ws, blk, r);
-			hanging = s == LP_OPTIMAL || s == LP_UNBOUNDED;
+			hanging = lp1_stands(s);
 		}
 	}
 	free(blk);
