@@ -69,26 +69,29 @@ int mc_wake_fd(const struct mc *m);
 /* The samples being computed now, for progress displays (one lock):
  * how many, the seconds the oldest has taken so far (a worker's first
  * sample includes the setup of its workspace), and the sum of their
- * ages; and how many samples have finished that mc_pop has not given
- * yet (they wait for an earlier one, still in progress). */
+ * ages; how many samples have finished that mc_pop has not given yet
+ * (they wait for an earlier one, still in progress); and the worker
+ * seconds that the samples given took, and those that wait. */
 struct mc_progress {
 	int busy;
 	double oldest, total;
 	long ahead;
+	double worked, worked_ahead;
 };
 void mc_progress(struct mc *m, struct mc_progress *p);
 
 /* The time left of a run (see mc.c, "Time left"): its workers, the
- * seconds it has sampled, the samples popped and its target, the
- * a-priori seconds of a sample (mc_sample_seconds), and its progress
- * now.  Writes the seconds left and the estimate of one sample's worker
- * seconds (*per); returns 0 when the run is done, 1 when the estimate is
- * the a-priori one alone (no sample finished), 2 when it comes from
- * measured samples, 3 when every sample left is in progress and one
- * has already run longer than *per: how long it will still take is not
- * known (*left is 0). */
+ * worker seconds of the samples its earlier pools gave (a run paused
+ * and resumed has one pool a stretch), the samples popped and its
+ * target, the a-priori seconds of a sample (mc_sample_seconds), and the
+ * progress of its pool now.  Writes the seconds left and the estimate
+ * of one sample's worker seconds (*per); returns 0 when the run is
+ * done, 1 when the estimate is the a-priori one alone (no sample
+ * finished), 2 when it comes from measured samples, 3 when every sample
+ * left is in progress and one has already run longer than *per: how
+ * long it will still take is not known (*left is 0). */
 struct mc_pace {
-	double threads, sampled, done, target, apriori;
+	double threads, worked, done, target, apriori;
 	struct mc_progress now;
 };
 int mc_pace_left(const struct mc_pace *in, double *left, double *per);

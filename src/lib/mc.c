@@ -55,23 +55,33 @@
  * took:
  *
  *   w    = max(0, 1 - d / P),  P = min(T, N)
- *   s    = (w e0 + (E T - A)) / (w + d)   seconds of one sample
+ *   s    = (w e0 + W) / (w + d)   seconds of one sample
  *   left = max(0, (N - d) s - min(A, b s)) / min(T, N - d)
  *
- * e0 the a-priori seconds of a sample, E the seconds the run has
- * sampled, T the workers, A the sum of the ages of the b samples in
- * progress, N the target and d the samples finished: those popped and
- * those that wait in the window for an earlier one (mc_progress's
- * `ahead`).  E T - A is the worker time spent on finished samples, so
- * while no sample ends s stays put, `left` falls as fast as the clock
- * runs, and the total E + left stays where it was: it moves only when a
- * sample ends (towards the measured time) or when the samples in
+ * e0 the a-priori seconds of a sample, T the workers, A the sum of the
+ * ages of the b samples in progress, N the target, d the samples
+ * finished: those popped and those that wait in the window for an
+ * earlier one (mc_progress's `ahead`), and W the worker seconds those d
+ * samples took, each from when its worker took it (its workspace's
+ * set-up included in a worker's first) to when it finished
+ * (mc_progress's `worked` and `worked_ahead`, and mc_pace's `worked`
+ * for the pools of a run before a pause).  So while no sample ends s
+ * stays put, `left` falls as fast as the clock runs, and the total
+ * (the seconds sampled + left) stays where it was: it moves only when
+ * a sample ends (towards the measured time) or when the samples in
  * progress have outlived s (it was too low).  d counts the samples
  * that wait: a worker that finished its first sample before worker 0's
- * (whose first includes the set-up) has its time in E T - A, and with
- * d = 0 it was added to e0 as if the two were one sample; the total
- * then grew, before any sample was popped, from 16,930 s to 22,248 s on
+ * (whose first includes the set-up) has its time in W, and with d = 0
+ * it was added to e0 as if the two were one sample; the total then
+ * grew, before any sample was popped, from 16,930 s to 22,248 s on
  * walls/large.yaml (28 November 2026, tests/tui/tui_pace_large.sh).
+ * W was E T - A until 2 December 2026 (E the seconds the run has
+ * sampled): that counts a worker's idle time as time spent on finished
+ * samples - waiting for room in the window behind a slow sample, idle
+ * once the last samples are handed out, or a sample a pause abandoned -
+ * and each idle second made s longer (tests/unit/test_mc.c: 9 samples
+ * of 10 finished in 100 s on 2 workers, one idle for the last 35 s:
+ * 17.8 s a sample, where they took 13.9).
  *
  * A sample in progress counts as at most s above (min(A, b s)): past s
  * it has outlived the estimate, and what it still needs is not known.
@@ -125,6 +135,7 @@
 
 struct slot {
 	int full;
+	double worked;	/* its worker seconds (mc_progress) */
 	struct record item;
 };
 
@@ -144,6 +155,8 @@ struct mc {
 	/* per worker: when its current sample started (its workspace
 	 * setup counts in its first one), 0 when idle; for mc_progress */
 	double *since;
+	/* the worker seconds of the samples mc_pop has given */
+	double worked;
 	int nextid;
 	/* the set-up every worker starts from (see the top): 0 while
 	 * worker 0 solves it, 1 when setup is there, -1 if it was
@@ -270,6 +283,7 @@ static void *worker(void *arg)
 		struct slot *s = &m->ring[k % m->window];
 		record_copy(&s->item, &it, w);
 		s->full = 1;
+		s->worked = sys_now() - m->since[id];
 		m->since[id] = 0;
 		if (k == m->next_out) {
 			pthread_cond_broadcast(&m->cv_ready);
@@ -389,8 +403,13 @@ void mc_progress(struct mc *m, struct mc_progress *p)
 		if (age > p->oldest)
 			p->oldest = age;
 	}
-	for (long k = m->next_out; k < m->next_index; k++)
-		p->ahead += m->ring[k % m->window].full;
+	p->worked = m->worked;
+	for (long k = m->next_out; k < m->next_index; k++) {
+		const struct slot *s = &m->ring[k % m->window];
+		p->ahead += s->full;
+		if (s->full)
+			p->worked_ahead += s->worked;
+	}
 	pthread_mutex_unlock(&m->mu);
 }
 
@@ -403,9 +422,7 @@ int mc_pace_left(const struct mc_pace *in, double *left, double *per)
 	*per = 0;
 	if (!(d < N))
 		return 0;
-	double spent = in->sampled * T - pg->total;
-	if (!(spent > 0))
-		spent = 0;
+	double spent = in->worked + pg->worked + pg->worked_ahead;
 	double P = fmin(T, N);
 	double w = d < P ? 1 - d / P : 0;
 	double s = (w * in->apriori + spent) / (w + d);
@@ -436,6 +453,7 @@ int mc_pop(struct mc *m, struct record *it, int wait_ms)
 		if (s->full) {
 			record_copy(it, &s->item, m->cfg.w);
 			s->full = 0;
+			m->worked += s->worked;
 			m->next_out++;
 			pthread_cond_broadcast(&m->cv_space);
 			pthread_mutex_unlock(&m->mu);

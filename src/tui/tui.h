@@ -91,6 +91,8 @@ struct tui_run {
 	long latest_index;	/* -1: none yet */
 	char what[96];		/* what this run changed (the history) */
 	double active;		/* seconds spent sampling before t_start */
+	double worked;		/* worker seconds of the samples given
+				 * before t_start (mc_progress) */
 	double t_start;		/* when the current pool started */
 	double apriori;		/* tui_pace_apriori of its wall at its start */
 };

@@ -36,7 +36,7 @@ int tui_pace_left(struct tui *t, double *left, double *total, double *per)
 	const struct tui_run *r = &t->run;
 	struct mc_pace in = {
 		.threads = t->threads,
-		.sampled = tui_pace_sampled(t),
+		.worked = r->worked,
 		.done = (double)r->done,
 		.target = (double)r->target,
 		.apriori = r->apriori,
@@ -44,6 +44,6 @@ int tui_pace_left(struct tui *t, double *left, double *total, double *per)
 	if (!tui_run_progress(t, &in.now))
 		return 0;
 	int how = mc_pace_left(&in, left, per);
-	*total = in.sampled + *left;
+	*total = tui_pace_sampled(t) + *left;
 	return how;
 }

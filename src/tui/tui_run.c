@@ -51,6 +51,9 @@ static void tui_run_free_pool(struct tui *t)
 	 * that keeps the wall's shape); the pool reads t->setup until
 	 * mc_free */
 	struct sample_setup *s = mc_setup(r->mc);
+	struct mc_progress pg;
+	mc_progress(r->mc, &pg);
+	r->worked += pg.worked;
 	mc_free(r->mc);
 	r->mc = NULL;
 	if (s) {
@@ -191,8 +194,8 @@ void tui_run_end(struct tui *t)
 	tui_run_drain(t);
 	/* measured, while its wall is t->w: its worker seconds a sample
 	 * seed the next run's a-priori figure (tui_pace_apriori) */
-	if (r->done > 0 && r->cfg.threads > 0 && r->active > 0) {
-		t->pace_s = r->active * r->cfg.threads / (double)r->done;
+	if (r->done > 0 && r->worked > 0) {
+		t->pace_s = r->worked / (double)r->done;
 		t->pace_apriori = r->apriori;
 		snprintf(t->pace_path, sizeof t->pace_path, "%s",
 			 t->w->path ? t->w->path : "");

@@ -24,6 +24,7 @@
 #include <unistd.h>
 
 #include "slipwall/mc.h"
+#include "slipwall/sys.h"
 #include "slipwall/wallfile.h"
 #include "tap.h"
 
@@ -577,70 +578,80 @@ static void test_estimate(const struct wall *demo)
 }
 
 /* The time left (mc.c, "Time left"): 2 workers, 100 samples, 300 s a
- * sample a priori.  While no sample ends the total (sampled + left)
- * stays put; a sample that worker 1 finished before worker 0's first
- * (set-up included), waiting in the window, is a finished sample: the
- * total moves towards the measured time and does not grow (it grew
- * from 15,000 s to 18,030 s here when only popped samples counted,
- * ahead = 0, as it did on walls/large.yaml); a pool that has finished
- * its samples, none popped, has them all ahead. */
+ * sample a priori.  While no sample ends the total (seconds sampled +
+ * left) stays put; a sample that worker 1 finished before worker 0's
+ * first (set-up included), waiting in the window, is a finished sample:
+ * the total moves towards the measured time and does not grow (it grew
+ * from 15,000 s to 18,030 s here when only popped samples counted, as
+ * it did on walls/large.yaml); a pool that has finished its samples,
+ * none popped, has them all ahead.  A sample is the worker seconds the
+ * finished ones took, not the time the workers have been there: an
+ * idle worker's seconds are no sample's. */
 static void test_pace(const struct wall *w)
 {
 	struct mc_pace in = {.threads = 2, .target = 100, .apriori = 300};
-	double left, per, t10, t59, t100, told;
-	in.sampled = 10;
+	double left, per, t10, t59, t100;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 10, .total = 20};
 	int h10 = mc_pace_left(&in, &left, &per);
-	t10 = in.sampled + left;
-	in.sampled = 59;
+	t10 = 10 + left;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 59, .total = 118};
 	int h59 = mc_pace_left(&in, &left, &per);
-	t59 = in.sampled + left;
+	t59 = 59 + left;
 	tap_ok(h10 == 1 && h59 == 1 && fabs(t10 - 15000) < 1e-6 &&
 	       fabs(t59 - 15000) < 1e-6,
 	       "time left: no sample finished, the a-priori total stays "
 	       "(%.1f s at 10 s, %.1f s at 59 s; 15,000 s)", t10, t59);
 	/* at 100 s: worker 1 finished sample 1 at 60 s and is 40 s into
 	 * sample 2; worker 0 is 100 s into sample 0 */
-	in.sampled = 100;
 	in.now = (struct mc_progress){.busy = 2, .oldest = 100, .total = 140,
-				       .ahead = 1};
+				       .ahead = 1, .worked_ahead = 60};
 	int h100 = mc_pace_left(&in, &left, &per);
-	t100 = in.sampled + left;
-	in.now.ahead = 0;
-	mc_pace_left(&in, &left, &per);
-	told = in.sampled + left;
-	tap_ok(h100 == 2 && t100 <= t59 && fabs(t100 - 6960) < 1e-6 &&
-	       told > t59,
+	t100 = 100 + left;
+	tap_ok(h100 == 2 && t100 <= t59 && fabs(t100 - 6960) < 1e-6,
 	       "time left: a sample that finished out of order counts; the "
-	       "total falls to %.1f s (6,960 s), where without it it grew "
-	       "to %.1f s", t100, told);
+	       "total falls to %.1f s (6,960 s)", t100);
+	/* the same, sample 1 popped in a pool before a pause: the same
+	 * figure, whichever pool's it was */
+	in.worked = 60;
+	in.done = 1;
+	in.now = (struct mc_progress){.busy = 2, .oldest = 100, .total = 140};
+	mc_pace_left(&in, &left, &per);
+	tap_ok(fabs(100 + left - 6960) < 1e-6,
+	       "time left: a sample of a pool before a pause counts as one "
+	       "of this pool's (%.1f s, 6,960 s)", 100 + left);
 	in.done = 100;
 	tap_ok(mc_pace_left(&in, &left, &per) == 0 && left == 0,
 	       "time left: nothing to say once the target is popped");
 
-	/* a slow sample at the end: 9 of 10 done in 100 s on 2 workers,
-	 * the last one 40 s old, the other worker idle.  A sample took
-	 * (200 - 40) / 9 = 17.8 worker seconds; the last one has outlived
-	 * that, and the time it still needs is not known (the display said
-	 * "left ~0 s" for as long as it ran) */
+	/* a slow sample at the end: 9 of 10 done in 100 s on 2 workers.
+	 * Worker 0 finished its samples at 60 s and took the last, 40 s
+	 * old; worker 1 finished its last at 65 s and is idle.  The 9 took
+	 * 60 + 65 = 125 worker seconds, 13.9 s each (the time the workers
+	 * were there less the last one's age, 160 s, read 17.8 s, worker
+	 * 1's idle 35 s included); the last one has outlived that, and the
+	 * time it still needs is not known (the display said "left ~0 s"
+	 * for as long as it ran) */
 	struct mc_pace end = {.threads = 2, .target = 10, .done = 9,
-			      .sampled = 100, .apriori = 300,
-			      .now = {.busy = 1, .oldest = 40, .total = 40}};
+			      .apriori = 300,
+			      .now = {.busy = 1, .oldest = 40, .total = 40,
+				      .worked = 125}};
 	int hend = mc_pace_left(&end, &left, &per);
-	tap_ok(hend == 3 && left == 0 && fabs(per - 160.0 / 9) < 1e-9,
+	tap_ok(hend == 3 && left == 0 && fabs(per - 125.0 / 9) < 1e-9,
 	       "time left: the last sample has outlived a sample's %.1f s "
-	       "(17.8 s): unknown (%d, left %.1f s)", per, hend, left);
+	       "(13.9 s; the idle worker's seconds are none): unknown (%d, "
+	       "left %.1f s)", per, hend, left);
 	/* in the middle of the run (20 samples) it is the estimate: 11
 	 * samples at 150 / 9 s, less the 2 running counted as done, on 2
 	 * workers: 75 s (it stays there while the slow one runs on) */
 	end.target = 20;
-	end.now = (struct mc_progress){.busy = 2, .oldest = 40, .total = 50};
+	end.now = (struct mc_progress){.busy = 2, .oldest = 40, .total = 50,
+				       .worked = 150};
 	hend = mc_pace_left(&end, &left, &per);
 	tap_ok(hend == 2 && fabs(left - 75) < 1e-9,
 	       "time left: a slow sample in the middle: the estimate, "
 	       "%.1f s (75 s)", left);
-	end.now = (struct mc_progress){.busy = 2, .oldest = 15, .total = 25};
+	end.now = (struct mc_progress){.busy = 2, .oldest = 15, .total = 25,
+				       .worked = 175};
 	hend = mc_pace_left(&end, &left, &per);
 	tap_ok(hend == 2 && per > 15,
 	       "time left: no sample past the estimate (%.1f s) is the "
@@ -651,6 +662,7 @@ static void test_pace(const struct wall *w)
 	mc_config_default(&cfg, w);
 	cfg.n = 12;
 	cfg.threads = 2;
+	double t0 = sys_now();
 	struct mc *m = mc_start(&cfg, err);
 	if (!m) {
 		tap_ok(0, "mc_start: %s", err);
@@ -663,6 +675,7 @@ static void test_pace(const struct wall *w)
 			break;
 		nanosleep(&(struct timespec){.tv_nsec = 10000000}, NULL);
 	}
+	double wall_s = sys_now() - t0;
 	struct record it;
 	record_init(&it, w);
 	int popped = 0;
@@ -675,6 +688,14 @@ static void test_pace(const struct wall *w)
 	tap_ok(pg.ahead == cfg.n && popped == cfg.n && after.ahead == 0,
 	       "mc_progress: %ld samples ahead when all are finished and none "
 	       "popped (12), %ld after %d pops", pg.ahead, after.ahead, popped);
+	/* their worker seconds move with them, from ahead to given, and
+	 * are at most the seconds the 2 workers were there */
+	tap_ok(pg.worked == 0 && pg.worked_ahead > 0 &&
+	       pg.worked_ahead <= cfg.threads * wall_s &&
+	       after.worked == pg.worked_ahead && after.worked_ahead == 0,
+	       "mc_progress: the 12 samples' worker seconds, %.3f s ahead "
+	       "(none given), then %.3f s given (at most %d x %.3f s)",
+	       pg.worked_ahead, after.worked, cfg.threads, wall_s);
 }
 
 int main(void)
