@@ -203,6 +203,31 @@ for pair in "single-block two" "two-block-stack one"; do
 		--out "$tmp/rep-$2"
 done
 
+# ---- the least load that keeps the mechanism is at most the SLP's ---
+# (docs/method.md, "One sample", step 5).  LP-min's optimum was above
+# lambda_max on 43 % of Ferris & Tin-Loi wall 1's samples, by round-off,
+# and on samples 508 and 524 of seed 1 by 8.5e-10 and 3.0e-10 of the
+# load (tests/data/ftl1-seed1-s508s524.csv: their draws).
+# min_le_max FILE N: true when FILE has N accepted samples, each with
+# lambda_min <= lambda_max
+min_le_max() {
+	python3 - "$1" "$2" <<'PY'
+import csv, sys
+rows = [r for r in csv.DictReader(open(sys.argv[1])) if r["status"] == "accepted"]
+above = [r["sample"] for r in rows if float(r["lambda_min"]) > float(r["lambda_max"])]
+print("# %d accepted, lambda_min above lambda_max on %d: %s" % (len(rows), len(above), " ".join(above[:10])))
+sys.exit(not (len(rows) == int(sys.argv[2]) and not above))
+PY
+}
+"$bin" run walls/ferris-tinloi-1.yaml --replay tests/data/ftl1-seed1-s508s524.csv \
+	--threads 1 --samples "$tmp/ft508.csv" >/dev/null 2>&1
+check "Ferris & Tin-Loi 1, samples 508 and 524 of seed 1: lambda_min <= lambda_max" \
+	min_le_max "$tmp/ft508.csv" 2
+"$bin" run walls/ferris-tinloi-1.yaml -n 300 --seed 1 --threads 2 \
+	--samples "$tmp/ft300.csv" >/dev/null 2>&1
+check "Ferris & Tin-Loi 1, 300 samples of seed 1: lambda_min <= lambda_max on every one" \
+	min_le_max "$tmp/ft300.csv" 300
+
 # ---- large and small numbers: exact, or refused at the input --------
 # (tests/bad/*-overflow.yaml, *-underflow.yaml: the refusals.)  The
 # single block (0.4 x 0.8 of its unit, pulled at 0.6) at other scales:
