@@ -274,6 +274,18 @@ contacts: {depth: 0.4}
 YAML
 check "beside a pier on its left, seed 1, sample 32: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
 	plain_answer leftpier "$tmp/leftpier.yaml" tests/data/leftpier-seed1-s32.csv 0.43 0.44
+# The long phase on a small wall (docs/method.md, "The SLP's answer",
+# rules 7-9 on small walls): the demo wall with random friction (cov
+# 0.3), seed 1, sample 380 (tests/data/demo-cov03-seed1-s380.csv, its
+# contact points and friction).  From iteration 50 its residual grows
+# slowly (2.9e-2 to 3.9e-2 by iteration 115) at a load that no longer
+# changes, its classification changing now and then; each phase of rule
+# 6 cut it before a piece held, and both attempts left it
+# `not_converged` after 2,001 iterations.  The long phase, never cut,
+# reaches a piece whose jump verifies at its iteration 117, at `--slp
+# plain`'s load.
+check "the demo at friction cov 0.3, seed 1, sample 380: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
+	plain_answer demo380 walls/demo.yaml tests/data/demo-cov03-seed1-s380.csv 117 118
 # Blocks that hang on friction (docs/method.md, "What the method cannot
 # answer: blocks that hang on friction"): a sample whose SLP ends because
 # LP1 has no equilibrium, on a wall with blocks that no joint carries
