@@ -972,17 +972,21 @@ static void slp_restart(struct sample_ws *ws)
 	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
 }
 
-/* The default SLP's first three attempts, with o's step (docs/method.md,
- * "The SLP's answer", rules 6, 7 and 8), each from LP-max's capacities
- * (ws->c0) and LP1's and LP2's saved start bases, until one converges or
- * gives a verdict.  The second runs only where the first ends not
- * converged.  On a wall of at most SLP_PHASE interfaces they are rule
- * 6's: the phases alone, then once more with a contracting phase going
- * on (a 7-course wall beside a pier, tests/data/leftpier-seed1-s32.csv,
+/* The default SLP's attempts with o's step (docs/method.md, "The SLP's
+ * answer", rules 6, 7 and 8), each from LP-max's capacities (ws->c0) and
+ * LP1's and LP2's saved start bases, until one converges or gives a
+ * verdict; each runs only where those before it end not converged.  On
+ * a wall of at most SLP_PHASE interfaces the first two are rule 6's:
+ * the phases alone, then once more with a contracting phase going on
+ * (a 7-course wall beside a pier, tests/data/leftpier-seed1-s32.csv,
  * was cut at iteration 100 while its residual halved every iteration;
  * the test in the first attempt would move 2 of the demo's 6,000
- * accepted samples up, to the plain iteration's higher fixed points).
- * On a larger wall the contracting test is on in both, and the second
+ * accepted samples up, to the plain iteration's higher fixed points);
+ * the third is rule 7's long phase, one phase never cut (the demo at
+ * friction cov 0.3, tests/data/demo-cov03-seed1-s380.csv: its residual
+ * grew slowly at a fixed load until a piece held, past each phase's
+ * end; 39 such samples at seeds 1-9, all accepted now).  On a larger
+ * wall the contracting test is on in both, and the second
  * attempt's first phase is one iteration per interface (rule 7): there
  * the plain iteration can drift through many pieces with its residual
  * above SLP_WANDERING all the way (150 iterations at omega 0.5 on a
@@ -990,8 +994,8 @@ static void slp_restart(struct sample_ws *ws)
  * 100-iteration phase restarts it before it is through, with a smaller
  * step that makes the way longer; that wall's 3 samples of 20 (seed 1)
  * that the first left not converged are accepted, each at the plain
- * iteration's load.  Where both leave the sample not converged, the
- * third (rule 8) is a root search at each phase end they passed
+ * iteration's load.  Where these leave the sample not converged, the
+ * last (rule 8) is a root search at each phase end they passed
  * (slp_cycle_root): a cycle across a steep, thin piece of the map (the
  * facade's sample 2 of seed 1: dN/dc about -530 over 0.005 block
  * weights), or a spiral around a fixed point, brackets the fixed point
@@ -1023,8 +1027,8 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	E->on = 0;
 	if (st != SAMPLE_NOT_CONVERGED)
 		return st;
-	/* the third attempt: the phase ends' root searches, in the order
-	 * the two attempts reached them */
+	/* rule 8: the phase ends' root searches, in the order the
+	 * attempts reached them */
 	int its = r->iterations, evals = 0;
 	for (int e = 0; e < E->n && st == SAMPLE_NOT_CONVERGED; e++)
 		st = slp_cycle_root(ws, o, r, e, &evals);
