@@ -972,6 +972,21 @@ static void slp_restart(struct sample_ws *ws)
 	lp_basis_load(ws->lp[LP2], &ws->slp_start[1]);
 }
 
+/* Another attempt from the SLP's start (slp_restart): the piece path
+ * with the contracting test on and the first phase given; the
+ * iterations of the attempts before it count on in r->iterations. */
+static enum sample_status slp_again(struct sample_ws *ws,
+				    const struct sample_opts *o,
+				    struct sample_result *r,
+				    double first_phase)
+{
+	int its = r->iterations;
+	slp_restart(ws);
+	enum sample_status st = slp_piece_path(ws, o, r, first_phase, 1);
+	r->iterations += its;
+	return st;
+}
+
 /* The default SLP's attempts with o's step (docs/method.md, "The SLP's
  * answer", rules 6, 7 and 8), each from LP-max's capacities (ws->c0) and
  * LP1's and LP2's saved start bases, until one converges or gives a
@@ -1011,19 +1026,10 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	E->on = 1;
 	E->n = E->pushed = 0;
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE, !small);
-	if (st == SAMPLE_NOT_CONVERGED) {
-		int its = r->iterations;
-		slp_restart(ws);
-		st = slp_piece_path(ws, o, r, small ? SLP_PHASE : m, 1);
-		r->iterations += its;
-	}
-	if (st == SAMPLE_NOT_CONVERGED && small) {
-		/* rule 7 on a small wall: one phase, never cut */
-		int its = r->iterations;
-		slp_restart(ws);
-		st = slp_piece_path(ws, o, r, o->max_iter, 1);
-		r->iterations += its;
-	}
+	if (st == SAMPLE_NOT_CONVERGED)
+		st = slp_again(ws, o, r, small ? SLP_PHASE : m);
+	if (st == SAMPLE_NOT_CONVERGED && small)	/* one phase, never cut */
+		st = slp_again(ws, o, r, o->max_iter);
 	E->on = 0;
 	if (st != SAMPLE_NOT_CONVERGED)
 		return st;
