@@ -974,14 +974,28 @@ static void slp_restart(struct sample_ws *ws)
 
 /* Another attempt from the SLP's start (slp_restart): the piece path
  * with the contracting test on and the first phase given; the
- * iterations of the attempts before it count on in r->iterations. */
+ * iterations of the attempts before it count on in r->iterations.
+ * slack: LP1 and LP2 start from the slack basis, not from the bases the
+ * start option gave them (rule 7's long phase on a small wall).  A
+ * phase never cut follows a piece it leaves for hundreds of iterations,
+ * and on such a piece the last-bit differences of two LP starts' values
+ * grow about tenfold in ten (the demo's sample 1269 of seed 3: 125.229 N
+ * from five starts, 346.648 N from `crash`).  An LP's values are the
+ * same to the last bit when its simplex takes the same pivots, as it
+ * does from the same basis, unfactorised, and the same bounds: the
+ * capacities ws->c0 (LP-max's), bit for bit the same from every start
+ * wherever measured (docs/method.md, rules 7-9 on small walls). */
 static enum sample_status slp_again(struct sample_ws *ws,
 				    const struct sample_opts *o,
 				    struct sample_result *r,
-				    double first_phase)
+				    double first_phase, int slack)
 {
 	int its = r->iterations;
 	slp_restart(ws);
+	if (slack) {
+		lp_reset_basis(ws->lp[LP1]);
+		lp_reset_basis(ws->lp[LP2]);
+	}
 	enum sample_status st = slp_piece_path(ws, o, r, first_phase, 1);
 	r->iterations += its;
 	return st;
@@ -1027,9 +1041,10 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	E->n = E->pushed = 0;
 	enum sample_status st = slp_piece_path(ws, o, r, SLP_PHASE, !small);
 	if (st == SAMPLE_NOT_CONVERGED)
-		st = slp_again(ws, o, r, small ? SLP_PHASE : m);
-	if (st == SAMPLE_NOT_CONVERGED && small)	/* one phase, never cut */
-		st = slp_again(ws, o, r, o->max_iter);
+		st = slp_again(ws, o, r, small ? SLP_PHASE : m, 0);
+	/* one phase, never cut, from the slack bases */
+	if (st == SAMPLE_NOT_CONVERGED && small)
+		st = slp_again(ws, o, r, o->max_iter, 1);
 	E->on = 0;
 	if (st != SAMPLE_NOT_CONVERGED)
 		return st;

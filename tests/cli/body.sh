@@ -235,20 +235,21 @@ check "friction 0.6: the same block slides at lambda = mu = 0.6 ($got)" near "$g
 # start.  It is accepted now, at `--slp plain`'s load, from three starts.
 pier_wall "Running bond beside a pier half its height" 6 1.0 1 >"$tmp/pier.yaml"
 # plain_answer NAME WALL REPLAY LO HI: the replayed sample from the LP
-# starts auto, slack-primal and support, and by `--slp plain`: all four
-# accepted, one lambda_min to 1e-9, and LO < lambda_min < HI
+# starts auto, slack-primal, crash and support, and by `--slp plain`: all
+# five accepted, one lambda_min to 1e-9, and LO < lambda_min < HI
 plain_answer() {
 	local s
-	for s in auto slack-primal support; do
+	for s in auto slack-primal crash support; do
 		SLIPWALL_LP_START=$s "$bin" run "$2" --replay "$3" \
 			--threads 1 --samples "$tmp/$1-$s.csv" >/dev/null 2>&1
 	done
 	"$bin" run "$2" --replay "$3" --slp plain --threads 1 \
 		--samples "$tmp/$1-plain.csv" >/dev/null 2>&1
 	one_load --in "$4" "$5" "$tmp/$1"-plain.csv "$tmp/$1"-auto.csv \
-		"$tmp/$1"-slack-primal.csv "$tmp/$1"-support.csv
+		"$tmp/$1"-slack-primal.csv "$tmp/$1"-crash.csv \
+		"$tmp/$1"-support.csv
 }
-check "beside a half-height pier, seed 1, sample 4: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9, below mu" \
+check "beside a half-height pier, seed 1, sample 4: accepted from the starts auto, slack-primal, crash, support at --slp plain's lambda_min to 1e-9, below mu" \
 	plain_answer pier "$tmp/pier.yaml" tests/data/pier-half-seed1-s4.csv 0.59 0.5999
 
 # A phase cut in the middle of a steady contraction (docs/method.md, "The
@@ -272,7 +273,7 @@ loads:
   - body: {direction: [1, 0]}
 contacts: {depth: 0.4}
 YAML
-check "beside a pier on its left, seed 1, sample 32: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
+check "beside a pier on its left, seed 1, sample 32: accepted from the starts auto, slack-primal, crash, support at --slp plain's lambda_min to 1e-9" \
 	plain_answer leftpier "$tmp/leftpier.yaml" tests/data/leftpier-seed1-s32.csv 0.43 0.44
 # The long phase on a small wall (docs/method.md, "The SLP's answer",
 # rules 7-9 on small walls): the demo wall with random friction (cov
@@ -284,8 +285,20 @@ check "beside a pier on its left, seed 1, sample 32: accepted from the starts au
 # `not_converged` after 2,001 iterations.  The long phase, never cut,
 # reaches a piece whose jump verifies at its iteration 117, at `--slp
 # plain`'s load.
-check "the demo at friction cov 0.3, seed 1, sample 380: accepted from the starts auto, slack-primal, support at --slp plain's lambda_min to 1e-9" \
+check "the demo at friction cov 0.3, seed 1, sample 380: accepted from the starts auto, slack-primal, crash, support at --slp plain's lambda_min to 1e-9" \
 	plain_answer demo380 walls/demo.yaml tests/data/demo-cov03-seed1-s380.csv 117 118
+# The long phase from the slack bases (docs/method.md, "The SLP's
+# answer", rules 7-9 on small walls): the demo wall, seed 3, sample 1269
+# (tests/data/demo-seed3-s1269.csv), whose first two attempts leave it
+# `not_converged`.  From iteration 20 of the long phase its path is on a
+# piece whose jump failed, and leaves it slowly; on that piece the
+# last-bit differences between two LP starts grow about tenfold in ten
+# iterations.  When the long phase started from the bases the start
+# option gave, `crash` left the piece at about iteration 140 for
+# 346.648 N and every other start at 290 for 125.229 N, `--slp plain`'s
+# load.  From the slack bases every start takes one path.
+check "the demo, seed 3, sample 1269: accepted from the starts auto, slack-primal, crash, support at --slp plain's lambda_min to 1e-9" \
+	plain_answer demo1269 walls/demo.yaml tests/data/demo-seed3-s1269.csv 125 126
 # Blocks that hang on friction (docs/method.md, "What the method cannot
 # answer: blocks that hang on friction"): a sample whose SLP ends because
 # LP1 has no equilibrium, on a wall with blocks that no joint carries
