@@ -388,6 +388,19 @@ static enum sample_status path_end(struct sample_ws *ws,
 	return st;
 }
 
+/* LP1 and LP2 from the slack basis, which no start option touches, for
+ * a path on which the last-bit differences of two starts' LP values
+ * would grow to a decision.  An LP's values are the same to the last bit
+ * when its simplex takes the same pivots, as it does from the same
+ * basis, unfactorised, and the same bounds: the capacities ws->c0
+ * (LP-max's), bit for bit the same from every start wherever measured
+ * (docs/method.md, "Rules 7-9 on small walls"). */
+static void slp_slack_bases(struct sample_ws *ws)
+{
+	lp_reset_basis(ws->lp[LP1]);
+	lp_reset_basis(ws->lp[LP2]);
+}
+
 /* Step 2b from the start in ws->c (sws_slp chooses it): the stabilised
  * SLP.  The plain
  * iteration is c <- c + omega (N(c) - c) (o->slp == SAMPLE_SLP_PLAIN);
@@ -424,16 +437,12 @@ static enum sample_status slp_from(struct sample_ws *ws,
 	int accel = o->slp == SAMPLE_SLP_ANDERSON;
 	/* the start, for a plain restart and for slp_clamp_lost */
 	memcpy(ws->c0, ws->c, sizeof(double) * (size_t)m);
-	/* LP1 and LP2 from the slack basis, as rule 7's long phase
-	 * (slp_again): the plain iteration has no phases, and where it
-	 * wanders its answer is where round-off lets it first meet its
-	 * tolerance (the demo, seed 1, 2,000 samples: 3 differed between
-	 * `auto` and `crash`, by 61-125 %).  From the same bases and
-	 * capacities its LPs take the same pivots from every start, so it
-	 * is one computation (docs/method.md, "The plain iteration's
-	 * start") */
-	lp_reset_basis(ws->lp[LP1]);
-	lp_reset_basis(ws->lp[LP2]);
+	/* from the slack bases, as rule 7's long phase (slp_again): the
+	 * plain iteration has no phases, and where it wanders its answer is
+	 * where round-off lets it first meet its tolerance (the demo, seed
+	 * 1, 2,000 samples: 3 differed between `auto` and `crash`, by
+	 * 61-125 %; docs/method.md, "The plain iteration's start") */
+	slp_slack_bases(ws);
 	for (int it = 1; it <= o->max_iter; it++) {
 		r->iterations = it;
 		if (accel && tries == SLP_TRIES) {
@@ -985,16 +994,12 @@ static void slp_restart(struct sample_ws *ws)
 /* Another attempt from the SLP's start (slp_restart): the piece path
  * with the contracting test on and the first phase given; the
  * iterations of the attempts before it count on in r->iterations.
- * slack: LP1 and LP2 start from the slack basis, not from the bases the
+ * slack: from the slack bases (slp_slack_bases), not from the bases the
  * start option gave them (rule 7's long phase on a small wall).  A
  * phase never cut follows a piece it leaves for hundreds of iterations,
  * and on such a piece the last-bit differences of two LP starts' values
  * grow about tenfold in ten (the demo's sample 1269 of seed 3: 125.229 N
- * from five starts, 346.648 N from `crash`).  An LP's values are the
- * same to the last bit when its simplex takes the same pivots, as it
- * does from the same basis, unfactorised, and the same bounds: the
- * capacities ws->c0 (LP-max's), bit for bit the same from every start
- * wherever measured (docs/method.md, rules 7-9 on small walls). */
+ * from five starts, 346.648 N from `crash`). */
 static enum sample_status slp_again(struct sample_ws *ws,
 				    const struct sample_opts *o,
 				    struct sample_result *r,
@@ -1002,10 +1007,8 @@ static enum sample_status slp_again(struct sample_ws *ws,
 {
 	int its = r->iterations;
 	slp_restart(ws);
-	if (slack) {
-		lp_reset_basis(ws->lp[LP1]);
-		lp_reset_basis(ws->lp[LP2]);
-	}
+	if (slack)
+		slp_slack_bases(ws);
 	enum sample_status st = slp_piece_path(ws, o, r, first_phase, 1);
 	r->iterations += its;
 	return st;
