@@ -64,7 +64,9 @@ enum sw_status runlog_read_draws(const char *path, const struct wall *w,
 /* Read the accepted loads of a samples file of wall w (for report and
  * compare): its lambda_min column times wall_quantity's scale, the
  * quantity people read (the force in N of a point load); refused like runlog_read_draws when its
- * header does not have w's interfaces; warn as above. */
+ * header does not have w's interfaces, and at an accepted row whose
+ * lambda_max is not a number or is below its lambda_min by more than
+ * 1e-6 of itself; warn as above. */
 enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 				 double **lam, long *n, char *warn, char *err);
 

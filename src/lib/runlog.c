@@ -637,10 +637,26 @@ enum sw_status runlog_read_loads(const char *path, const struct wall *w,
 			break;
 		if (status != SAMPLE_ACCEPTED)
 			continue;
-		double v;
+		double v, vmax;
 		if (parse_num(r.field[3], &v) || v < 0) {
 			st = at(&r, 3, err, "an accepted sample needs a "
 				"lambda_min: a finite number >= 0");
+			break;
+		}
+		if (parse_num(r.field[2], &vmax)) {
+			st = at(&r, 2, err, "an accepted sample needs a "
+				"lambda_max: a finite number");
+			break;
+		}
+		/* slipwall writes lambda_min <= lambda_max (docs/method.md,
+		 * step 5); files of versions before that rule have it above
+		 * by round-off, up to 8.5e-10 of the load, so 1e-6 of it
+		 * separates those from a file with its columns swapped or
+		 * edited by hand */
+		if (v > vmax + 1e-6 * fabs(vmax)) {
+			st = at(&r, 3, err, "lambda_min is above lambda_max "
+				"(the onset load of a mechanism is at most the "
+				"SLP's load): not a file that slipwall wrote");
 			break;
 		}
 		if (k == cap) {

@@ -231,6 +231,17 @@ bad "unknown option" "unknown option" $demo --frobnicate
 printf 'sample,status\n' >"$tmp/bad.csv"
 bad "a --samples file that is not one" "bad.csv:1:" $demo --tests "$tmp/tests.txt" \
 	--samples "$tmp/bad.csv"
+# accepted rows whose loads cannot be (slipwall writes lambda_min <= lambda_max)
+printf 'sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1\n0,accepted,9,1,3,0.1,0.9\n1,accepted,2,3,3,0.1,0.9\n' \
+	>"$tmp/swap.csv"
+bad "lambda_min above lambda_max (FILE:LINE:COL)" \
+	"swap.csv:3:14: lambda_min is above lambda_max" $one --tests "$tmp/tests.txt" \
+	--samples "$tmp/swap.csv"
+printf 'sample,status,lambda_max,lambda_min,iterations,xa_1,xb_1\n0,accepted,,1,3,0.1,0.9\n' \
+	>"$tmp/nomax.csv"
+bad "an accepted row without lambda_max (FILE:LINE:COL)" \
+	"nomax.csv:2:12: an accepted sample needs a lambda_max" $one --tests "$tmp/tests.txt" \
+	--samples "$tmp/nomax.csv"
 
 bad "--against without --samples" "give the first with --samples" $demo \
 	--against "$tmp/fa.csv"
