@@ -201,9 +201,9 @@ struct tui {
 	/* why the wall's joints lock under associative friction
 	 * (wall_friction_lock; tui_edit_lock), or "" */
 	char lock[192];
-	/* which blocks rest on no joint (wall_hanging; tui_edit_lock), or
-	 * "" */
-	char hang[320];
+	/* which blocks rest on no joint (wall_hanging) and which overhang
+	 * what they rest on (wall_overhang_text); tui_edit_lock; or "" */
+	char hang[640];
 	int has_std, has_gil;	/* the values below are known */
 	int solve_done;
 	double solve_t0;	/* when the solve thread started */

@@ -35,21 +35,27 @@
  * title marks such a wall (tui_home_title), and the message
  * of the edit or the opening that made it says why (docs/workbench.md,
  * "Friction that locks").  And t->hang: the blocks that rest on no
- * joint (wall_hanging_text), else those that overhang what they rest
- * on (wall_overhang_text), or "": the message says that too
- * (docs/workbench.md, "Blocks that hang"). */
+ * joint (wall_hanging_text) and those that overhang what they rest on
+ * (wall_overhang_text), either or both, or "": the message says that
+ * too, as `check` warns of each (docs/workbench.md, "Blocks that
+ * hang"). */
 void tui_edit_lock(struct tui *t)
 {
-	char joints[sizeof t->lock - 96], blocks[sizeof t->hang - 64];
+	char joints[sizeof t->lock - 96];
+	char hang[(sizeof t->hang - 64) / 2], over[sizeof hang];
 	t->lock[0] = t->hang[0] = 0;
-	if (t->w && wall_friction_lock_text(t->w, joints, sizeof joints))
+	if (!t->w)
+		return;
+	if (wall_friction_lock_text(t->w, joints, sizeof joints))
 		snprintf(t->lock, sizeof t->lock, "%s lock under associative "
 			 "friction: loads may be the lock's, not the wall's "
 			 "(docs/method.md)", joints);
-	if (t->w && (wall_hanging_text(t->w, blocks, sizeof blocks) ||
-		     wall_overhang_text(t->w, blocks, sizeof blocks)))
-		snprintf(t->hang, sizeof t->hang, "%s: samples may be "
-			 "rejected as hanging (docs/method.md)", blocks);
+	int h = wall_hanging_text(t->w, hang, sizeof hang);
+	int o = wall_overhang_text(t->w, over, sizeof over);
+	if (h || o)
+		snprintf(t->hang, sizeof t->hang, "%s%s%s: samples may be "
+			 "rejected as hanging (docs/method.md)", h ? hang : "",
+			 h && o ? "; " : "", o ? over : "");
 }
 
 /* The message line as it is, with the lock's and the hanging blocks'

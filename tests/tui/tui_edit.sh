@@ -311,4 +311,15 @@ else
 fi
 T send-keys -t t:o q
 wait_for o '^samples: ' 10
+# both kinds (tests/data/opening-no-lintel.yaml): the message names the
+# hanging blocks and the overhanging ones, as `check` warns of each
+start b LANG=C.UTF-8 LC_ALL=C.UTF-8 -- tests/data/opening-no-lintel.yaml
+if wait_for b 'warning: block c10b2 and 2 others rest on no joint below them' 20 &&
+   screen b | tr -d '\n' | grep -q 'only on them; block c6b2 overhangs what it rests on'; then
+	ok "blocks over an opening without a lintel, and jamb blocks half over it: the message says both"
+else
+	not_ok "blocks over an opening without a lintel, and jamb blocks half over it: the message says both" "$(screen b)"
+fi
+T send-keys -t t:b q
+wait_for b '^samples: ' 10
 tap_end
