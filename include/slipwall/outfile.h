@@ -20,8 +20,10 @@
  *    A FIFO that no process reads is never waited on in
  *    silence: "slipwall: PATH: waiting for a process to read this FIFO"
  *    goes to stderr, then the open waits (a reader started beside the
- *    command, `cat FIFO &`, may come a moment later; Ctrl-C stops the
- *    wait).  Where the output does not allow
+ *    command, `cat FIFO &`, may come a moment later); SIGINT (Ctrl-C),
+ *    SIGTERM or SIGHUP ends the wait with SW_EINTR and "PATH:
+ *    interrupted (SIGNAL) while waiting for a process to read this
+ *    FIFO: nothing was written".  Where the output does not allow
  *    a stream (the workbench's save and summary, report.md) and for
  *    anything else that is not a regular file (a directory, a block
  *    device, a socket) the path is refused, naming what it is.

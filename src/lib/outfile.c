@@ -14,6 +14,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -158,6 +159,62 @@ enum sw_status outfile_check(const char *path, const char *const *inputs,
 	return check(path, inputs, flags, what, 1, err);
 }
 
+/* The signal that ended a wait for a FIFO's reader (wait_reader). */
+static volatile sig_atomic_t wait_sig;
+
+static void on_wait_signal(int sig)
+{
+	wait_sig = sig;
+}
+
+/* "waiting for a process to read this FIFO", then open(2) of the FIFO
+ * for writing, which blocks until a process reads it; SIGINT, SIGTERM
+ * and SIGHUP (those a run catches, run.h) end the wait: -1 with errno
+ * EINTR and the signal in *sig.  Caught without SA_RESTART from before
+ * the message (so a signal sent once it is read finds them caught) to
+ * the end of the wait, and given back as they were (a signal ignored
+ * at start stays ignored). */
+static int wait_reader(const char *path, int oflags, int *sig)
+{
+	static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
+	struct sigaction sa, old[3];
+	int on[3];
+	memset(&sa, 0, sizeof sa);
+	sa.sa_handler = on_wait_signal;
+	sigemptyset(&sa.sa_mask);
+	wait_sig = 0;
+	for (int k = 0; k < 3; k++) {
+		sigaction(sigs[k], NULL, &old[k]);
+		on[k] = old[k].sa_handler != SIG_IGN;
+		if (on[k])
+			sigaction(sigs[k], &sa, NULL);
+	}
+	char *c = text_clean(path);
+	fprintf(stderr, "slipwall: %s: waiting for a process to read this "
+		"FIFO\n", c);
+	free(c);
+	/* a signal while the message is written ends the wait before it
+	 * starts; one between this test and open(2) is the window that
+	 * no call closes for open (it has no sigmask variant) */
+	int fd = -1;
+	errno = EINTR;
+	while (!wait_sig && (fd = open(path, oflags, 0666)) < 0 &&
+	       errno == EINTR)
+		;
+	if (fd >= 0 && wait_sig) {	/* the reader came with the signal */
+		close(fd);
+		fd = -1;
+		errno = EINTR;
+	}
+	int e = errno;
+	for (int k = 0; k < 3; k++)
+		if (on[k])
+			sigaction(sigs[k], &old[k], NULL);
+	*sig = wait_sig;
+	errno = e;
+	return fd;
+}
+
 int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 		    const char *what, struct stat *st, enum sw_status *stp,
 		    char *err)
@@ -168,12 +225,17 @@ int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 	if (fd < 0 && errno == ENXIO) {
 		/* a FIFO that no process reads: said, then waited for (a
 		 * reader started beside the command may come a moment
-		 * later) */
-		char *c = text_clean(path);
-		fprintf(stderr, "slipwall: %s: waiting for a process to read "
-			"this FIFO\n", c);
-		free(c);
-		fd = open(path, oflags, 0666);
+		 * later); a signal ends the wait with a message, not in
+		 * silence */
+		int sig;
+		fd = wait_reader(path, oflags, &sig);
+		if (fd < 0 && sig) {
+			*stp = SW_EINTR;
+			sw_fail(err, SW_EINTR, "%s: interrupted (%s) while "
+				"waiting for a process to read this FIFO: "
+				"nothing was written", path, strsignal(sig));
+			return -1;
+		}
 	}
 	if (fd < 0) {
 		sw_fail(err, SW_EIO, "%s: cannot create: %s", path,

@@ -12,7 +12,8 @@
 # unsigned; the table escapes a wall's name; report and sweep check
 # --out (and sweep --csv) before sampling; a symbolic link to a
 # directory is a directory; report never overwrites an input in its
-# directory; run --samples to a FIFO that nobody reads says so; a signal
+# directory; run --samples to a FIFO that nobody reads says so, and a
+# signal during that wait ends it with a message; a signal
 # while run or compare writes its JSON to a pipe nobody drains yet leaves
 # it whole, with exit 1 and a message.
 # Each of these fails on fa21007.  TAP output.
@@ -272,5 +273,25 @@ else
 	not_ok "run --samples FIFO without a reader: said, not a silent block" "said $said, exit $rc" \
 		"$(head -c 300 "$tmp/fe")"
 fi
+# ... and a signal during that wait ends it with a message, not in
+# silence (it killed the process before)
+set -m	# job control: a background job does not ignore SIGINT
+for sig in TERM HUP INT; do
+	"$bin" run $block -n 5 --threads 1 --samples "$tmp/nobody" >"$tmp/fo" 2>"$tmp/fe" &
+	pid=$!
+	pids="$pids $pid"
+	within 20 grep -qs "nobody: waiting for a process to read this FIFO" "$tmp/fe"
+	kill -$sig $pid
+	wait $pid
+	rc=$?
+	if [ $rc = 1 ] && grep -q "slipwall run: .*nobody: interrupted (.*) while waiting for a process to read this FIFO: nothing was written" "$tmp/fe" &&
+	   [ -p "$tmp/nobody" ]; then
+		ok "SIG$sig while run waits for the FIFO's reader: exit 1, 'interrupted while waiting', the FIFO left"
+	else
+		not_ok "SIG$sig while run waits for the FIFO's reader: a message" "exit $rc" \
+			"$(head -c 300 "$tmp/fe")"
+	fi
+done
+set +m
 
 tap_end
