@@ -266,6 +266,29 @@ int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 	return fd;
 }
 
+int outfile_open_beside(const char *path, mode_t mode, char **dest,
+			char **tmp, char *err)
+{
+	*dest = destination(path);
+	size_t n = strlen(*dest) + 5;
+	*tmp = sw_xmalloc(n);
+	snprintf(*tmp, n, "%s.tmp", *dest);
+	int fd = open(*tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+	if (fd < 0 || fchmod(fd, mode & 07777) != 0) {
+		sw_fail(err, SW_EIO, "%s: cannot write: %s", *tmp,
+			strerror(errno));
+		if (fd >= 0) {
+			close(fd);
+			unlink(*tmp);
+		}
+		free(*dest);
+		free(*tmp);
+		*dest = *tmp = NULL;
+		return -1;
+	}
+	return fd;
+}
+
 /* Release what o holds. */
 static void outfile_free(struct outfile *o)
 {

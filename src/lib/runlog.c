@@ -109,18 +109,27 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 			     char *err)
 {
 	*out = NULL;
-	/* not O_TRUNC: the file is only cut once it is known to be none
-	 * of the inputs and not another run's; a FIFO that no process
-	 * reads is refused at once (outfile.h) */
+	/* not O_TRUNC: an old file is replaced only once it is known to be
+	 * none of the inputs and not another run's, and once the new
+	 * header is on the disk (below); a FIFO that no process reads is
+	 * said, then waited for (outfile.h) */
 	struct stat st;
 	enum sw_status ost;
 	int fd = outfile_open_fd(path, 0, keep, "the samples", &st, &ost,
 				 err);
 	if (fd < 0)
 		return ost;
+	int old = -1;		/* the old file, locked until replaced */
+	char *dest = NULL, *tmp = NULL;
 	if (S_ISREG(st.st_mode)) {
-		if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-			int e = errno;
+		/* locked, and still the file at path: a run that replaced
+		 * it between our open and our lock is writing it */
+		struct stat now;
+		int e = flock(fd, LOCK_EX | LOCK_NB) != 0 ? errno :
+			stat(path, &now) != 0 ? errno :
+			now.st_dev != st.st_dev || now.st_ino != st.st_ino ?
+			EWOULDBLOCK : 0;
+		if (e) {
 			close(fd);
 			if (e == EWOULDBLOCK)
 				return sw_fail(err, SW_EINPUT, "%s: another "
@@ -129,11 +138,18 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 			return sw_fail(err, SW_EIO, "%s: cannot lock: %s",
 				       path, strerror(e));
 		}
-		if (ftruncate(fd, 0) != 0) {
-			int e = errno;
-			close(fd);
-			return sw_fail(err, SW_EIO, "%s: cannot truncate: %s",
-				       path, strerror(e));
+		if (st.st_size > 0) {
+			/* the old samples stay whole until the new header is
+			 * written: it goes to DEST.tmp, renamed over the old
+			 * file after (a full disk leaves the old file) */
+			old = fd;
+			fd = outfile_open_beside(path, st.st_mode, &dest, &tmp,
+						 err);
+			if (fd < 0) {
+				close(old);
+				return SW_EIO;
+			}
+			flock(fd, LOCK_EX | LOCK_NB);	/* a new file */
 		}
 	}
 	struct runlog *l = sw_xcalloc(1, sizeof *l);
@@ -155,13 +171,22 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 	}
 	put(l, "\n", 1);
 	enum sw_status rc = flush_row(l, err);
+	if (rc == SW_OK && tmp && rename(tmp, dest) != 0)
+		rc = sw_fail(err, SW_EIO, "%s: cannot replace: %s", path,
+			     strerror(errno));
 	if (rc != SW_OK) {
+		if (tmp)
+			unlink(tmp);
 		close(fd);
 		runlog_free(l);
-		return rc;
+	} else {
+		*out = l;
 	}
-	*out = l;
-	return SW_OK;
+	if (old >= 0)
+		close(old);
+	free(dest);
+	free(tmp);
+	return rc;
 }
 
 enum sw_status runlog_write(struct runlog *l, const struct record *it,

@@ -8,7 +8,8 @@
 # accepted sample is the one a clean run computes; `solve` reports a
 # numerical failure with exit 1; a samples file that cannot be created,
 # /dev/full, or a disk that fills up mid-run (a file size limit) give a
-# clear error, exit 1, and no half row; stdout on a full disk is an error;
+# clear error, exit 1, and no half row, and a disk full before the header
+# leaves the old samples file; stdout on a full disk is an error;
 # SIGHUP stops a run like SIGINT and SIGTERM (tests/cli/run.sh has those
 # two and SIGKILL); a second SIGINT kills at once and leaves complete
 # rows; SIGKILL leaves no JSON or a valid one.  The workbench (in a
@@ -161,6 +162,21 @@ else
 	not_ok "the disk fills mid-run: no half row (src/lib/runlog.c flush_row: truncate a short row)" \
 		"$rows newline-terminated rows, JSON counts $jn" \
 		"last bytes: $(tail -c 40 "$tmp/lim.csv" | tr '\n' '|')"
+fi
+# the disk is full before the header: a run over an old samples file
+# leaves it byte for byte (it was cut to nothing before), and no
+# temporary file beside it
+cp "$tmp/lim.csv" "$tmp/lim.ref"
+# (stderr through a pipe: a file would be under the limit too)
+(trap '' XFSZ; ulimit -f 0; exec "$bin" run $demo -n 5 --threads 1 \
+	--samples "$tmp/lim.csv" 2>&1 >/dev/null) | cat >"$tmp/lim0.err"
+rc=${PIPESTATUS[0]}
+if [ $rc -eq 1 ] && grep -qF "$tmp/lim.csv" "$tmp/lim0.err" && cmp -s "$tmp/lim.csv" "$tmp/lim.ref" &&
+   [ ! -e "$tmp/lim.csv.tmp" ]; then
+	ok "the disk is full before the header: exit 1, the old samples file byte for byte, no temporary file"
+else
+	not_ok "the disk is full before the header: the old samples file kept" "exit $rc" \
+		"$(head -c 300 "$tmp/lim0.err")" "$(ls -la "$tmp" | grep lim)"
 fi
 
 # ---- the report's figures: an unwritable place, a full disk -------------------
