@@ -84,7 +84,25 @@ struct reader {
 	long visits;
 	const struct wallfile_edit *edits;	/* wallfile_load_edited */
 	int nedits;
+	/* the file's anchors and aliases in document order (pass 1, when
+	 * `track`): libyaml's document keeps an alias as a second
+	 * reference to its anchor's node, so a message about the value
+	 * points at the anchor, and names the aliases too (reader_fail_at) */
+	int track;
+	struct anchor_mark *marks;
+	int nmarks, capmarks;
 };
+
+/* An anchor (&name) or an alias (*name) of the file and where it is. */
+struct anchor_mark {
+	char name[48];		/* cut to fit: only compared with another */
+	int alias;
+	yaml_mark_t at;
+};
+
+/* At most this many are kept (an alias bomb has millions); a message
+ * about a value anchored beyond them names no alias. */
+#define READER_MAX_MARKS 4096
 
 /* The nodes an edit adds carry this line (plus the edit's index) in
  * their marks, so that a message about them names the edit, not a place
@@ -96,10 +114,68 @@ struct reader {
 static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
 			  ...) __attribute__((format(printf, 3, 4)));
 
+/* Where the value at m, if an anchor's, is used through its aliases:
+ * " (the value of &NAME, used through *NAME at L:C, L:C ...)", or "".
+ * libyaml refuses an anchor's name a second time, so the uses are the
+ * aliases of that name after it.  Into buf, of ALIASES_LEN bytes. */
+#define ALIASES_LEN 256
+static const char *reader_aliases(const struct reader *r, yaml_mark_t m,
+				  char *buf)
+{
+	const size_t size = ALIASES_LEN;
+	buf[0] = 0;
+	int a = -1;
+	for (int i = 0; i < r->nmarks && a < 0; i++)
+		if (!r->marks[i].alias && r->marks[i].at.line == m.line &&
+		    r->marks[i].at.column == m.column)
+			a = i;
+	if (a < 0)
+		return buf;
+	const char *name = r->marks[a].name;
+	size_t len = 0;
+	int uses = 0;
+	for (int i = a + 1; i < r->nmarks; i++) {
+		const struct anchor_mark *u = &r->marks[i];
+		if (!u->alias || strcmp(u->name, name))
+			continue;
+		if (uses++ == 0)
+			len = (size_t)snprintf(buf, size, " (the value of "
+					       "&%s, used through *%s at %zu:%zu",
+					       name, name, u->at.line + 1,
+					       u->at.column + 1);
+		else if (len < size - 32)
+			len += (size_t)snprintf(buf + len, size - len,
+						", %zu:%zu", u->at.line + 1,
+						u->at.column + 1);
+	}
+	if (uses && len < size - 2)
+		snprintf(buf + len, size - len, ")");
+	else if (uses)
+		snprintf(buf + size - 6, 6, "...)");
+	return buf;
+}
+
+/* Pass 1's record of an anchor or an alias (reader.track). */
+static void reader_mark(struct reader *r, const unsigned char *name,
+			int alias, yaml_mark_t at)
+{
+	if (!r->track || !name || r->nmarks >= READER_MAX_MARKS)
+		return;
+	if (r->nmarks == r->capmarks) {
+		r->capmarks = r->capmarks ? 2 * r->capmarks : 16;
+		r->marks = sw_xrealloc(r->marks, sizeof *r->marks *
+				       (size_t)r->capmarks);
+	}
+	struct anchor_mark *k = &r->marks[r->nmarks++];
+	snprintf(k->name, sizeof k->name, "%s", (const char *)name);
+	k->alias = alias;
+	k->at = at;
+}
+
 static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
 			  ...)
 {
-	char msg[SW_ERRLEN];
+	char msg[SW_ERRLEN], uses[ALIASES_LEN];
 	va_list ap;
 	va_start(ap, fmt);
 	vsnprintf(msg, sizeof msg, fmt, ap);
@@ -108,8 +184,9 @@ static int reader_fail_at(struct reader *r, yaml_mark_t m, const char *fmt,
 		sw_fail(r->err, SW_EINPUT, "%s: %s",
 			r->edits[m.line - EDIT_LINE].label, msg);
 	else
-		sw_fail(r->err, SW_EINPUT, "%s:%zu:%zu: %s", r->name,
-			m.line + 1, m.column + 1, msg);
+		sw_fail(r->err, SW_EINPUT, "%s:%zu:%zu: %s%s", r->name,
+			m.line + 1, m.column + 1, msg,
+			reader_aliases(r, m, uses));
 	return -1;
 }
 
@@ -1212,6 +1289,16 @@ static int wallfile_prescan(struct reader *r, const char *buf, size_t len)
 			break;
 		}
 		yaml_event_type_t t = ev.type;
+		if (t == YAML_ALIAS_EVENT)
+			reader_mark(r, ev.data.alias.anchor, 1, ev.start_mark);
+		else if (t == YAML_SCALAR_EVENT)
+			reader_mark(r, ev.data.scalar.anchor, 0, ev.start_mark);
+		else if (t == YAML_SEQUENCE_START_EVENT)
+			reader_mark(r, ev.data.sequence_start.anchor, 0,
+				    ev.start_mark);
+		else if (t == YAML_MAPPING_START_EVENT)
+			reader_mark(r, ev.data.mapping_start.anchor, 0,
+				    ev.start_mark);
 		if (t == YAML_SEQUENCE_START_EVENT ||
 		    t == YAML_MAPPING_START_EVENT) {
 			if (++depth > WALLFILE_MAX_DEPTH)
@@ -1256,6 +1343,7 @@ static int reader_load(struct reader *r, const char *buf, size_t len,
 	yaml_parser_initialize(&p);
 	yaml_parser_set_input_string(&p, (const unsigned char *)buf, len);
 	if (!yaml_parser_load(&p, doc)) {
+		r->nmarks = 0;	/* a syntax error, not a value's */
 		reader_yaml_error(r, &p, buf, len);
 		yaml_parser_delete(&p);
 		memset(doc, 0, sizeof *doc);
@@ -1303,12 +1391,15 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 	memset(&r, 0, sizeof r);
 	r.name = name ? name : "<wall>";
 	r.err = err;
+	r.track = 1;
 	if (len > WALLFILE_MAX_BYTES)
 		return sw_fail(err, SW_EINPUT,
 			       "%s: file is larger than %u bytes", r.name,
 			       WALLFILE_MAX_BYTES);
-	if (reader_load(&r, buf, len, &r.doc))
+	if (reader_load(&r, buf, len, &r.doc)) {
+		free(r.marks);
 		return SW_EINPUT;
+	}
 	yaml_node_t *root = yaml_document_get_root_node(&r.doc);
 	if (!root) {
 		sw_fail(err, SW_EINPUT, "%s:1:1: the file is empty", r.name);
@@ -1342,6 +1433,7 @@ static enum sw_status parse_edited(const char *buf, size_t len,
 	}
 out:
 	yaml_document_delete(&r.doc);
+	free(r.marks);
 	if (rc)
 		return SW_EINPUT;
 	*out = r.w;

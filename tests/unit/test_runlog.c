@@ -239,9 +239,16 @@ static void test_errors(void)
 	/* every sample once: two runs' files joined would count the loads
 	 * twice (the repeat's line, the first's in the message) */
 	refused("twice.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
-		"1,accepted,1,2,3,0.1,0.9,0.2,0.8\n"
+		"1,accepted,2,2,3,0.1,0.9,0.2,0.8\n"
 		"0,accepted,1,1,3,0.1,0.9,0.2,0.8\n", 1, "4:1",
 		"sample 0 again (first on line 2)");
+	/* slipwall writes lambda_min <= lambda_max; older files exceed it
+	 * by round-off only (runlog_read_loads) */
+	refused("minmax.csv", HDR "0,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
+		"1,accepted,1,1.5,3,0.1,0.9,0.2,0.8\n", 1, "3:14",
+		"lambda_min is above lambda_max");
+	refused("nomax.csv", HDR "0,accepted,,1,3,0.1,0.9,0.2,0.8\n", 1,
+		"2:12", "needs a lambda_max");
 	refused("twice-pos.csv", HDR "5,accepted,1,1,3,0.1,0.9,0.2,0.8\n"
 		"7,no_mechanism,1,,3,0.1,0.9,0.2,0.8\n"
 		"7,accepted,1,2,3,0.1,0.9,0.2,0.8\n", 0, "4:1",
