@@ -48,7 +48,9 @@ void *sw_xrealloc(void *p, size_t n);
 char *sw_xstrdup(const char *s);
 
 /* The library's set-up for the whole process: GSL's error handler off
- * (GSL functions return their errors; the library checks each one).
+ * (GSL functions return their errors; the library checks each one),
+ * and malloc's thresholds fixed so that the LPs' freed working memory
+ * stays in the process (status.c, keep_freed_memory).
  * Idempotent and thread-safe.  Each front end calls it first (main); the
  * entry points that reach GSL code that can fail (mc_start,
  * sample_ws_new) call it too, so a library user or a unit test that

@@ -1,7 +1,11 @@
 /* status.c - the status table, error formatting, checked allocation,
- * the library's process set-up (sw_init).  (Files written whole:
+ * the library's process set-up (sw_init: GSL's handler, malloc's
+ * thresholds).  (Files written whole:
  * outfile.c.) */
 #include <errno.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,9 +22,32 @@
  * of the library checks its own result (docs/reliability.md, "GSL"). */
 static pthread_once_t sw_init_once = PTHREAD_ONCE_INIT;
 
+/* Freed memory stays in the process.  GLPK builds its working copy of
+ * an LP at every glp_simplex call and frees it after (a few MB on a
+ * wall of hundreds of interfaces, an SLP solves two LPs an iteration),
+ * and glibc's malloc gives large freed blocks back to the kernel as it
+ * goes (munmap, or a trim of a worker's heap), so the next call faults
+ * them in again; with two workers the faults also contend for the
+ * process's memory map.  On tests/data/body-195.yaml that was 8 % of
+ * the CPU in the kernel and both workers slower: fixed thresholds make
+ * `run -n 40 --threads 2` 15-20 % faster, and the small walls'
+ * samples take what they took (docs/performance.md, "Freed memory kept
+ * in the process").  A process then holds each worker's largest
+ * working set until it exits, which it would fault in again at its
+ * next LP anyway.  The mmap threshold is glibc's largest dynamic one
+ * (32 MiB on 64-bit), the trim threshold four times that. */
+static void keep_freed_memory(void)
+{
+#ifdef __GLIBC__
+	mallopt(M_MMAP_THRESHOLD, 32 << 20);
+	mallopt(M_TRIM_THRESHOLD, 128 << 20);
+#endif
+}
+
 static void sw_init_process(void)
 {
 	gsl_set_error_handler_off();
+	keep_freed_memory();
 }
 
 void sw_init(void)
