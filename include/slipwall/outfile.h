@@ -106,8 +106,8 @@ int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 		     char *err);
 /* A replacement begun beside the file path names, for a file that is
  * not written whole but must stay whole until its replacement has a
- * start (runlog.c: the old samples file until the new header is on the
- * disk): DEST.tmp created empty, DEST being path or the file its
+ * start (runlog.c: the old samples file until the new header is
+ * written): DEST.tmp created empty, DEST being path or the file its
  * symbolic link names (outfile_open's temporary file), with the
  * permissions `mode`.  *dest and *tmp (malloc'd) get both names; rename
  * *tmp to *dest to replace it.  Returns the descriptor, or -1 with

@@ -111,7 +111,7 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 	*out = NULL;
 	/* not O_TRUNC: an old file is replaced only once it is known to be
 	 * none of the inputs and not another run's, and once the new
-	 * header is on the disk (below); a FIFO that no process reads is
+	 * header is written (below); a FIFO that no process reads is
 	 * said, then waited for (outfile.h) */
 	struct stat st;
 	enum sw_status ost;

@@ -95,7 +95,9 @@ struct reader {
 
 /* An anchor (&name) or an alias (*name) of the file and where it is. */
 struct anchor_mark {
-	char name[48];		/* cut to fit: only compared with another */
+	char name[48];		/* cut to fit: two names alike in their first
+				 * 47 bytes count as one, and a message may
+				 * then name an alias of the other too */
 	int alias;
 	yaml_mark_t at;
 };
