@@ -104,16 +104,16 @@ void outfile_abort(struct outfile *o);
 int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 		     const char *what, struct stat *st, enum sw_status *stp,
 		     char *err);
-/* A replacement begun beside the file path names, for a file that is
- * not written whole but must stay whole until its replacement has a
- * start (runlog.c: the old samples file until the new header is
- * written): DEST.tmp created empty, DEST being path or the file its
- * symbolic link names (outfile_open's temporary file), with the
- * permissions `mode`.  *dest and *tmp (malloc'd) get both names; rename
+/* The temporary file beside the file path names, DEST.tmp, DEST being
+ * path or the file its symbolic link names: created empty (truncated if
+ * a killed process left one), with old's permissions where old (the
+ * file it replaces) is given.  outfile_open writes a whole file there;
+ * runlog.c the new samples file's header, so that the old one stays
+ * whole until then.  *dest and *tmp (malloc'd) get both names; rename
  * *tmp to *dest to replace it.  Returns the descriptor, or -1 with
- * "PATH: cannot write: why" in err. */
-int outfile_open_beside(const char *path, mode_t mode, char **dest,
-			char **tmp, char *err);
+ * "DEST.tmp: cannot write: why" in err. */
+int outfile_open_beside(const char *path, const struct stat *old,
+			char **dest, char **tmp, char *err);
 
 /* Can dir be the directory of a command's files (see above)?  names
  * (NULL-terminated, or NULL) are the files it will write in dir: each

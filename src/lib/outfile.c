@@ -266,26 +266,25 @@ int outfile_open_fd(const char *path, int extra, const char *const *inputs,
 	return fd;
 }
 
-int outfile_open_beside(const char *path, mode_t mode, char **dest,
-			char **tmp, char *err)
+int outfile_open_beside(const char *path, const struct stat *old,
+			char **dest, char **tmp, char *err)
 {
 	*dest = destination(path);
 	size_t n = strlen(*dest) + 5;
 	*tmp = sw_xmalloc(n);
 	snprintf(*tmp, n, "%s.tmp", *dest);
-	int fd = open(*tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-	if (fd < 0 || fchmod(fd, mode & 07777) != 0) {
+	int fd = open(*tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+	if (fd < 0) {
 		sw_fail(err, SW_EIO, "%s: cannot write: %s", *tmp,
 			strerror(errno));
-		if (fd >= 0) {
-			close(fd);
-			unlink(*tmp);
-		}
 		free(*dest);
 		free(*tmp);
 		*dest = *tmp = NULL;
 		return -1;
 	}
+	/* the file replaced keeps its permissions */
+	if (old)
+		fchmod(fd, old->st_mode & 07777);
 	return fd;
 }
 
@@ -333,20 +332,20 @@ enum sw_status outfile_open(struct outfile *o, const char *path,
 		return SW_OK;
 	}
 	o->path = sw_xstrdup(path);
-	o->dest = destination(path);
-	size_t n = strlen(o->dest) + 5;
-	o->tmp = sw_xmalloc(n);
-	snprintf(o->tmp, n, "%s.tmp", o->dest);
-	o->f = fopen(o->tmp, "w");
-	if (!o->f) {
+	int fd = outfile_open_beside(path, exists ? &st : NULL, &o->dest,
+				     &o->tmp, err);
+	if (fd < 0) {
+		outfile_free(o);
+		return SW_EIO;
+	}
+	if (!(o->f = fdopen(fd, "w"))) {
 		rc = sw_fail(err, SW_EIO, "%s: cannot write: %s", o->tmp,
 			     strerror(errno));
+		close(fd);
+		unlink(o->tmp);
 		outfile_free(o);
 		return rc;
 	}
-	/* the file replaced keeps its permissions */
-	if (exists)
-		fchmod(fileno(o->f), st.st_mode & 07777);
 	errno = 0;	/* a failed write below leaves its reason here */
 	return SW_OK;
 }

@@ -143,8 +143,7 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 			 * written: it goes to DEST.tmp, renamed over the old
 			 * file after (a full disk leaves the old file) */
 			old = fd;
-			fd = outfile_open_beside(path, st.st_mode, &dest, &tmp,
-						 err);
+			fd = outfile_open_beside(path, &st, &dest, &tmp, err);
 			if (fd < 0) {
 				close(old);
 				return SW_EIO;
