@@ -11,8 +11,9 @@ opening left out of the layout, without a lintel), runs 12 samples of
 each on one thread, two walls at a time, and prints one line a wall: its
 blocks and interfaces, which of its blocks hang (the
 `check` warning, docs/method.md, "What the method cannot answer: blocks
-that hang on friction"), the accepted count and the rejections by reason.
-The walls depend only on SEED: docs/method.md reports seeds 1-17.
+that hang on friction"), which overhang (its other warning, "Blocks that
+overhang an opening"), the accepted count and the rejections by reason.
+The walls depend only on SEED: docs/method.md reports seeds 1-20.
 
 --lintels: each opening gets a lintel, one block in place of the blocks
 of the course just above it that reach over the opening's blocks (a
@@ -131,6 +132,14 @@ def main():
         d = check(slipwall, path)
         hanging = sum('on no joint below' in x for x in d['warnings'])
         text = next((x for x in d['warnings'] if 'on no joint below' in x), '')
+        over = next((x for x in d['warnings'] if 'overhangs' in x), '')
+        # "block B overhangs what it rests on (...), and N other blocks
+        # likewise: ..." (docs/method.md, "Blocks that overhang an opening")
+        m = re.match(r'block (\S+) overhangs[^:]*', over)
+        n = m and re.search(r', and (\d+) other', m.group(0))
+        over = (f"overhang: block {m.group(1)}"
+                f"{' and ' + n.group(1) + ' others' if n else ''}"
+                if m else 'none overhangs')
         r = subprocess.run([slipwall, 'run', path, '-n', '12', '--threads', '1',
                             '--json'], capture_output=True, text=True)
         s = json.loads(r.stdout)
@@ -138,6 +147,7 @@ def main():
         return (f"{path}: {len(d['blocks'])} blocks, "
                 f"{len(d['interfaces'])} interfaces; "
                 f"{'hanging: ' + text.split(':')[0] if hanging else 'none hangs'}; "
+                f"{over}; "
                 f"accepted {s['accepted']}, rejected {rej}")
 
     with ThreadPoolExecutor(2) as pool:
