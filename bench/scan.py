@@ -132,10 +132,10 @@ def main():
         d = check(slipwall, path)
         hanging = sum('on no joint below' in x for x in d['warnings'])
         text = next((x for x in d['warnings'] if 'on no joint below' in x), '')
-        over = next((x for x in d['warnings'] if 'overhangs' in x), '')
+        warning = next((x for x in d['warnings'] if 'overhangs' in x), '')
         # "block B overhangs what it rests on (...), and N other blocks
         # likewise: ..." (docs/method.md, "Blocks that overhang an opening")
-        m = re.match(r'block (\S+) overhangs[^:]*', over)
+        m = re.match(r'block (\S+) overhangs[^:]*', warning)
         n = m and re.search(r', and (\d+) other', m.group(0))
         over = (f"overhang: block {m.group(1)}"
                 f"{' and ' + n.group(1) + ' others' if n else ''}"
