@@ -64,6 +64,8 @@ void solve_opts_default(struct solve_opts *o, enum solve_method m);
 int solve_method_parse(const char *name);
 const char *solve_method_name(enum solve_method m);
 
+#define SOLVE_UNHELD 16
+
 struct solve_result {
 	enum solve_method method;
 	enum sample_status status;	/* ACCEPTED when lambda was found */
@@ -80,6 +82,11 @@ struct solve_result {
 	int bounds_derived;		/* big-M from LPs, not a fallback */
 	double gap;			/* (lambda - lower_bound) / lambda */
 	double seconds;
+	/* `no_equilibrium`: the blocks that cannot be held (sample_unheld),
+	 * the first SOLVE_UNHELD of them, and how many in all (0 when not
+	 * computed or none) */
+	int nunheld;
+	int unheld[SOLVE_UNHELD];
 	/* the mechanism (when found) */
 	int has_mechanism;
 	struct sample_result mech;

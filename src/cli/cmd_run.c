@@ -314,6 +314,24 @@ static void print_families(const struct wall *w, const struct tally *t)
 	family_set_free(&fs);
 }
 
+/* Under the `no_equilibrium` count: the blocks its samples could not
+ * hold (tally_unheld), the three named most often. */
+static void print_unheld(const struct wall *w, const struct tally *t)
+{
+	int b[3];
+	long c[3];
+	int n = tally_unheld(t, b, c, 3);
+	if (n <= 0)
+		return;
+	printf("    cannot be held: ");
+	for (int i = 0; i < n && i < 3; i++)
+		printf("%sblock %s (%ld)", i ? ", " : "", w->blocks[b[i]].id,
+		       c[i]);
+	if (n > 3)
+		printf(", and %d other block%s", n - 3, n > 4 ? "s" : "");
+	printf("\n");
+}
+
 static void print_text(const struct run_info *r, const struct tally *t)
 {
 	struct stats_summary s;
@@ -347,10 +365,13 @@ static void print_text(const struct run_info *r, const struct tally *t)
 	printf("accepted     %ld (%.1f %%)\n", t->accepted,
 	       t->samples ? 100.0 * (double)t->accepted / (double)t->samples : 0.0);
 	printf("rejected     %ld\n", t->samples - t->accepted);
-	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++)
+	for (int k = 0; k < SAMPLE_STATUS_COUNT; k++) {
 		if (k != SAMPLE_ACCEPTED && t->rejected[k])
 			printf("  %-40s %ld\n", sample_status_text(k),
 			       t->rejected[k]);
+		if (k == SAMPLE_NO_EQUILIBRIUM)
+			print_unheld(w, t);
+	}
 	if (s.n > 0) {
 		printf("%-12s min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
 		       "max %.6g\n", *t->q.unit ? "load" : "factor", s.min,
@@ -524,6 +545,26 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
+	/* the blocks the `no_equilibrium` samples could not hold
+	 * (docs/run.md), most samples first */
+	json_key(&j, "unheld");
+	json_array_begin(&j);
+	int nb = tally_unheld(t, NULL, NULL, 0);
+	if (nb > 0) {
+		int *ub = sw_xmalloc(sizeof *ub * (size_t)nb);
+		long *uc = sw_xmalloc(sizeof *uc * (size_t)nb);
+		tally_unheld(t, ub, uc, nb);
+		for (int i = 0; i < nb; i++) {
+			json_object_begin(&j);
+			json_key_string(&j, "block", r->w->blocks[ub[i]].id);
+			json_key(&j, "count");
+			json_int(&j, uc[i]);
+			json_object_end(&j);
+		}
+		free(ub);
+		free(uc);
+	}
+	json_array_end(&j);
 	json_key(&j, "p05_ci_level");	/* the level of p05_ci99's ends */
 	json_double(&j, t->ci_conf);
 	json_key(&j, "design_load");

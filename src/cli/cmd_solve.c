@@ -99,6 +99,19 @@ static void print_json(const struct wall *w, const struct solve_result *r,
 	}
 	json_key(&j, "seconds");
 	json_double(&j, r->seconds);
+	/* no_equilibrium: the blocks the least outside help acts on
+	 * (docs/run.md, "solve --json"), the first SOLVE_UNHELD of them */
+	json_key(&j, "unheld_blocks");
+	if (r->status != SAMPLE_NO_EQUILIBRIUM || !r->nunheld) {
+		json_null(&j);
+	} else {
+		json_array_begin(&j);
+		for (int i = 0; i < r->nunheld && i < SOLVE_UNHELD; i++)
+			json_string(&j, w->blocks[r->unheld[i]].id);
+		json_array_end(&j);
+	}
+	json_key(&j, "unheld_count");
+	json_int(&j, r->nunheld);
 	json_key(&j, "mechanism");
 	if (!r->has_mechanism) {
 		json_null(&j);

@@ -31,6 +31,7 @@ static size_t nvel(const struct wall *w)
 void record_init(struct record *r, const struct wall *w)
 {
 	memset(r, 0, sizeof *r);
+	r->unheld = -1;
 	draw_init(&r->draw, w);
 	r->joint = sw_xcalloc((size_t)w->nifaces + 1, 1);
 	r->vel = sw_xcalloc(nvel(w) + 1, sizeof(double));
@@ -60,6 +61,7 @@ void record_set(struct record *r, long index, const struct sample_result *res,
 	r->status = res->status;
 	r->iterations = res->iterations;
 	r->lps = res->lps;
+	r->unheld = res->status == SAMPLE_NO_EQUILIBRIUM ? res->unheld : -1;
 	r->lambda_lpmax = res->lambda_lpmax;
 	r->lambda_max = res->lambda_max;
 	r->lambda_min = res->lambda_min;

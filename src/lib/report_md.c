@@ -200,6 +200,23 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 				fprintf(f, "| rejected: %s | %ld |\n",
 					sample_status_text(k), r->rejected[k]);
 	}
+	/* the blocks the no_equilibrium samples could not hold
+	 * (docs/method.md, "Which blocks cannot be held") */
+	int ub[3];
+	long uc[3];
+	int nu = in->mech && in->mech->nblocks == c->w->nblocks ?
+		 tally_unheld(in->mech, ub, uc, 3) : 0;
+	if (nu > 0) {
+		fprintf(f, "| cannot be held (no equilibrium) | ");
+		for (int i = 0; i < nu && i < 3; i++)
+			fprintf(f, "%sblock %s in %ld sample%s", i ? ", " : "",
+				c->w->blocks[ub[i]].id, uc[i],
+				uc[i] > 1 ? "s" : "");
+		if (nu > 3)
+			fprintf(f, ", and %d other block%s", nu - 3,
+				nu > 4 ? "s" : "");
+		fprintf(f, " |\n");
+	}
 	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
 	if (in->mech)
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);

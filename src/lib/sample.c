@@ -34,6 +34,8 @@
  *   sample_slp.c     step 2b: the SLP (plain, Anderson, piece path)
  *   sample_onset.c   steps 2a, 3 and 5: LP-max, standing, the mechanism,
  *                    onset, LP-min, virtual work, the export
+ *   sample_unheld.c  after `no_equilibrium`: which blocks cannot be held
+ *                    (an elastic LP-max; on no sample's path)
  */
 #include <math.h>
 #include <stdlib.h>
@@ -96,6 +98,7 @@ void sample_opts_default(struct sample_opts *o)
 void sample_result_init(struct sample_result *r, const struct wall *w)
 {
 	memset(r, 0, sizeof *r);
+	r->unheld = -1;
 	r->nblocks = w->nblocks;
 	r->nifaces = w->nifaces;
 	size_t m = (size_t)w->nifaces;
@@ -553,6 +556,18 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->lambda_max *= S;
 	r->lambda_min *= S;
 	r->status = st;
+	/* which blocks cannot be held: one more LP, on rejected samples
+	 * only (docs/method.md, "Which blocks cannot be held") */
+	r->unheld = -1;
+	r->nunheld = 0;
+	if (st == SAMPLE_NO_EQUILIBRIUM) {
+		int b, n = sample_unheld(ws, &b, NULL, 1);
+		if (n > 0) {
+			r->unheld = b;
+			r->nunheld = n;
+		}
+		r->lps++;
+	}
 }
 
 void sample_run(struct sample_ws *ws, const struct sample_draw *d,

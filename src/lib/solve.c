@@ -84,6 +84,30 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 	}
 }
 
+/* After `no_equilibrium`: the blocks that cannot be held into r, and
+ * their names after err's message (docs/method.md, "Which blocks cannot
+ * be held"). */
+static void name_unheld(const struct wall *w, struct sample_ws *ws,
+			struct solve_result *r, char *err)
+{
+	int n = sample_unheld(ws, r->unheld, NULL, SOLVE_UNHELD);
+	if (n <= 0)
+		return;
+	r->nunheld = n;
+	size_t len = strlen(err);
+	const int shown = 3;
+	len += (size_t)snprintf(err + len, SW_ERRLEN - len,
+				"; the least outside help that lets every "
+				"block stand acts on block%s ", n > 1 ? "s" : "");
+	for (int i = 0; i < n && i < shown && len < SW_ERRLEN; i++)
+		len += (size_t)snprintf(err + len, SW_ERRLEN - len, "%s%s",
+					i == 0 ? "" : i + 1 == n ? " and " : ", ",
+					w->blocks[r->unheld[i]].id);
+	if (n > shown && len < SW_ERRLEN)
+		snprintf(err + len, SW_ERRLEN - len, " and %d other%s",
+			 n - shown, n - shown > 1 ? "s" : "");
+}
+
 /* sample_lp_config.progress: the caller's, in seconds and user's units */
 struct progress {
 	const struct solve_opts *o;
@@ -138,6 +162,8 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
 		ret = failure(s, r->mech.lambda_lpmax, err);
+		if (s == SAMPLE_NO_EQUILIBRIUM)
+			name_unheld(w, ws, r, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;

@@ -35,6 +35,7 @@ void tally_free(struct tally *t)
 	}
 	free(t->mech);
 	free(t->hash);
+	free(t->unheld);
 	stats_sorted_free(&t->lam);
 	memset(t, 0, sizeof *t);
 }
@@ -128,6 +129,13 @@ void tally_add(struct tally *t, const struct record *it)
 			t->rejected[it->status]++;
 		else
 			t->rejected[SAMPLE_NUMERICAL]++;
+		if (it->status == SAMPLE_NO_EQUILIBRIUM && it->unheld >= 0 &&
+		    it->unheld < t->nblocks) {
+			if (!t->unheld)
+				t->unheld = sw_xcalloc((size_t)t->nblocks,
+						       sizeof *t->unheld);
+			t->unheld[it->unheld]++;
+		}
 		return;
 	}
 	double lam = t->q.scale * it->lambda_min;
@@ -152,6 +160,24 @@ static int by_count(const void *a, const void *b)
 	/* equal counts: first appearance first (a stable order that does
 	 * not depend on the thread count) */
 	return (ra->k > rb->k) - (ra->k < rb->k);
+}
+
+int tally_unheld(const struct tally *t, int *blocks, long *counts, int max)
+{
+	if (!t->unheld)
+		return 0;
+	struct tally_rank *r = sw_xmalloc(sizeof *r * (size_t)t->nblocks);
+	int n = 0;
+	for (int b = 0; b < t->nblocks; b++)
+		if (t->unheld[b]) {
+			r[n].count = t->unheld[b];
+			r[n++].k = b;
+		}
+	int m = tally_ranked(r, n, blocks, max);
+	for (int i = 0; i < m; i++)
+		counts[i] = t->unheld[blocks[i]];
+	free(r);
+	return n;
 }
 
 int tally_ranked(struct tally_rank *r, int n, int *idx, int max)

@@ -229,6 +229,22 @@ static void tui_stats_counts(struct tui *t, struct tui_lines *p)
 	}
 	tui_stats_text(p, line);
 
+	/* the blocks that no_equilibrium's samples could not hold
+	 * (docs/workbench.md), when the tally is of this wall's blocks */
+	int b[3];
+	long c[3];
+	int n = ta->nblocks == t->w->nblocks ? tally_unheld(ta, b, c, 3) : 0;
+	if (n > 0) {
+		len = snprintf(line, sizeof line, "cannot be held:");
+		for (int i = 0; i < n && i < 3 && len < (int)sizeof line; i++)
+			len += snprintf(line + len, sizeof line - (size_t)len,
+					"%s %s (%ld)", i ? "," : "",
+					t->w->blocks[b[i]].id, c[i]);
+		if (n > 3 && len < (int)sizeof line)
+			snprintf(line + len, sizeof line - (size_t)len,
+				 ", %d more", n - 3);
+		tui_stats_text(p, line);
+	}
 }
 
 /* The loads: order statistics, the characteristic value and its

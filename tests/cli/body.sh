@@ -381,6 +381,52 @@ check "an opening without a lintel, the thrust lost at its abutment: sample 4 of
 	replay_starts tests/data/opening-abutment.yaml \
 		tests/data/opening-abutment-seed1-s4.csv abut 1
 
+# Which blocks cannot be held (docs/method.md): sample 1 of seed 1 of
+# tests/data/lintel-jamb.yaml is `no_equilibrium` because jamb block
+# c13b3 overhangs its bearing under the lintel.  `run` names it, in text
+# and JSON, and the name is checked against the wall itself: given whole
+# contact (xi 0 and 1) at c13b3's bed joint (found in `check --json` by
+# its bodies) the draw has an equilibrium, and at a joint of another
+# block (the first interface) it still has none.
+"$bin" run tests/data/lintel-jamb.yaml --replay tests/data/lintel-jamb-seed1-s1.csv \
+	--threads 2 >"$tmp/lj.txt" 2>/dev/null
+"$bin" run tests/data/lintel-jamb.yaml --replay tests/data/lintel-jamb-seed1-s1.csv \
+	--threads 2 --json >"$tmp/lj.json" 2>/dev/null
+"$bin" check tests/data/lintel-jamb.yaml --json >"$tmp/lj-check.json" 2>/dev/null
+python3 - "$tmp" <<'PY'
+import csv, json, sys
+tmp = sys.argv[1]
+ifaces = json.load(open(tmp + "/lj-check.json"))["interfaces"]
+bed = [k for k, f in enumerate(ifaces)
+       if f["kind"] == "bed" and f["b"] == "c13b3"]
+rows = list(csv.reader(open("tests/data/lintel-jamb-seed1-s1.csv")))
+head = rows[0]
+for name, k in (("bed", bed[0] if bed else 0), ("other", 0)):
+    r = list(rows[1])
+    r[head.index("xa_%d" % (k + 1))] = "0"
+    r[head.index("xb_%d" % (k + 1))] = "1"
+    csv.writer(open("%s/lj-%s.csv" % (tmp, name), "w"),
+               lineterminator="\n").writerows([head, r])
+sys.exit(len(bed) != 1)
+PY
+made=$?
+for v in bed other; do
+	"$bin" run tests/data/lintel-jamb.yaml --replay "$tmp/lj-$v.csv" --threads 1 \
+		--samples "$tmp/lj-$v-out.csv" >/dev/null 2>&1
+done
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["no_equilibrium"], " ".join(u["block"] + ":" + str(u["count"]) for u in d["unheld"]))' "$tmp/lj.json")
+bed=$(sed -n 2p "$tmp/lj-bed-out.csv" | cut -d, -f2)
+other=$(sed -n 2p "$tmp/lj-other-out.csv" | cut -d, -f2)
+echo "# json: $j; c13b3's bed joint whole: $bed; the first joint whole: $other"
+check "a jamb that overhangs under a lintel: no_equilibrium names block c13b3, in text and JSON; its bed joint given whole contact restores equilibrium, another block's does not" \
+	[ "$made" = 0 ] && grep -qx '    cannot be held: block c13b3 (1)' "$tmp/lj.txt" \
+	&& [ "$j" = "1 c13b3:1" ] && [ "$bed" = accepted ] && [ "$other" = no_equilibrium ]
+# and `report`'s table has a row for it (its first two samples, seed 1)
+"$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
+	--out "$tmp/lj-report" >/dev/null 2>&1
+check "report: a row 'cannot be held (no equilibrium) | block c13b3 in 1 sample'" \
+	grep -qx '| cannot be held (no equilibrium) | block c13b3 in 1 sample |' "$tmp/lj-report/report.md"
+
 # The piece jump on a wall of hundreds of interfaces (docs/method.md,
 # "The SLP's answer", rule 2): below a residual of 2e-4 the joints'
 # classification leaves out each interface's side of its capacity, which

@@ -15,8 +15,8 @@
 # line; with stderr not a terminal it prints nothing there.  `--json` on
 # a wall with no finite load (unbounded, nonpositive; gilbert on a wall
 # whose blocks hang: hanging) still prints its JSON, with the status and
-# the message as "error", and exits 1.  TAP
-# output.
+# the message as "error", and exits 1; on a wall that cannot stand it
+# names the block that cannot be held.  TAP output.
 
 bin=${1:?usage: cli/solve.sh SLIPWALL}
 cd "$(dirname "$0")/../.." || exit 1
@@ -145,5 +145,21 @@ sed 's/friction: 1.5/friction: 0.3/' "$tmp/body.yaml" >"$tmp/slide.yaml"
 check "standard on a sliding block: its joint 'slides and lifts' (associative flow), at the seismic coefficient mu" \
 	eval 'grep -q "^1  *blk  *ground  *slides and lifts (opens by mu |slip|: associative flow)" "$tmp/slide.txt" &&
 	grep -q "(seismic coefficient 0.3)" "$tmp/slide.txt"'
+
+# a block whose centroid is beyond the pier it rests on
+# (tests/data/beyond-pier.yaml): `solve` says
+# which block cannot be held, in its message and in its JSON
+# (docs/method.md, "Which blocks cannot be held"); the pier is not named
+"$bin" solve tests/data/beyond-pier.yaml --method standard >/dev/null 2>"$tmp/beyond.err"
+rc=$?
+"$bin" solve tests/data/beyond-pier.yaml --method standard --json >"$tmp/beyond.json" 2>/dev/null
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["status"], d["unheld_blocks"], d["unheld_count"], "acts on block over" in d["error"])' "$tmp/beyond.json")
+echo "# exit $rc; json: $j"
+check "a block beyond its pier: exit 1, 'the least outside help ... acts on block over' on stderr and in the JSON (unheld_blocks [over], count 1)" \
+	eval '[ $rc = 1 ] && grep -q "cannot stand under its own weight: .*; the least outside help that lets every block stand acts on block over$" "$tmp/beyond.err" &&
+	[ "$j" = "no_equilibrium ['"'"'over'"'"'] 1 True" ]'
+"$bin" solve walls/single-block.yaml --method standard --json >"$tmp/sb.json" 2>/dev/null
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["status"], d["unheld_blocks"], d["unheld_count"])' "$tmp/sb.json")
+check "a wall that stands: unheld_blocks null, unheld_count 0 ($j)" [ "$j" = "accepted None 0" ]
 
 tap_end

@@ -8,8 +8,10 @@
 # seismic coefficient b/h = 0.5; T on a finished run leaves its speed
 # line's threads; c on a wall without a layout says so at once; n below
 # the samples done says "30 done (5 asked)"; a run that ended with no
-# sample accepted says so instead of waiting; samples finished behind a
-# slow one (walls/facade.yaml) are counted as "M more done".
+# sample accepted says so instead of waiting; a run whose samples are
+# all no_equilibrium names the block that cannot be held; samples
+# finished behind a slow one (walls/facade.yaml) are counted as "M more
+# done".
 #
 # Usage (from the source root): bash tests/tui/tui_units.sh SLIPWALL
 # TAP output; skips when tmux is missing.
@@ -101,6 +103,20 @@ else
 	not_ok "a body load's label at 80 x 24: a row of its own" "$(screen y)"
 fi
 T send-keys -t t:y q
+
+# a wall whose every sample is no_equilibrium (tests/data/
+# beyond-pier.yaml, a block whose centroid is beyond its pier): the
+# statistics pane names the block that cannot be held (docs/
+# workbench.md; docs/method.md, "Which blocks cannot be held"), and not
+# the pier it rests on
+start c LANG=C LC_ALL=C -- tests/data/beyond-pier.yaml
+if wait_run c 1 done 60 && wait_for c 'cannot be held: over \(10\)' 5 &&
+   screen_has c 'no_equilibrium 10' && ! screen_has c 'held: pier'; then
+	ok "every sample no_equilibrium: the pane says 'cannot be held: over (10)'"
+else
+	not_ok "every sample no_equilibrium: the pane names the block that cannot be held" "$(screen c)"
+fi
+T send-keys -t t:c q
 
 # samples finished behind a slow one are shown in order, later: the
 # samples line says how many more are done (walls/facade.yaml, seed 1:

@@ -9,6 +9,7 @@
 #include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "lp.h"
 #include "slipwall/mc.h"
@@ -268,6 +269,116 @@ static void failures(void)
 	wall_free(w);
 }
 
+/* The index of block id in w, or -1. */
+static int block_of(const struct wall *w, const char *id)
+{
+	for (int b = 0; b < w->nblocks; b++)
+		if (!strcmp(w->blocks[b].id, id))
+			return b;
+	return -1;
+}
+
+/* Two piers on the ground, 0.2 m wide at x = 0 and x = 1.0, 0.6 m
+ * high, and on each an end block of 0.4 x 0.2 m reaching over_l (over_r)
+ * past its pier's outer edge: its centroid is over its bearing when
+ * over < 0.2, beyond it (held by nothing: the pier's top is its only
+ * joint) when over > 0.2.  The blocks named in `fixed` are supports. */
+static struct wall *piers(double over_l, double over_r, const char *fixed)
+{
+	struct wall *w = wall_new();
+	struct wall_mark mk = {0, 0};
+	tw_rect(w, "pier_l", 0, 0, 0.2, 0.6);
+	tw_rect(w, "pier_r", 1.0, 0, 0.2, 0.6);
+	double l[8] = {-over_l, 0.6, 0.4 - over_l, 0.6, 0.4 - over_l, 0.8,
+		       -over_l, 0.8};
+	double r[8] = {0.8 + over_r, 0.6, 1.2 + over_r, 0.6, 1.2 + over_r, 0.8,
+		       0.8 + over_r, 0.8};
+	wall_add_block(w, "end_l", l, 4, fixed && strstr(fixed, "end_l"), mk);
+	wall_add_block(w, "end_r", r, 4, fixed && strstr(fixed, "end_r"), mk);
+	w->has_ground = 1;
+	tw_point_load(w, 0, 0.3, 1, 0);
+	tw_finish(w);
+	return w;
+}
+
+/* `no_equilibrium` names the blocks that cannot be held (sample_unheld,
+ * docs/method.md "Which blocks cannot be held"): an elastic LP-max
+ * whose help acts on exactly the blocks that overhang their bearing, a
+ * wall that stands gets none, and holding the named block (making it a
+ * support) gives the wall back an equilibrium. */
+static void unheld(void)
+{
+	char err[SW_ERRLEN];
+	struct solve_opts o;
+	struct solve_result r;
+	solve_opts_default(&o, SOLVE_STANDARD);
+	/* end_r overhangs: it spans 1.05-1.45 m, its centroid at 1.25 m
+	 * beyond its bearing 1.05-1.2 m; end_l's centroid is over its pier */
+	struct wall *w = piers(0, 0.25, NULL);
+	enum sw_status st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && r.status == SAMPLE_NO_EQUILIBRIUM &&
+	       r.nunheld == 1 && r.unheld[0] == block_of(w, "end_r") &&
+	       strstr(err, "acts on block end_r") &&
+	       !strstr(err, "end_l"),
+	       "one end block overhangs its pier: it alone is named: %s", err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* both overhang: both named, the one further out first (end_l's
+	 * centroid is 0.1 m past its pier, end_r's 0.05 m: it needs twice
+	 * the moment) */
+	w = piers(0.3, 0.25, NULL);
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && r.nunheld == 2 &&
+	       r.unheld[0] == block_of(w, "end_l") &&
+	       r.unheld[1] == block_of(w, "end_r") &&
+	       strstr(err, "acts on blocks end_l and end_r"),
+	       "both end blocks overhang: both named, the further first: %s",
+	       err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* hold end_r (a support) and only end_l is left to name */
+	w = piers(0.3, 0.25, "end_r");
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_EANALYSIS && r.nunheld == 1 &&
+	       r.unheld[0] == block_of(w, "end_l"),
+	       "the right end held: only the left one named: %s", err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* hold both: the wall has an equilibrium (its load, which pushes
+	 * the left pier under a support, is unbounded) */
+	w = piers(0.3, 0.25, "end_l end_r");
+	st = solve_run(w, &o, &r, err);
+	tap_ok(r.status == SAMPLE_UNBOUNDED && r.nunheld == 0,
+	       "both ends held: an equilibrium, nothing named (%s)",
+	       st == SW_OK ? "ok" : err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* let neither overhang: the wall stands */
+	w = piers(0.1, 0.1, NULL);
+	st = solve_run(w, &o, &r, err);
+	tap_ok(st == SW_OK && r.status == SAMPLE_ACCEPTED && r.nunheld == 0,
+	       "centroids over their piers: the wall stands, nothing named "
+	       "(%s)", st == SW_OK ? "ok" : err);
+	solve_result_free(&r);
+	wall_free(w);
+	/* on a wall that stands, the elastic LP needs no help */
+	w = piers(0.1, 0.1, NULL);
+	struct sample_ws *ws = sample_ws_new(w);
+	struct sample_draw d;
+	struct sample_result sr;
+	draw_init(&d, w);
+	draw_mean(&d, w);
+	sample_result_init(&sr, w);
+	enum sample_status ss = sample_standard(ws, &d, &sr);
+	int b[4];
+	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, b, NULL, 4) == 0,
+	       "sample_unheld on a wall that stands: 0 blocks");
+	sample_result_free(&sr);
+	draw_free(&d);
+	sample_ws_free(ws);
+	wall_free(w);
+}
+
 /* Units must not matter: Ferris & Tin-Loi wall 1 built at 1e-3 and 1e3
  * times its size has the same load factors (body load); a block pushed
  * at a point collapses at a load that scales exactly as its weight. */
@@ -371,6 +482,7 @@ int main(void)
 	published();
 	global_walls();
 	failures();
+	unheld();
 	lp_thread_done();
 	return tap_done();
 }

@@ -1,8 +1,9 @@
 /*
  * test_tally.c - the run tally: counts by status, the sorted accepted
  * loads, mechanisms found again by their joint string (through the hash
- * table, past several rehashes), the order of tally_top, and the summary
- * on data whose percentiles are known by hand.
+ * table, past several rehashes), the order of tally_top, the blocks
+ * that no_equilibrium samples could not hold, and the summary on data
+ * whose percentiles are known by hand.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -182,6 +183,47 @@ static void test_many(void)
 	tally_free(&t);
 }
 
+/* The no_equilibrium samples by the block each could not hold
+ * (tally_unheld): most samples first, equal counts in the wall's order;
+ * a sample of another status, or without a block (-1), names none. */
+static void test_unheld(void)
+{
+	struct tally t;
+	struct record it;
+	tally_init(&t, &fake);
+	record_init(&it, &fake);
+	int b[B];
+	long c[B];
+	tap_ok(it.unheld == -1 && tally_unheld(&t, b, c, B) == 0,
+	       "a new record names no block; a new tally none");
+	const int blocks[] = {2, 0, 2, 1, -1, 0, 2};
+	for (int i = 0; i < 7; i++) {
+		item(&it, i, SAMPLE_NO_EQUILIBRIUM, NAN, NULL, 0);
+		it.unheld = blocks[i];
+		tally_add(&t, &it);
+	}
+	item(&it, 7, SAMPLE_NO_MECHANISM, NAN, NULL, 0);
+	it.unheld = 1;	/* not a no_equilibrium sample: not counted */
+	tally_add(&t, &it);
+	int n = tally_unheld(&t, b, c, B);
+	tap_ok(n == 3 && b[0] == 2 && c[0] == 3 && b[1] == 0 && c[1] == 2 &&
+	       b[2] == 1 && c[2] == 1 && t.rejected[SAMPLE_NO_EQUILIBRIUM] == 7,
+	       "unheld: block 2 in 3 samples, block 0 in 2, block 1 in 1 (the "
+	       "other status's block not counted): %d (%d %ld, %d %ld)", n,
+	       b[0], c[0], b[1], c[1]);
+	n = tally_unheld(&t, b, c, 1);
+	tap_ok(n == 3 && b[0] == 2, "unheld with room for one: the most "
+	       "named, and the count of all");
+	item(&it, 8, SAMPLE_NO_EQUILIBRIUM, NAN, NULL, 0);
+	it.unheld = 1;
+	tally_add(&t, &it);
+	n = tally_unheld(&t, b, c, B);
+	tap_ok(n == 3 && b[1] == 0 && b[2] == 1 && c[1] == 2 && c[2] == 2,
+	       "equal counts in the wall's order: block 0 before block 1");
+	record_free(&it);
+	tally_free(&t);
+}
+
 int main(void)
 {
 	fake.nifaces = M;
@@ -189,5 +231,6 @@ int main(void)
 	test_counts();
 	test_top_ties();
 	test_many();
+	test_unheld();
 	return tap_done();
 }

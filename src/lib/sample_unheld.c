@@ -1,0 +1,143 @@
+/*
+ * sample_unheld.c - which blocks no contact force can hold, when LP-max
+ * says that none holds them all (docs/method.md, "Which blocks cannot
+ * be held").
+ *
+ * LP-max is infeasible (`no_equilibrium`) when no stress field inside
+ * the friction cones of the contact points balances the dead load at
+ * any load factor.  That verdict names no block, and a user who must
+ * mend the wall (or understand a rejected sample) needs one.  The
+ * elastic problem below gives it: LP-max's equilibrium rows, each with
+ * a help force s+ - s- that an outside hand could add,
+ *
+ *     min  sum_i (s+_i + s-_i)
+ *     s.t. A_edges alpha + lambda f_L + s+ - s- = -f_D,
+ *          alpha >= 0, lambda free, s+, s- >= 0,
+ *
+ * always feasible (alpha = 0, lambda = 0, s = -f_D).  Its optimum is
+ * the least help, in the operator's scaled units (forces over the mean
+ * block weight, moments over that weight times the mean block size:
+ * statics.h), that lets every block stand; the blocks whose rows take
+ * help are the ones named.  An L1 objective makes the help sparse: a
+ * block that overhangs takes it alone, and its neighbours stand.
+ * Where several blocks could each take the least help (a lintel that
+ * bears on an overhanging jamb may be held at either), the simplex's
+ * vertex names one of them: the answer is a least set, not the only
+ * one, and docs/method.md says so.
+ *
+ * The problem is built on the workspace's solver, solved by the primal
+ * simplex from the basis of the help alone (s = -f_D: primal feasible)
+ * and freed: it runs once, on a rejected sample or a `solve` that
+ * failed, never on a sample's path, so no status or load moves with it.
+ * Its cost is about an LP-max from a poor start: 0.5 s on walls/
+ * body-300.yaml, 10 s on walls/body-1000.yaml (a sample there: 50 s).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sample_ws.h"
+
+/* Help below this, in the scaled units (a fraction of the mean block
+ * weight, or of its moment over the mean block size), is the
+ * simplex's round-off, not a block that cannot be held: 100 times the
+ * primal simplex's feasibility tolerance (lp_feasibility_tol, 1e-8). */
+#define UNHELD_TOL 1e-6
+
+struct unheld_entry {
+	int block;
+	double help;
+};
+
+static int by_help(const void *a, const void *b)
+{
+	const struct unheld_entry *x = a, *y = b;
+	if (x->help != y->help)
+		return x->help < y->help ? 1 : -1;
+	return (x->block > y->block) - (x->block < y->block);
+}
+
+int sample_unheld(struct sample_ws *ws, int *blocks, double *help,
+		  int max)
+{
+	const struct wall *w = ws->w;
+	int m = ws->m, R = ws->R;
+	int nc = 4 * m + 1 + 2 * R;
+	struct lp *P = lp_new(ws->solver, R, nc);
+	if (!P)
+		return -1;
+	for (int i = 0; i < R; i++)
+		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	/* the cone edges of every contact point, as LP-max has them */
+	for (int k = 0; k < m; k++)
+		for (int e = 0; e < 2; e++)
+			for (int sgn = 0; sgn < 2; sgn++) {
+				int rows[6];
+				double vals[6];
+				int n = statics_edge_column(&ws->st, k, e, sgn,
+							    rows, vals);
+				int col = sgn ? ACOL_BETA(k, e) : ACOL_ALPHA(k, e);
+				lp_set_col(P, col, n, rows, vals);
+				lp_set_col_bounds(P, col, 0, HUGE_VAL);
+			}
+	int nl = 0;
+	for (int i = 0; i < R; i++)
+		if (ws->st.fL[i] != 0) {
+			ws->ind[nl] = i;
+			ws->val[nl++] = ws->st.fL[i];
+		}
+	lp_set_col(P, ACOL_LAMBDA(ws), nl, ws->ind, ws->val);
+	lp_set_col_bounds(P, ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	/* the help forces: columns 4m + 1 + 2i (s+) and + 1 (s-) */
+	for (int i = 0; i < R; i++)
+		for (int s = 0; s < 2; s++) {
+			int col = 4 * m + 1 + 2 * i + s;
+			double v = s ? -1 : 1;
+			lp_set_col(P, col, 1, &i, &v);
+			lp_set_col_bounds(P, col, 0, HUGE_VAL);
+			lp_set_obj(P, col, 1);
+		}
+	lp_set_maximize(P, 0);
+	/* start from the basis of the help alone, s = -f_D (s+ or s- basic
+	 * in each row by the sign of its dead load): primal feasible, so
+	 * the primal simplex goes straight to its second phase */
+	unsigned char *basic = sw_xcalloc((size_t)nc, 1);
+	for (int i = 0; i < R; i++)
+		basic[4 * m + 1 + 2 * i + (ws->st.fD[i] > 0)] = 1;
+	lp_set_basis(P, basic);
+	free(basic);
+	enum lp_status st = lp_solve(P, LP_PRIMAL);
+	if (st != LP_OPTIMAL) {
+		lp_free(P);
+		return -1;
+	}
+
+	struct unheld_entry *u = malloc(sizeof *u * (size_t)(w->nfree + 1));
+	if (!u) {
+		lp_free(P);
+		return -1;
+	}
+	int n = 0;
+	for (int b = 0; b < w->nblocks; b++) {
+		int q = w->blocks[b].eq;
+		if (q < 0)
+			continue;
+		double h = 0;
+		for (int r = 3 * q; r < 3 * q + 3; r++)
+			h += lp_col(P, 4 * m + 1 + 2 * r) +
+			     lp_col(P, 4 * m + 2 + 2 * r);
+		if (h > UNHELD_TOL) {
+			u[n].block = b;
+			u[n++].help = h;
+		}
+	}
+	lp_free(P);
+	qsort(u, (size_t)n, sizeof *u, by_help);
+	for (int i = 0; i < n && i < max; i++) {
+		blocks[i] = u[i].block;
+		if (help)
+			help[i] = u[i].help;
+	}
+	free(u);
+	return n;
+}
