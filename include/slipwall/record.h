@@ -26,9 +26,9 @@ struct record {
 	long index;		/* the sample's index in the run */
 	enum sample_status status;
 	int iterations, lps;	/* SLP iterations, LPs solved */
-	/* `no_equilibrium`: the block that most needs outside help
-	 * (sample_result.unheld), else -1; also no padding before the
-	 * doubles */
+	/* `no_equilibrium` or `unstable`: the block that most needs outside
+	 * help (sample_result.unheld), else -1; also no padding before
+	 * the doubles */
 	int unheld;
 	double lambda_lpmax, lambda_max, lambda_min;
 	double vw_residual;

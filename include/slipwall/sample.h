@@ -156,9 +156,9 @@ struct sample_result {
 	int converged;
 	int lps;		/* LPs solved for this sample */
 	double vw_residual;	/* relative virtual-work residual */
-	/* `no_equilibrium` (sample_run, sample_pattern): the block that
-	 * most needs the least outside help (sample_unheld), or -1, and how
-	 * many blocks need some (0: not found) */
+	/* `no_equilibrium` or `unstable` (sample_run, sample_pattern): the
+	 * block that most needs the least outside help (sample_unheld), or
+	 * -1, and how many blocks need some (0: not found) */
 	int unheld, nunheld;
 	/* mechanism (accepted samples) */
 	int nblocks, nifaces;
@@ -252,16 +252,18 @@ enum sample_status sample_standard(struct sample_ws *ws,
 				   struct sample_result *r);
 
 /* Which blocks no contact force can hold at the draw the workspace
- * last solved, after it was `no_equilibrium` (docs/method.md, "Which
- * blocks cannot be held"): the blocks on which the least outside help
- * that lets every block stand acts, by an elastic LP-max.  Writes up to
+ * last solved, after it was `no_equilibrium` (at any load factor), or,
+ * with at_rest, `unstable` (at the load factor 0: the blocks that need
+ * the live load to stand) (docs/method.md, "Which blocks cannot be
+ * held"): the blocks on which the least outside help that lets every
+ * block stand acts, by an elastic LP-max.  Writes up to
  * max of them (indices into w->blocks), the most helped first, into
  * blocks[], and the help each needs (in mean block weights, a moment
  * over the mean block size) into help[] if it is not NULL; returns how
  * many there are in all (0: the draw has an equilibrium), or -1 if the
  * LP failed or was stopped. */
-int sample_unheld(struct sample_ws *ws, int *blocks, double *help,
-		  int max);
+int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
+		  double *help, int max);
 
 /* What the LPs of a workspace cost, by role, since it was made (its
  * canonical sample included): the six LP roles of docs/method.md (LP-max,

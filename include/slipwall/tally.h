@@ -43,8 +43,9 @@ struct tally {
 	double lam_sum;
 	long iterations, lps;	/* sums over all samples */
 	double compute_seconds;	/* sum of per-sample compute times */
-	/* nblocks, or NULL before the first: the `no_equilibrium` samples
-	 * by the block that most needs outside help (record.unheld) */
+	/* 2 * nblocks, or NULL before the first: the `no_equilibrium`
+	 * samples, then the `unstable` ones, by the block that most needs
+	 * outside help (record.unheld) */
 	long *unheld;
 	struct tally_mech *mech;/* distinct mechanisms, by first appearance */
 	int nmech, capmech;
@@ -58,11 +59,17 @@ void tally_add(struct tally *t, const struct record *it);
 /* The index in t->mech of mechanism joint (nifaces chars), or -1 when
  * the tally has not seen it: one hash of the string. */
 int tally_find(const struct tally *t, const char *joint);
-/* The blocks that `no_equilibrium` samples could not hold (record.unheld),
- * most samples first (equal counts: in the wall's order): up to max
- * block indices into blocks[] and their counts into counts[]; returns
- * how many blocks were named at all. */
-int tally_unheld(const struct tally *t, int *blocks, long *counts, int max);
+/* The blocks that the samples of status st (SAMPLE_NO_EQUILIBRIUM or
+ * SAMPLE_UNSTABLE) could not hold (record.unheld), most samples first
+ * (equal counts: in the wall's order): up to max block indices into
+ * blocks[] and their counts into counts[]; returns how many blocks were
+ * named at all (0 for another status). */
+int tally_unheld(const struct tally *t, enum sample_status st, int *blocks,
+		 long *counts, int max);
+/* What the blocks of tally_unheld are, for people: "cannot be held"
+ * (no_equilibrium: at any load), "stands only under load" (unstable:
+ * they need the live load), NULL for another status. */
+const char *tally_unheld_text(enum sample_status st);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */
 int tally_top(const struct tally *t, int *idx, int max);

@@ -314,16 +314,17 @@ static void print_families(const struct wall *w, const struct tally *t)
 	family_set_free(&fs);
 }
 
-/* Under the `no_equilibrium` count: the blocks its samples could not
- * hold (tally_unheld), the three named most often. */
-static void print_unheld(const struct wall *w, const struct tally *t)
+/* Under the `no_equilibrium` and `unstable` counts: the blocks their
+ * samples could not hold (tally_unheld), the three named most often. */
+static void print_unheld(const struct wall *w, const struct tally *t,
+			 enum sample_status st)
 {
 	int b[3];
 	long c[3];
-	int n = tally_unheld(t, b, c, 3);
+	int n = tally_unheld(t, st, b, c, 3);
 	if (n <= 0)
 		return;
-	printf("    cannot be held: ");
+	printf("    %s: ", tally_unheld_text(st));
 	for (int i = 0; i < n && i < 3; i++)
 		printf("%sblock %s (%ld)", i ? ", " : "", w->blocks[b[i]].id,
 		       c[i]);
@@ -369,8 +370,7 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		if (k != SAMPLE_ACCEPTED && t->rejected[k])
 			printf("  %-40s %ld\n", sample_status_text(k),
 			       t->rejected[k]);
-		if (k == SAMPLE_NO_EQUILIBRIUM)
-			print_unheld(w, t);
+		print_unheld(w, t, (enum sample_status)k);
 	}
 	if (s.n > 0) {
 		printf("%-12s min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
@@ -545,15 +545,19 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
-	/* the blocks the `no_equilibrium` samples could not hold
-	 * (docs/run.md), most samples first */
+	/* the blocks the `no_equilibrium` and the `unstable` samples could
+	 * not hold (docs/run.md), most samples first */
 	json_key(&j, "unheld");
-	json_array_begin(&j);
-	int nb = tally_unheld(t, NULL, NULL, 0);
-	if (nb > 0) {
-		int *ub = sw_xmalloc(sizeof *ub * (size_t)nb);
-		long *uc = sw_xmalloc(sizeof *uc * (size_t)nb);
-		tally_unheld(t, ub, uc, nb);
+	json_object_begin(&j);
+	const enum sample_status ust[2] = {SAMPLE_NO_EQUILIBRIUM,
+					   SAMPLE_UNSTABLE};
+	for (int s = 0; s < 2; s++) {
+		json_key(&j, sample_status_name(ust[s]));
+		json_array_begin(&j);
+		int nb = tally_unheld(t, ust[s], NULL, NULL, 0);
+		int *ub = sw_xmalloc(sizeof *ub * (size_t)(nb + 1));
+		long *uc = sw_xmalloc(sizeof *uc * (size_t)(nb + 1));
+		tally_unheld(t, ust[s], ub, uc, nb);
 		for (int i = 0; i < nb; i++) {
 			json_object_begin(&j);
 			json_key_string(&j, "block", r->w->blocks[ub[i]].id);
@@ -563,8 +567,9 @@ static void print_json(const struct run_info *r, const struct tally *t)
 		}
 		free(ub);
 		free(uc);
+		json_array_end(&j);
 	}
-	json_array_end(&j);
+	json_object_end(&j);
 	json_key(&j, "p05_ci_level");	/* the level of p05_ci99's ends */
 	json_double(&j, t->ci_conf);
 	json_key(&j, "design_load");

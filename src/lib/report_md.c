@@ -160,6 +160,29 @@ static void md_single(FILE *f, const struct rctx *c)
 	}
 }
 
+/* A row of the run's table: the blocks that the samples of status st
+ * (no_equilibrium, unstable) could not hold, the three named most often
+ * (docs/method.md, "Which blocks cannot be held"); none when no sample
+ * named one. */
+static void md_unheld(FILE *f, const struct rctx *c, enum sample_status st)
+{
+	const struct report_input *in = c->in;
+	int b[3];
+	long n3[3];
+	int n = in->mech && in->mech->nblocks == c->w->nblocks ?
+		tally_unheld(in->mech, st, b, n3, 3) : 0;
+	if (n <= 0)
+		return;
+	fprintf(f, "| %s (%s) | ", tally_unheld_text(st),
+		sample_status_name(st));
+	for (int i = 0; i < n && i < 3; i++)
+		fprintf(f, "%sblock %s in %ld sample%s", i ? ", " : "",
+			c->w->blocks[b[i]].id, n3[i], n3[i] > 1 ? "s" : "");
+	if (n > 3)
+		fprintf(f, ", and %d other block%s", n - 3, n > 4 ? "s" : "");
+	fprintf(f, " |\n");
+}
+
 static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 {
 	const struct report_input *in = c->in;
@@ -200,23 +223,8 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 				fprintf(f, "| rejected: %s | %ld |\n",
 					sample_status_text(k), r->rejected[k]);
 	}
-	/* the blocks the no_equilibrium samples could not hold
-	 * (docs/method.md, "Which blocks cannot be held") */
-	int ub[3];
-	long uc[3];
-	int nu = in->mech && in->mech->nblocks == c->w->nblocks ?
-		 tally_unheld(in->mech, ub, uc, 3) : 0;
-	if (nu > 0) {
-		fprintf(f, "| cannot be held (no equilibrium) | ");
-		for (int i = 0; i < nu && i < 3; i++)
-			fprintf(f, "%sblock %s in %ld sample%s", i ? ", " : "",
-				c->w->blocks[ub[i]].id, uc[i],
-				uc[i] > 1 ? "s" : "");
-		if (nu > 3)
-			fprintf(f, ", and %d other block%s", nu - 3,
-				nu > 4 ? "s" : "");
-		fprintf(f, " |\n");
-	}
+	md_unheld(f, c, SAMPLE_NO_EQUILIBRIUM);
+	md_unheld(f, c, SAMPLE_UNSTABLE);
 	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
 	if (in->mech)
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);

@@ -34,8 +34,9 @@
  *   sample_slp.c     step 2b: the SLP (plain, Anderson, piece path)
  *   sample_onset.c   steps 2a, 3 and 5: LP-max, standing, the mechanism,
  *                    onset, LP-min, virtual work, the export
- *   sample_unheld.c  after `no_equilibrium`: which blocks cannot be held
- *                    (an elastic LP-max; on no sample's path)
+ *   sample_unheld.c  after `no_equilibrium` or `unstable`: which blocks
+ *                    cannot be held (an elastic LP-max; on no sample's
+ *                    path)
  */
 #include <math.h>
 #include <stdlib.h>
@@ -556,12 +557,13 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->lambda_max *= S;
 	r->lambda_min *= S;
 	r->status = st;
-	/* which blocks cannot be held: one more LP, on rejected samples
-	 * only (docs/method.md, "Which blocks cannot be held") */
+	/* which blocks cannot be held (at any load, or without the live
+	 * load): one more LP, on these rejected samples only (docs/
+	 * method.md, "Which blocks cannot be held") */
 	r->unheld = -1;
 	r->nunheld = 0;
-	if (st == SAMPLE_NO_EQUILIBRIUM) {
-		int b, n = sample_unheld(ws, &b, NULL, 1);
+	if (st == SAMPLE_NO_EQUILIBRIUM || st == SAMPLE_UNSTABLE) {
+		int b, n = sample_unheld(ws, st == SAMPLE_UNSTABLE, &b, NULL, 1);
 		if (n > 0) {
 			r->unheld = b;
 			r->nunheld = n;

@@ -118,6 +118,12 @@ int tally_find(const struct tally *t, const char *joint)
 	return t->hashcap == 0 ? -1 : probe(t, joint, &slot);
 }
 
+/* The row of t->unheld that a status counts in, or -1. */
+static int unheld_row(enum sample_status st)
+{
+	return st == SAMPLE_NO_EQUILIBRIUM ? 0 : st == SAMPLE_UNSTABLE ? 1 : -1;
+}
+
 void tally_add(struct tally *t, const struct record *it)
 {
 	t->samples++;
@@ -129,12 +135,12 @@ void tally_add(struct tally *t, const struct record *it)
 			t->rejected[it->status]++;
 		else
 			t->rejected[SAMPLE_NUMERICAL]++;
-		if (it->status == SAMPLE_NO_EQUILIBRIUM && it->unheld >= 0 &&
-		    it->unheld < t->nblocks) {
+		int u = unheld_row(it->status);
+		if (u >= 0 && it->unheld >= 0 && it->unheld < t->nblocks) {
 			if (!t->unheld)
-				t->unheld = sw_xcalloc((size_t)t->nblocks,
+				t->unheld = sw_xcalloc(2 * (size_t)t->nblocks,
 						       sizeof *t->unheld);
-			t->unheld[it->unheld]++;
+			t->unheld[u * t->nblocks + it->unheld]++;
 		}
 		return;
 	}
@@ -162,20 +168,29 @@ static int by_count(const void *a, const void *b)
 	return (ra->k > rb->k) - (ra->k < rb->k);
 }
 
-int tally_unheld(const struct tally *t, int *blocks, long *counts, int max)
+const char *tally_unheld_text(enum sample_status st)
 {
-	if (!t->unheld)
+	return st == SAMPLE_NO_EQUILIBRIUM ? "cannot be held" :
+	       st == SAMPLE_UNSTABLE ? "stands only under load" : NULL;
+}
+
+int tally_unheld(const struct tally *t, enum sample_status st, int *blocks,
+		 long *counts, int max)
+{
+	int u = unheld_row(st);
+	if (!t->unheld || u < 0)
 		return 0;
+	const long *row = t->unheld + (size_t)u * (size_t)t->nblocks;
 	struct tally_rank *r = sw_xmalloc(sizeof *r * (size_t)t->nblocks);
 	int n = 0;
 	for (int b = 0; b < t->nblocks; b++)
-		if (t->unheld[b]) {
-			r[n].count = t->unheld[b];
+		if (row[b]) {
+			r[n].count = row[b];
 			r[n++].k = b;
 		}
 	int m = tally_ranked(r, n, blocks, max);
 	for (int i = 0; i < m; i++)
-		counts[i] = t->unheld[blocks[i]];
+		counts[i] = row[blocks[i]];
 	free(r);
 	return n;
 }

@@ -197,6 +197,31 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	}
 }
 
+/* Under the rejections: the blocks that the samples of status st
+ * (no_equilibrium, unstable) could not hold, the three named most often
+ * (docs/workbench.md), when the tally is of this wall's blocks. */
+static void tui_stats_unheld(struct tui *t, struct tui_lines *p,
+			     enum sample_status st)
+{
+	const struct tally *ta = &t->run.tally;
+	int b[3];
+	long c[3];
+	int n = ta->nblocks == t->w->nblocks ? tally_unheld(ta, st, b, c, 3)
+					     : 0;
+	if (n <= 0)
+		return;
+	char line[512];
+	int len = snprintf(line, sizeof line, "%s:", tally_unheld_text(st));
+	for (int i = 0; i < n && i < 3 && len < (int)sizeof line; i++)
+		len += snprintf(line + len, sizeof line - (size_t)len,
+				"%s %s (%ld)", i ? "," : "", t->w->blocks[b[i]].id,
+				c[i]);
+	if (n > 3 && len < (int)sizeof line)
+		snprintf(line + len, sizeof line - (size_t)len, ", %d more",
+			 n - 3);
+	tui_stats_text(p, line);
+}
+
 /* Accepted, and the rejections by reason, wrapped. */
 static void tui_stats_counts(struct tui *t, struct tui_lines *p)
 {
@@ -228,23 +253,8 @@ static void tui_stats_counts(struct tui *t, struct tui_lines *p)
 			len += snprintf(line + len, sizeof line - (size_t)len, "%s", item);
 	}
 	tui_stats_text(p, line);
-
-	/* the blocks that no_equilibrium's samples could not hold
-	 * (docs/workbench.md), when the tally is of this wall's blocks */
-	int b[3];
-	long c[3];
-	int n = ta->nblocks == t->w->nblocks ? tally_unheld(ta, b, c, 3) : 0;
-	if (n > 0) {
-		len = snprintf(line, sizeof line, "cannot be held:");
-		for (int i = 0; i < n && i < 3 && len < (int)sizeof line; i++)
-			len += snprintf(line + len, sizeof line - (size_t)len,
-					"%s %s (%ld)", i ? "," : "",
-					t->w->blocks[b[i]].id, c[i]);
-		if (n > 3 && len < (int)sizeof line)
-			snprintf(line + len, sizeof line - (size_t)len,
-				 ", %d more", n - 3);
-		tui_stats_text(p, line);
-	}
+	tui_stats_unheld(t, p, SAMPLE_NO_EQUILIBRIUM);
+	tui_stats_unheld(t, p, SAMPLE_UNSTABLE);
 }
 
 /* The loads: order statistics, the characteristic value and its

@@ -414,18 +414,31 @@ for v in bed other; do
 	"$bin" run tests/data/lintel-jamb.yaml --replay "$tmp/lj-$v.csv" --threads 1 \
 		--samples "$tmp/lj-$v-out.csv" >/dev/null 2>&1
 done
-j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["no_equilibrium"], " ".join(u["block"] + ":" + str(u["count"]) for u in d["unheld"]))' "$tmp/lj.json")
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["no_equilibrium"], " ".join(u["block"] + ":" + str(u["count"]) for u in d["unheld"]["no_equilibrium"]), len(d["unheld"]["unstable"]))' "$tmp/lj.json")
 bed=$(sed -n 2p "$tmp/lj-bed-out.csv" | cut -d, -f2)
 other=$(sed -n 2p "$tmp/lj-other-out.csv" | cut -d, -f2)
 echo "# json: $j; c13b3's bed joint whole: $bed; the first joint whole: $other"
 check "a jamb that overhangs under a lintel: no_equilibrium names block c13b3, in text and JSON; its bed joint given whole contact restores equilibrium, another block's does not" \
 	[ "$made" = 0 ] && grep -qx '    cannot be held: block c13b3 (1)' "$tmp/lj.txt" \
-	&& [ "$j" = "1 c13b3:1" ] && [ "$bed" = accepted ] && [ "$other" = no_equilibrium ]
+	&& [ "$j" = "1 c13b3:1 0" ] && [ "$bed" = accepted ] && [ "$other" = no_equilibrium ]
+# A block beyond its pier held up by the live load itself (tests/data/
+# beyond-pier.yaml with an upward load on its far end): an equilibrium
+# at some load, none at rest, so every sample is `unstable`, and `run`
+# names the block that needs the load, never the pier.
+sed 's/^  - point: .*/  - point: {at: [0.7, 0.3], direction: [0, 1], magnitude: 1}/' \
+	tests/data/beyond-pier.yaml >"$tmp/held-up.yaml"
+"$bin" run "$tmp/held-up.yaml" -n 4 --threads 2 >"$tmp/held-up.txt" 2>/dev/null
+"$bin" run "$tmp/held-up.yaml" -n 4 --threads 2 --json >"$tmp/held-up.json" 2>/dev/null
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["unstable"], d["unheld"])' "$tmp/held-up.json")
+echo "# json: $j"
+check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
+	grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
+	&& [ "$j" = "4 {'no_equilibrium': [], 'unstable': [{'block': 'over', 'count': 4}]}" ]
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1
-check "report: a row 'cannot be held (no equilibrium) | block c13b3 in 1 sample'" \
-	grep -qx '| cannot be held (no equilibrium) | block c13b3 in 1 sample |' "$tmp/lj-report/report.md"
+check "report: a row 'cannot be held (no_equilibrium) | block c13b3 in 1 sample'" \
+	grep -qx '| cannot be held (no_equilibrium) | block c13b3 in 1 sample |' "$tmp/lj-report/report.md"
 
 # The piece jump on a wall of hundreds of interfaces (docs/method.md,
 # "The SLP's answer", rule 2): below a residual of 2e-4 the joints'

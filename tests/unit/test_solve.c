@@ -305,7 +305,8 @@ static struct wall *piers(double over_l, double over_r, const char *fixed)
  * docs/method.md "Which blocks cannot be held"): an elastic LP-max
  * whose help acts on exactly the blocks that overhang their bearing, a
  * wall that stands gets none, and holding the named block (making it a
- * support) gives the wall back an equilibrium. */
+ * support) gives the wall back an equilibrium; `unstable` names the
+ * block that needs the live load. */
 static void unheld(void)
 {
 	char err[SW_ERRLEN];
@@ -371,8 +372,41 @@ static void unheld(void)
 	sample_result_init(&sr, w);
 	enum sample_status ss = sample_standard(ws, &d, &sr);
 	int b[4];
-	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, b, NULL, 4) == 0,
-	       "sample_unheld on a wall that stands: 0 blocks");
+	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, 0, b, NULL, 4) == 0 &&
+	       sample_unheld(ws, 1, b, NULL, 4) == 0,
+	       "sample_unheld on a wall that stands: 0 blocks, at any load "
+	       "and at rest");
+	sample_result_free(&sr);
+	draw_free(&d);
+	sample_ws_free(ws);
+	wall_free(w);
+
+	/* a block beyond its pier held up by the live load itself (an
+	 * upward point load on its far end): LP-max has an equilibrium at
+	 * some load, the standing check none at rest, so the sample is
+	 * `unstable`, and sample_run names the block that needs the load;
+	 * at any load (at_rest 0) nothing needs help */
+	w = wall_new();
+	struct wall_mark mk = {0, 0};
+	tw_rect(w, "pier", 0, 0, 0.4, 0.2);
+	double ov[8] = {0.3, 0.2, 0.7, 0.2, 0.7, 0.4, 0.3, 0.4};
+	wall_add_block(w, "over", ov, 4, 0, mk);
+	w->has_ground = 1;
+	tw_point_load(w, 0.7, 0.3, 0, 1);
+	tw_finish(w);
+	ws = sample_ws_new(w);
+	draw_init(&d, w);
+	draw_mean(&d, w);
+	sample_result_init(&sr, w);
+	struct sample_opts so;
+	sample_opts_default(&so);
+	sample_run(ws, &d, &so, &sr);
+	int n0 = sample_unheld(ws, 0, b, NULL, 4);
+	tap_ok(sr.status == SAMPLE_UNSTABLE && sr.nunheld == 1 &&
+	       sr.unheld == block_of(w, "over") && n0 == 0,
+	       "held up by its own load: unstable (%s), 'over' needs the load "
+	       "(%d, %d blocks), nothing at some load (%d)",
+	       sample_status_name(sr.status), sr.unheld, sr.nunheld, n0);
 	sample_result_free(&sr);
 	draw_free(&d);
 	sample_ws_free(ws);

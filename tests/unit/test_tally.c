@@ -185,7 +185,8 @@ static void test_many(void)
 
 /* The no_equilibrium samples by the block each could not hold
  * (tally_unheld): most samples first, equal counts in the wall's order;
- * a sample of another status, or without a block (-1), names none. */
+ * the unstable ones apart; a sample of another status, or without a
+ * block (-1), names none. */
 static void test_unheld(void)
 {
 	struct tally t;
@@ -194,7 +195,8 @@ static void test_unheld(void)
 	record_init(&it, &fake);
 	int b[B];
 	long c[B];
-	tap_ok(it.unheld == -1 && tally_unheld(&t, b, c, B) == 0,
+	tap_ok(it.unheld == -1 &&
+	       tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b, c, B) == 0,
 	       "a new record names no block; a new tally none");
 	const int blocks[] = {2, 0, 2, 1, -1, 0, 2};
 	for (int i = 0; i < 7; i++) {
@@ -205,19 +207,27 @@ static void test_unheld(void)
 	item(&it, 7, SAMPLE_NO_MECHANISM, NAN, NULL, 0);
 	it.unheld = 1;	/* not a no_equilibrium sample: not counted */
 	tally_add(&t, &it);
-	int n = tally_unheld(&t, b, c, B);
+	item(&it, 8, SAMPLE_UNSTABLE, NAN, NULL, 0);
+	it.unheld = 1;	/* counted apart */
+	tally_add(&t, &it);
+	int n = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b, c, B);
 	tap_ok(n == 3 && b[0] == 2 && c[0] == 3 && b[1] == 0 && c[1] == 2 &&
 	       b[2] == 1 && c[2] == 1 && t.rejected[SAMPLE_NO_EQUILIBRIUM] == 7,
 	       "unheld: block 2 in 3 samples, block 0 in 2, block 1 in 1 (the "
-	       "other status's block not counted): %d (%d %ld, %d %ld)", n,
+	       "other statuses' blocks not counted): %d (%d %ld, %d %ld)", n,
 	       b[0], c[0], b[1], c[1]);
-	n = tally_unheld(&t, b, c, 1);
+	n = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b, c, 1);
 	tap_ok(n == 3 && b[0] == 2, "unheld with room for one: the most "
 	       "named, and the count of all");
-	item(&it, 8, SAMPLE_NO_EQUILIBRIUM, NAN, NULL, 0);
+	n = tally_unheld(&t, SAMPLE_UNSTABLE, b, c, B);
+	tap_ok(n == 1 && b[0] == 1 && c[0] == 1 &&
+	       tally_unheld(&t, SAMPLE_NO_MECHANISM, b, c, B) == 0,
+	       "the unstable sample's block counted apart; another status "
+	       "has none");
+	item(&it, 9, SAMPLE_NO_EQUILIBRIUM, NAN, NULL, 0);
 	it.unheld = 1;
 	tally_add(&t, &it);
-	n = tally_unheld(&t, b, c, B);
+	n = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b, c, B);
 	tap_ok(n == 3 && b[1] == 0 && b[2] == 1 && c[1] == 2 && c[2] == 2,
 	       "equal counts in the wall's order: block 0 before block 1");
 	record_free(&it);
