@@ -256,14 +256,11 @@ enum sample_status sample_standard(struct sample_ws *ws,
  * with at_rest, `unstable` (at the load factor 0: the blocks that need
  * the live load to stand) (docs/method.md, "Which blocks cannot be
  * held"): the blocks on which the least outside help that lets every
- * block stand acts, by an elastic LP-max.  Writes up to
- * max of them (indices into w->blocks), the most helped first, into
- * blocks[], and the help each needs (in mean block weights, a moment
- * over the mean block size) into help[] if it is not NULL; returns how
- * many there are in all (0: the draw has an equilibrium), or -1 if the
- * LP failed or was stopped. */
-int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
-		  double *help, int max);
+ * block stand acts, by an elastic LP-max.  Writes up to max of them
+ * (indices into w->blocks), the most helped first, into blocks[];
+ * returns how many there are in all (0: the draw has an equilibrium),
+ * or -1 if the LP failed or was stopped. */
+int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks, int max);
 
 /* What the LPs of a workspace cost, by role, since it was made (its
  * canonical sample included): the six LP roles of docs/method.md (LP-max,

@@ -551,13 +551,12 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_object_begin(&j);
 	const enum sample_status ust[2] = {SAMPLE_NO_EQUILIBRIUM,
 					   SAMPLE_UNSTABLE};
+	int *ub = sw_xmalloc(sizeof *ub * ((size_t)t->nblocks + 1));
+	long *uc = sw_xmalloc(sizeof *uc * ((size_t)t->nblocks + 1));
 	for (int s = 0; s < 2; s++) {
 		json_key(&j, sample_status_name(ust[s]));
 		json_array_begin(&j);
-		int nb = tally_unheld(t, ust[s], NULL, NULL, 0);
-		int *ub = sw_xmalloc(sizeof *ub * (size_t)(nb + 1));
-		long *uc = sw_xmalloc(sizeof *uc * (size_t)(nb + 1));
-		tally_unheld(t, ust[s], ub, uc, nb);
+		int nb = tally_unheld(t, ust[s], ub, uc, t->nblocks);
 		for (int i = 0; i < nb; i++) {
 			json_object_begin(&j);
 			json_key_string(&j, "block", r->w->blocks[ub[i]].id);
@@ -565,10 +564,10 @@ static void print_json(const struct run_info *r, const struct tally *t)
 			json_int(&j, uc[i]);
 			json_object_end(&j);
 		}
-		free(ub);
-		free(uc);
 		json_array_end(&j);
 	}
+	free(ub);
+	free(uc);
 	json_object_end(&j);
 	json_key(&j, "p05_ci_level");	/* the level of p05_ci99's ends */
 	json_double(&j, t->ci_conf);

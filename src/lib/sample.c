@@ -563,7 +563,7 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->unheld = -1;
 	r->nunheld = 0;
 	if (st == SAMPLE_NO_EQUILIBRIUM || st == SAMPLE_UNSTABLE) {
-		int b, n = sample_unheld(ws, st == SAMPLE_UNSTABLE, &b, NULL, 1);
+		int b, n = sample_unheld(ws, st == SAMPLE_UNSTABLE, &b, 1);
 		if (n > 0) {
 			r->unheld = b;
 			r->nunheld = n;

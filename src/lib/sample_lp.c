@@ -86,6 +86,19 @@ void sws_put_kin_objective(struct sample_ws *ws)
 		lp_set_obj(ws->lp[KIN], i, g[i]);
 }
 
+/* The live load's column, f_L's non-zeros, into ws->ind and ws->val
+ * (R entries each); returns their count. */
+int sws_live_load(struct sample_ws *ws)
+{
+	int nl = 0;
+	for (int i = 0; i < ws->R; i++)
+		if (ws->st.fL[i] != 0) {
+			ws->ind[nl] = i;
+			ws->val[nl++] = ws->st.fL[i];
+		}
+	return nl;
+}
+
 /* Each equilibrium row of P at its dead load: A x + lambda f_L = -f_D
  * (docs/method.md, "The operator").  Every problem's rows are
  * written by it, and so are LP1's put back after lp1_weightless
@@ -143,12 +156,7 @@ static void write_fixed(struct sample_ws *ws)
 	}
 	for (int k = 0; k < m; k++)
 		sws_put_column(ws, 3 * k + 2);
-	int nl = 0;
-	for (int i = 0; i < R; i++)
-		if (ws->st.fL[i] != 0) {
-			ws->ind[nl] = i;
-			ws->val[nl++] = ws->st.fL[i];
-		}
+	int nl = sws_live_load(ws);
 	for (int p = AMAX; p <= LP2; p++)
 		lp_set_col(ws->lp[p], p <= AMIN ? ACOL_LAMBDA(ws) : COL_LAMBDA(ws),
 			   nl, ws->ind, ws->val);

@@ -60,8 +60,7 @@ static int by_help(const void *a, const void *b)
 	return (x->block > y->block) - (x->block < y->block);
 }
 
-int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
-		  double *help, int max)
+int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks, int max)
 {
 	const struct wall *w = ws->w;
 	int m = ws->m, R = ws->R;
@@ -69,8 +68,7 @@ int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
 	struct lp *P = lp_new(ws->solver, R, nc);
 	if (!P)
 		return -1;
-	for (int i = 0; i < R; i++)
-		lp_set_row_bounds(P, i, -ws->st.fD[i], -ws->st.fD[i]);
+	sws_put_dead_load(ws, P);
 	/* the cone edges of every contact point, as LP-max has them */
 	for (int k = 0; k < m; k++)
 		for (int e = 0; e < 2; e++)
@@ -83,12 +81,7 @@ int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
 				lp_set_col(P, col, n, rows, vals);
 				lp_set_col_bounds(P, col, 0, HUGE_VAL);
 			}
-	int nl = 0;
-	for (int i = 0; i < R; i++)
-		if (ws->st.fL[i] != 0) {
-			ws->ind[nl] = i;
-			ws->val[nl++] = ws->st.fL[i];
-		}
+	int nl = sws_live_load(ws);
 	lp_set_col(P, ACOL_LAMBDA(ws), nl, ws->ind, ws->val);
 	if (at_rest)
 		lp_set_col_bounds(P, ACOL_LAMBDA(ws), 0, 0);
@@ -118,11 +111,7 @@ int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
 		return -1;
 	}
 
-	struct unheld_entry *u = malloc(sizeof *u * (size_t)(w->nfree + 1));
-	if (!u) {
-		lp_free(P);
-		return -1;
-	}
+	struct unheld_entry *u = sw_xmalloc(sizeof *u * (size_t)(w->nfree + 1));
 	int n = 0;
 	for (int b = 0; b < w->nblocks; b++) {
 		int q = w->blocks[b].eq;
@@ -139,11 +128,8 @@ int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks,
 	}
 	lp_free(P);
 	qsort(u, (size_t)n, sizeof *u, by_help);
-	for (int i = 0; i < n && i < max; i++) {
+	for (int i = 0; i < n && i < max; i++)
 		blocks[i] = u[i].block;
-		if (help)
-			help[i] = u[i].help;
-	}
 	free(u);
 	return n;
 }

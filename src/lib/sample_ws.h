@@ -170,6 +170,7 @@ static inline double sws_capacity(const struct sample_ws *ws, int k)
 void sws_note_memory(struct sample_ws *ws);
 void sws_put_column(struct sample_ws *ws, int j);
 void sws_put_dead_load(struct sample_ws *ws, struct lp *P);
+int sws_live_load(struct sample_ws *ws);
 void sws_put_kin_objective(struct sample_ws *ws);
 void sws_build(struct sample_ws *ws);
 void sws_refill(struct sample_ws *ws);

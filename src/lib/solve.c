@@ -90,7 +90,7 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
 			struct solve_result *r, char *err)
 {
-	int n = sample_unheld(ws, 0, r->unheld, NULL, SOLVE_UNHELD);
+	int n = sample_unheld(ws, 0, r->unheld, SOLVE_UNHELD);
 	if (n <= 0)
 		return;
 	r->nunheld = n;

@@ -372,8 +372,8 @@ static void unheld(void)
 	sample_result_init(&sr, w);
 	enum sample_status ss = sample_standard(ws, &d, &sr);
 	int b[4];
-	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, 0, b, NULL, 4) == 0 &&
-	       sample_unheld(ws, 1, b, NULL, 4) == 0,
+	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, 0, b, 4) == 0 &&
+	       sample_unheld(ws, 1, b, 4) == 0,
 	       "sample_unheld on a wall that stands: 0 blocks, at any load "
 	       "and at rest");
 	sample_result_free(&sr);
@@ -401,7 +401,7 @@ static void unheld(void)
 	struct sample_opts so;
 	sample_opts_default(&so);
 	sample_run(ws, &d, &so, &sr);
-	int n0 = sample_unheld(ws, 0, b, NULL, 4);
+	int n0 = sample_unheld(ws, 0, b, 4);
 	tap_ok(sr.status == SAMPLE_UNSTABLE && sr.nunheld == 1 &&
 	       sr.unheld == block_of(w, "over") && n0 == 0,
 	       "held up by its own load: unstable (%s), 'over' needs the load "
