@@ -25,8 +25,9 @@ done
 pkgs="build-essential meson ninja-build pkg-config libglpk-dev libgsl-dev libyaml-dev libncurses-dev libcairo2-dev man-db"
 if [ "$tests" = 1 ]; then
 	# the workbench test drives tmux; the tests look at processes with
-	# ps (not in a minimal Debian image) and read JSON with python3
-	pkgs="$pkgs tmux procps python3 valgrind"
+	# ps (not in a minimal Debian image), read JSON with python3 and
+	# the order of system calls with strace
+	pkgs="$pkgs tmux procps python3 valgrind strace"
 	# mpirun -n P slipwall run (docs/cluster.md): Open MPI, found by
 	# meson -Dmpi=auto, and its test
 	pkgs="$pkgs libopenmpi-dev openmpi-bin"

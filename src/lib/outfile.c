@@ -14,9 +14,11 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "slipwall/outfile.h"
@@ -159,58 +161,59 @@ enum sw_status outfile_check(const char *path, const char *const *inputs,
 	return check(path, inputs, flags, what, 1, err);
 }
 
-/* The signal that ended a wait for a FIFO's reader (wait_reader). */
-static volatile sig_atomic_t wait_sig;
+/* How often a wait for a FIFO's reader tries the FIFO again. */
+#define WAIT_READER_NS 50000000L	/* 50 ms */
 
-static void on_wait_signal(int sig)
-{
-	wait_sig = sig;
-}
-
-/* "waiting for a process to read this FIFO", then open(2) of the FIFO
- * for writing, which blocks until a process reads it; SIGINT, SIGTERM
- * and SIGHUP (those a run catches, run.h) end the wait: -1 with errno
- * EINTR and the signal in *sig.  Caught without SA_RESTART from before
- * the message (so a signal sent once it is read finds them caught) to
- * the end of the wait, and given back as they were (a signal ignored
- * at start stays ignored). */
+/* "waiting for a process to read this FIFO", then the wait for a
+ * reader; SIGINT, SIGTERM and SIGHUP (those a run catches, run.h) end
+ * it: -1 with errno EINTR and the signal in *sig.
+ *
+ * open(2) has no variant that unblocks signals atomically (as pselect
+ * and ppoll do), so a blocking open with a handler that sets a flag
+ * leaves a window: a signal between the flag's test and the call is
+ * handled, and the open blocks on.  Here the three signals are blocked
+ * from before the message to the end of the wait, and the wait is
+ * open(O_NONBLOCK), which fails with ENXIO while no process reads, then
+ * sigtimedwait for 50 ms: a signal sent at any moment is taken by the
+ * next sigtimedwait, and a reader that comes is found within 50 ms.  A
+ * signal ignored at start (nohup) is not blocked: Linux would keep it
+ * pending while blocked, and the wait would end on it. */
 static int wait_reader(const char *path, int oflags, int *sig)
 {
 	static const int sigs[3] = {SIGINT, SIGTERM, SIGHUP};
-	struct sigaction sa, old[3];
-	int on[3];
-	memset(&sa, 0, sizeof sa);
-	sa.sa_handler = on_wait_signal;
-	sigemptyset(&sa.sa_mask);
-	wait_sig = 0;
+	sigset_t set, old;
+	sigemptyset(&set);
 	for (int k = 0; k < 3; k++) {
-		sigaction(sigs[k], NULL, &old[k]);
-		on[k] = old[k].sa_handler != SIG_IGN;
-		if (on[k])
-			sigaction(sigs[k], &sa, NULL);
+		struct sigaction now;
+		if (sigaction(sigs[k], NULL, &now) == 0 &&
+		    now.sa_handler != SIG_IGN)
+			sigaddset(&set, sigs[k]);
 	}
+	pthread_sigmask(SIG_BLOCK, &set, &old);
 	char *c = text_clean(path);
 	fprintf(stderr, "slipwall: %s: waiting for a process to read this "
 		"FIFO\n", c);
 	free(c);
-	/* a signal while the message is written ends the wait before it
-	 * starts; one between this test and open(2) is the window that
-	 * no call closes for open (it has no sigmask variant) */
-	int fd = -1;
-	errno = EINTR;
-	while (!wait_sig && (fd = open(path, oflags, 0666)) < 0 &&
-	       errno == EINTR)
-		;
-	if (fd >= 0 && wait_sig) {	/* the reader came with the signal */
-		close(fd);
-		fd = -1;
-		errno = EINTR;
+	const struct timespec tick = {0, WAIT_READER_NS};
+	const struct timespec none = {0, 0};
+	int fd, got = -1;
+	while ((fd = open(path, oflags | O_NONBLOCK, 0666)) < 0 &&
+	       (errno == ENXIO || errno == EINTR)) {
+		got = sigtimedwait(&set, NULL, &tick);
+		if (got > 0)
+			break;
 	}
 	int e = errno;
-	for (int k = 0; k < 3; k++)
-		if (on[k])
-			sigaction(sigs[k], &old[k], NULL);
-	*sig = wait_sig;
+	/* the reader came with the signal: the signal wins, as it would
+	 * have a moment later */
+	if (fd >= 0 && (got = sigtimedwait(&set, NULL, &none)) > 0) {
+		close(fd);
+		fd = -1;
+	}
+	if (got > 0)
+		e = EINTR;
+	pthread_sigmask(SIG_SETMASK, &old, NULL);
+	*sig = got > 0 ? got : 0;
 	errno = e;
 	return fd;
 }

@@ -170,6 +170,12 @@ enum sw_status runlog_create(struct runlog **out, const char *path,
 	}
 	put(l, "\n", 1);
 	enum sw_status rc = flush_row(l, err);
+	/* the header on the disk before it replaces the old samples: a
+	 * crash of the machine just after the rename then leaves the new
+	 * header, not an empty file where the old rows were */
+	if (rc == SW_OK && tmp && fsync(fd) != 0)
+		rc = sw_fail(err, SW_EIO, "%s: cannot write: %s", path,
+			     strerror(errno));
 	if (rc == SW_OK && tmp && rename(tmp, dest) != 0)
 		rc = sw_fail(err, SW_EIO, "%s: cannot replace: %s", path,
 			     strerror(errno));

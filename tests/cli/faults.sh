@@ -213,7 +213,7 @@ for f in "$tmp/rfull"/*; do
 	esac || half="$half ${f##*/}"
 done
 if [ -z "$half" ]; then
-	ok "report on a full disk leaves whole figures or none, no temporary file ($(ls "$tmp/rfull" | wc -l) whole)"
+	ok "report on a full disk leaves whole figures or none, no temporary file ($(ls "$tmp/rfull" 2>/dev/null | wc -l) whole)"
 else
 	not_ok "report on a full disk leaves no truncated figure:$half"
 fi
@@ -304,13 +304,16 @@ rows_ok() {
 		 END { exit bad || NR < 1 }' "$1" &&
 		[ "$(tail -c 1 "$1" | od -An -c | tr -d ' ')" = '\n' ]
 }
-# wb NAME PRE -- ARGS: start the workbench; PRE runs in the shell first
+# wb NAME PRE -- ARGS: start the workbench; PRE runs in the shell first.
+# Its TMPDIR is the case's own directory: the temporary stderr that
+# curses' screen needs (tui_fatal.c) cannot be removed after SIGKILL,
+# and stays in $tmp, not in /tmp.
 wb() {
 	local name=$1 pre=$2
 	shift 3
 	mkdir -p "$tmp/wb-$name"
 	T new-window -d -t t -n "$name" \
-		"echo \$\$ > '$tmp/wb-$name/sh'; $pre env SLIPWALL_RUNS='$tmp/wb-$name/runs' '$bin' $*; echo \$? > '$tmp/wb-$name/rc'"
+		"echo \$\$ > '$tmp/wb-$name/sh'; $pre env SLIPWALL_RUNS='$tmp/wb-$name/runs' TMPDIR='$tmp/wb-$name' '$bin' $*; echo \$? > '$tmp/wb-$name/rc'"
 }
 wb_pid() {	# NAME: the program's pid (the one child of the window's shell)
 	ps -o pid= --ppid "$(cat "$tmp/wb-$1/sh")" | tr -d ' '

@@ -10,11 +10,12 @@
 # reader drops with a warning; SIGTERM during report leaves the report
 # directory complete or as it was; the readers of --positions, --tests
 # and compare --samples are bounded (/dev/zero, a file too large);
-# -n 1 --threads 1000 starts one worker and a --threads the memory cannot
-# hold is refused; control characters in names and invalid UTF-8 in
-# paths never reach the terminal, report.md or the JSON raw; a closed
-# samples pipe is a clear error; an empty tests: list and hexadecimal
-# tests are told apart.  TAP output.  Needs python3.
+# an old samples file is replaced by a header already on the disk
+# (fsync before rename, seen by strace); -n 1 --threads 1000 starts one
+# worker and a --threads the memory cannot hold is refused; control
+# characters in names and invalid UTF-8 in paths never reach the
+# terminal, report.md or the JSON raw; a closed samples pipe is a clear
+# error; an empty tests: list and hexadecimal tests are told apart.  TAP output.  Needs python3 and strace.
 
 bin=${1:?usage: cli/hostile.sh SLIPWALL}
 case $bin in /*) ;; *) bin=$PWD/$bin ;; esac
@@ -73,6 +74,34 @@ if [ $rc -eq 2 ] && cmp -s "$tmp/p.csv" "$tmp/p.orig"; then
 else
 	not_ok "--samples ./p.csv must not destroy --positions p.csv" "exit $rc" \
 		"$(head -c 300 "$tmp/e")"
+fi
+
+# ---- an old samples file is replaced by a header on the disk -----------------
+# A run over an old samples file writes its header to FILE.tmp and
+# renames it over FILE (the old rows stay whole until then).  The header
+# must be on the disk (fsync) before the rename: otherwise a machine
+# that crashes just after it leaves an empty file where the old rows
+# were.  strace shows the order of the calls.
+if ! command -v strace >/dev/null 2>&1; then
+	skip_one "the samples file's header is synced before it replaces the old file" "no strace"
+else
+	"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
+	strace -f -e trace=openat,fsync,rename -o "$tmp/strace" \
+		"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
+	rc=$?
+	# the fd of old.csv.tmp, then fsync(that fd) before the rename
+	order=$(awk -v f="$tmp/old.csv.tmp" '
+		index($0, "openat(") && index($0, "\"" f "\"") && / = [0-9]+$/ { fd = $NF }
+		fd != "" && $0 ~ "fsync\\(" fd "\\)" && !renamed { synced = 1 }
+		index($0, "rename(\"" f "\"") { renamed = 1; print (synced ? "synced" : "not-synced") }
+		' "$tmp/strace")
+	if [ $rc -eq 0 ] && [ "$order" = synced ] && [ ! -e "$tmp/old.csv.tmp" ] &&
+	   [ "$(wc -l <"$tmp/old.csv")" -eq 4 ]; then
+		ok "an old samples file is replaced by a header synced to the disk first (fsync, then rename)"
+	else
+		not_ok "the samples file's header is synced before it replaces the old file" \
+			"exit $rc, order '$order'" "$(grep -E 'old.csv|fsync|rename' "$tmp/strace" | head -c 600)"
+	fi
 fi
 
 # ---- one writer per samples file ---------------------------------------------

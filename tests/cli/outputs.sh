@@ -293,5 +293,26 @@ for sig in TERM HUP INT; do
 	fi
 done
 set +m
+# ... but not one that was ignored when the run started (nohup): the
+# wait blocks the signals it ends on, and an ignored SIGHUP, blocked,
+# would stay pending and end it
+(trap '' HUP; exec "$bin" run $block -n 5 --threads 1 --samples "$tmp/nobody") \
+	>"$tmp/fo" 2>"$tmp/fe" &
+pid=$!
+pids="$pids $pid"
+within 20 grep -qs "nobody: waiting for a process to read this FIFO" "$tmp/fe"
+kill -HUP $pid
+sleep 0.5
+kill -0 $pid 2>/dev/null && alive=1 || alive=0
+# the reader (a run that ended has no writer to meet it: not waited for)
+[ $alive = 1 ] && timeout 60 cat "$tmp/nobody" >"$tmp/fifo.csv"
+wait $pid
+rc=$?
+if [ $alive = 1 ] && [ $rc = 0 ] && [ "$(wc -l <"$tmp/fifo.csv")" = 6 ]; then
+	ok "an ignored SIGHUP (nohup) while run waits for the FIFO's reader: the wait goes on, then the 5 rows to the reader"
+else
+	not_ok "an ignored SIGHUP while run waits for the FIFO's reader is ignored" \
+		"alive $alive, exit $rc" "$(head -c 300 "$tmp/fe")"
+fi
 
 tap_end
