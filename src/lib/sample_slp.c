@@ -99,6 +99,21 @@
  * drifted the same way more slowly, and it was `not_converged`
  * (docs/method.md, "The SLP's answer", rule 6) */
 #define SLP_WANDERING 1e-3
+/* Rule 7's long phase, one phase never cut from the slack bases, is
+ * tried on walls of at most this many interfaces: on those of at most
+ * SLP_PHASE as the third attempt, on larger ones after rule 8's root
+ * searches (a second attempt's phase of m iterations comes first
+ * there).  A squat running-bond wall that slides at lambda = mu on
+ * every bed joint at once drifts at a constant residual (one bed
+ * joint's normal force passing to its neighbour, 0.004 block weights an
+ * iteration) for 576 iterations before its fixed point, past the
+ * second attempt's 445 (tests/data/squat-mu062.yaml, seed 1, sample
+ * 6; docs/method.md, "A drift at lambda = mu, and LP2 said
+ * infeasible").  Above this, an iteration costs about a second
+ * (walls/body-1000.yaml), and 1,000 more would be a quarter of an hour
+ * a sample; the bound is the one of a large wall's set-up (sample.c,
+ * AUTO_LARGE_IFACES). */
+#define SLP_LONG 1000
 /* the third attempt's root search (rule 8): bisection steps along the
  * segment between a phase end's two iterates (to 2^-40 of its length),
  * then piece jumps from the root, at most this many */
@@ -247,6 +262,22 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		if (fresh)
 			lp2_from_lp1(ws);
 		s = sws_solve(ws, LP2, fresh ? LP_PRIMAL : LP_DUAL, r);
+		/* LP1's optimal field lies on the face, to the simplex's
+		 * tolerance, so "infeasible" here is the simplex's, not the
+		 * face's: a path of a squat running-bond wall that slides at
+		 * lambda = mu on every bed joint at once, where LP1's field
+		 * was outside a shear bound by 9e-10 and the dual simplex
+		 * from LP2's last basis and the primal from the slack basis
+		 * both found no feasible point (tests/data/squat-mu037.yaml,
+		 * seed 1, sample 1; docs/method.md, "A drift at lambda = mu,
+		 * and LP2 said infeasible").  Once more from that field, as a path's first LP2
+		 * starts on a large wall (lp2_from_lp1): a primal feasible
+		 * basis.  The tie-break makes the answer the face's, not the
+		 * start's; only a path that ended `numerical` here moves. */
+		if (s == LP_INFEASIBLE && !fresh) {
+			lp2_from_lp1(ws);
+			s = sws_solve(ws, LP2, LP_PRIMAL, r);
+		}
 		if (s != LP_OPTIMAL) {
 			*failed = s != LP_UNBOUNDED && s != LP_INFEASIBLE;
 			return SAMPLE_NUMERICAL;
@@ -1043,7 +1074,9 @@ static enum sample_status slp_again(struct sample_ws *ws,
  * weights), or a spiral around a fixed point, brackets the fixed point
  * between two of its iterates, and the zero between them of the
  * residual that differs most lands on the piece that the plain steps
- * jump over.  The iterations of all count in r->iterations. */
+ * jump over.  On a larger wall of up to SLP_LONG interfaces the long
+ * phase comes after them.  The iterations of all count in
+ * r->iterations. */
 static enum sample_status slp_round(struct sample_ws *ws,
 				    const struct sample_opts *o,
 				    struct sample_result *r)
@@ -1067,6 +1100,11 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	for (int e = 0; e < E->n && st == SAMPLE_NOT_CONVERGED; e++)
 		st = slp_cycle_root(ws, o, r, e, &evals);
 	r->iterations = its + evals;
+	/* the long phase on a larger wall of up to SLP_LONG interfaces,
+	 * after the root searches, so that every sample they accept keeps
+	 * its answer and its cost */
+	if (st == SAMPLE_NOT_CONVERGED && !small && m <= SLP_LONG)
+		st = slp_again(ws, o, r, o->max_iter, 1);
 	return st;
 }
 

@@ -8,7 +8,9 @@
 # failures, docs/method.md "Tolerances"); every accepted sample's
 # lambda_min positive and finite; the count of samples what was asked.
 # Then replays: samples that were rejected as `numerical`, samples that
-# only the SLP's second attempt accepts, samples whose iteration
+# only the SLP's second attempt accepts, two squat walls that slide at
+# lambda = mu (one reaches its fixed point only in the long phase, one
+# met an LP2 the simplex called infeasible), samples whose iteration
 # cycles, which only its third attempt (the root search) accepts, and
 # one that only its fourth (the three at half the step) accepts.
 # (That every walls/*.yaml passes `slipwall check`: tests/cli/check.sh.)
@@ -140,6 +142,39 @@ for x, y in zip(a, b):
         abs(float(x["lambda_min"]) - float(y["lambda_min"])) <= 1e-9 * abs(float(y["lambda_min"]))
 sys.exit(0 if ok else 1)
 PY
+# Walls that slide at lambda = mu on every bed joint at once (one
+# friction on every joint, no opening), found by bench/scan.py --lintels
+# at seeds 31 and 32 (docs/method.md, "A drift at lambda = mu, and LP2
+# said infeasible").  tests/data/squat-mu062.yaml's sample 6 of seed 1
+# has a rocking state below mu that the plain iteration reaches after a
+# drift of 576 iterations at a constant residual, past the second
+# attempt's phase of m = 445; tests/data/squat-mu037.yaml's sample 1 met
+# an LP2 that the simplex called infeasible although LP1's field lies on
+# its face.  Both were `numerical`.  Each is accepted now (the first by
+# the long phase, a third attempt on walls of up to 1,000 interfaces;
+# the second by LP2 solved again from LP1's optimum), from three LP
+# starts, at the load `--slp plain` gives, to 1e-9.
+for sq in mu062-seed1-s6 mu037-seed1-s1; do
+	wall=tests/data/squat-${sq%%-*}.yaml
+	from_starts "sq-$sq" auto slack-primal support -- "$wall" \
+		--replay "tests/data/squat-$sq.csv"
+	"$bin" run "$wall" --replay "tests/data/squat-$sq.csv" --slp plain \
+		--threads 1 --samples "$tmp/sq-$sq-plain.csv" >/dev/null 2>&1
+	check "squat wall $sq (numerical before): accepted from auto, slack-primal, support, at --slp plain's lambda_min to 1e-9" \
+		python3 - "$tmp/sq-$sq-auto.csv" "$tmp/sq-$sq-slack-primal.csv" \
+			"$tmp/sq-$sq-support.csv" "$tmp/sq-$sq-plain.csv" <<'PY'
+import csv, sys
+rows = [list(csv.DictReader(open(f))) for f in sys.argv[1:]]
+ok = all(len(r) == 1 for r in rows)
+if ok:
+    plain = rows[-1][0]
+    for f, r in zip(sys.argv[1:], rows):
+        print("#  ", f.rsplit("/", 1)[-1], r[0]["status"], r[0]["lambda_min"], r[0]["iterations"])
+        ok = ok and r[0]["status"] == "accepted" and \
+            abs(float(r[0]["lambda_min"]) - float(plain["lambda_min"])) <= 1e-9 * abs(float(plain["lambda_min"]))
+sys.exit(0 if ok else 1)
+PY
+done
 # Cycles that both attempts of the SLP leave: rule 8's root search
 # (docs/method.md, "The SLP's answer", and "The cycles: a steep piece").
 # The facade's sample 2 (seed 1, tests/data/facade-seed1-s2.csv) circles
