@@ -273,7 +273,10 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		 * and LP2 said infeasible").  Once more from that field, as a path's first LP2
 		 * starts on a large wall (lp2_from_lp1): a primal feasible
 		 * basis.  The tie-break makes the answer the face's, not the
-		 * start's; only a path that ended `numerical` here moves. */
+		 * start's.  What moves: a path that ended `numerical` here,
+		 * and a piece jump whose verifying LP2 the simplex called
+		 * infeasible, which failed and is now verified as any other
+		 * (rule 4), so that round-off no longer fails it. */
 		if (s == LP_INFEASIBLE && !fresh) {
 			lp2_from_lp1(ws);
 			s = sws_solve(ws, LP2, LP_PRIMAL, r);
