@@ -268,11 +268,13 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		 * lambda = mu on every bed joint at once, where LP1's field
 		 * was outside a shear bound by 9e-10 and the dual simplex
 		 * from LP2's last basis and the primal from the slack basis
-		 * both found no feasible point (tests/data/squat-mu037.yaml,
-		 * seed 1, sample 1; docs/method.md, "A drift at lambda = mu,
-		 * and LP2 said infeasible").  Once more from that field, as a path's first LP2
-		 * starts on a large wall (lp2_from_lp1): a primal feasible
-		 * basis.  The tie-break makes the answer the face's, not the
+		 * both found no feasible point (tests/data/squat-mu062.yaml,
+		 * seed 1, sample 6, at iteration 402; squat-mu037.yaml's
+		 * sample 1 ended `numerical` the same way; docs/method.md,
+		 * "A drift at lambda = mu, and LP2 said infeasible").  Once
+		 * more from that field, as a path's first LP2 starts on a
+		 * large wall (lp2_from_lp1): a primal feasible basis.  The
+		 * tie-break makes the answer the face's, not the
 		 * start's.  What moves: a path that ended `numerical` here,
 		 * and a piece jump whose verifying LP2 the simplex called
 		 * infeasible, which failed and is now verified as any other
