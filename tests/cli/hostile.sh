@@ -86,7 +86,11 @@ if ! command -v strace >/dev/null 2>&1; then
 	skip_one "the samples file's header is synced before it replaces the old file" "no strace"
 else
 	"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
-	strace -f -e trace=openat,fsync,rename -o "$tmp/strace" \
+	# LeakSanitizer cannot run under ptrace (the sanitizer job's build
+	# stops with a fatal error): no leak check in this one run, whose
+	# question is the order of two calls (as mpi.sh under mpirun)
+	ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
+		strace -f -e trace=openat,fsync,rename -o "$tmp/strace" \
 		"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
 	rc=$?
 	# the fd of old.csv.tmp, then fsync(that fd) before the rename
