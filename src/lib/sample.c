@@ -50,9 +50,6 @@
  * answer wherever it is not decided by round-off; 1 and 0 move 3.5 % and
  * 12 % of the demo's samples) */
 #define SLP_PIECE_SETTLE 2
-/* `auto` takes its large-wall starts above this many interfaces
- * (sws_role_start) */
-#define AUTO_LARGE_IFACES 1000
 
 static const struct {
 	const char *name, *text;
@@ -178,7 +175,7 @@ static enum sample_status first_steps(struct sample_ws *ws,
 	return st;
 }
 
-/* A large wall's canonical sample (AUTO_LARGE_IFACES), as far as its
+/* A large wall's canonical sample (SWS_LARGE_IFACES), as far as its
  * samples use its bases: LP-max (without its tie-break, sample_tie.c),
  * the standing check and the SLP's first LP1, at LP-max's capacities.
  * Its SLP path, mechanism and LP-min were 14 of the 19 s of
@@ -281,7 +278,7 @@ static unsigned long setup_shape(const struct wall *w)
 
 static int large_wall(const struct wall *w)
 {
-	return w->nifaces > AUTO_LARGE_IFACES;
+	return w->nifaces > SWS_LARGE_IFACES;
 }
 
 /* A set-up holding copies of the bases canon[ROLES]. */

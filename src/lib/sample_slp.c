@@ -111,9 +111,8 @@
  * 6; docs/method.md, "A drift at lambda = mu, and LP2 said
  * infeasible").  Above this, an iteration costs about a second
  * (walls/body-1000.yaml), and 1,000 more would be a quarter of an hour
- * a sample; the bound is the one of a large wall's set-up (sample.c,
- * AUTO_LARGE_IFACES). */
-#define SLP_LONG 1000
+ * a sample: the bound is the one of a large wall (sample_ws.h). */
+#define SLP_LONG SWS_LARGE_IFACES
 /* the third attempt's root search (rule 8): bisection steps along the
  * segment between a phase end's two iterates (to 2^-40 of its length),
  * then piece jumps from the root, at most this many */
@@ -280,8 +279,10 @@ static enum sample_status slp_map(struct sample_ws *ws,
 		 * infeasible, which failed and is now verified as any other
 		 * (rule 4), so that round-off no longer fails it. */
 		if (s == LP_INFEASIBLE && !fresh) {
+			/* sws_solve's re-check from the slack basis has
+			 * said "infeasible" already: not again */
 			lp2_from_lp1(ws);
-			s = sws_solve(ws, LP2, LP_PRIMAL, r);
+			s = sws_counted(ws, LP2, LP_PRIMAL, NULL, r);
 		}
 		if (s != LP_OPTIMAL) {
 			*failed = s != LP_UNBOUNDED && s != LP_INFEASIBLE;

@@ -106,7 +106,7 @@ int sample_lp_config_parse(struct sample_lp_config *c, const char *start,
  * November 2026: below); large walls also start the canonical
  * sample's LP-max from it, solved when the workspace is made (3,322
  * pivots from the support basis, 13,751 from the slack basis).
- * AUTO_LARGE_IFACES is at the top of sample.c.
+ * SWS_LARGE_IFACES is in sample_ws.h.
  * On walls of at most that many interfaces, and on larger ones under
  * a body load, LP2's start, whichever it is, is loaded and then
  * replaced: each path of the SLP starts its first LP2 from LP1's

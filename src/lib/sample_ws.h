@@ -159,6 +159,13 @@ static inline double sws_capacity(const struct sample_ws *ws, int k)
 	return ws->st.mu[k] * fmax(ws->c[k], 0);
 }
 
+/* A wall of more than this many interfaces is large: `auto` takes its
+ * large-wall starts and set-up there (sample.c, setup_large;
+ * sample_start.c), and the SLP's last attempt, the long phase, is not
+ * tried (sample_slp.c, slp_round), where an iteration costs about a
+ * second (walls/body-1000.yaml, 2,956 interfaces). */
+#define SWS_LARGE_IFACES 1000
+
 /* What the kinematic LP may do at an interface (sample_ws.kfree). */
 #define KIN_OPEN_A 1u	/* point q_a may open */
 #define KIN_OPEN_B 2u	/* point q_b may open */

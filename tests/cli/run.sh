@@ -2,7 +2,8 @@
 # cli/run.sh - `slipwall run` end to end.
 #
 # Usage (from the source root): bash tests/cli/run.sh /path/to/slipwall
-# Proves: bad options exit 2; the samples file is byte-identical with 1
+# Proves: bad options exit 2; an option given twice keeps its last
+# value; the samples file is byte-identical with 1
 # and 2 threads and the JSON equal apart from the timing and thread
 # fields; the JSON agrees with the CSV (counts, p05 by type 7); a replay
 # of the positions gives the same file; SIGKILL leaves complete rows;
@@ -64,6 +65,19 @@ bad "a --positions file that is not a samples file" "notsamples.csv:1:" \
 "$bin" run --help >"$tmp/out" 2>&1
 check "--help exits 0 and prints the usage" \
 	grep -q "usage: slipwall run" "$tmp/out"
+
+# an option given twice keeps its last value (docs/run.md): seed 2's
+# samples, which are not seed 1's
+for a in "1 --seed 2" 2 1; do
+	"$bin" run $demo -n 5 --threads 1 --seed $a \
+		--samples "$tmp/twice-${a// /_}.csv" >/dev/null 2>&1
+done
+if cmp -s "$tmp/twice-1_--seed_2.csv" "$tmp/twice-2.csv" &&
+	! cmp -s "$tmp/twice-2.csv" "$tmp/twice-1.csv"; then
+	ok "--seed given twice: the last one samples"
+else
+	not_ok "--seed given twice: the last one samples"
+fi
 
 # ---- reproducible: 1 and 2 threads ----------------------------------------
 nif=$("$bin" check --json $ft | python3 -c \
