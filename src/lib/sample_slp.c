@@ -100,19 +100,18 @@
  * (docs/method.md, "The SLP's answer", rule 6) */
 #define SLP_WANDERING 1e-3
 /* Rule 7's long phase, one phase never cut from the slack bases, is
- * tried on walls of at most this many interfaces: on those of at most
- * SLP_PHASE as the third attempt, on larger ones after rule 8's root
- * searches (a second attempt's phase of m iterations comes first
- * there).  A squat running-bond wall that slides at lambda = mu on
+ * tried on walls that are not large (at most SWS_LARGE_IFACES
+ * interfaces, sample_ws.h): on those of at most SLP_PHASE as the third
+ * attempt, on larger ones after rule 8's root searches (a second
+ * attempt's phase of m iterations comes first there; slp_round).  A squat running-bond wall that slides at lambda = mu on
  * every bed joint at once drifts at a constant residual (one bed
  * joint's normal force passing to its neighbour, 0.004 block weights an
  * iteration) for 576 iterations before its fixed point, past the
  * second attempt's 445 (tests/data/squat-mu062.yaml, seed 1, sample
  * 6; docs/method.md, "A drift at lambda = mu, and LP2 said
- * infeasible").  Above this, an iteration costs about a second
+ * infeasible").  On a large wall an iteration costs about a second
  * (walls/body-1000.yaml), and 1,000 more would be a quarter of an hour
- * a sample: the bound is the one of a large wall (sample_ws.h). */
-#define SLP_LONG SWS_LARGE_IFACES
+ * a sample. */
 /* the third attempt's root search (rule 8): bisection steps along the
  * segment between a phase end's two iterates (to 2^-40 of its length),
  * then piece jumps from the root, at most this many */
@@ -1080,8 +1079,8 @@ static enum sample_status slp_again(struct sample_ws *ws,
  * weights), or a spiral around a fixed point, brackets the fixed point
  * between two of its iterates, and the zero between them of the
  * residual that differs most lands on the piece that the plain steps
- * jump over.  On a larger wall of up to SLP_LONG interfaces the long
- * phase comes after them.  The iterations of all count in
+ * jump over.  On a larger wall that is not large (SWS_LARGE_IFACES)
+ * the long phase comes after them.  The iterations of all count in
  * r->iterations. */
 static enum sample_status slp_round(struct sample_ws *ws,
 				    const struct sample_opts *o,
@@ -1106,10 +1105,10 @@ static enum sample_status slp_round(struct sample_ws *ws,
 	for (int e = 0; e < E->n && st == SAMPLE_NOT_CONVERGED; e++)
 		st = slp_cycle_root(ws, o, r, e, &evals);
 	r->iterations = its + evals;
-	/* the long phase on a larger wall of up to SLP_LONG interfaces,
-	 * after the root searches, so that every sample they accept keeps
-	 * its answer and its cost */
-	if (st == SAMPLE_NOT_CONVERGED && !small && m <= SLP_LONG)
+	/* the long phase on a larger wall that is not large, after the
+	 * root searches, so that every sample they accept keeps its answer
+	 * and its cost */
+	if (st == SAMPLE_NOT_CONVERGED && !small && m <= SWS_LARGE_IFACES)
 		st = slp_again(ws, o, r, o->max_iter, 1);
 	return st;
 }

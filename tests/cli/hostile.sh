@@ -86,10 +86,9 @@ if ! command -v strace >/dev/null 2>&1; then
 	skip_one "the samples file's header is synced before it replaces the old file" "no strace"
 else
 	"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
-	# LeakSanitizer cannot run under ptrace (the sanitizer job's build
-	# stops with a fatal error): no leak check in this one run, whose
-	# question is the order of two calls (as mpi.sh under mpirun)
-	ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
+	# no leak check under ptrace (tests/tap.sh, asan_no_leaks) in this
+	# one run, whose question is the order of two calls
+	ASAN_OPTIONS=$(asan_no_leaks) \
 		strace -f -e trace=openat,fsync,rename -o "$tmp/strace" \
 		"$bin" run $two -n 3 --threads 1 --samples "$tmp/old.csv" >/dev/null 2>&1
 	rc=$?

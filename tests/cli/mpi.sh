@@ -95,11 +95,10 @@ fi
 export OMPI_MCA_btl_vader_single_copy_mechanism=none
 # "${mpi[@]}" -n P "$bin" ARGS: not a function, so that $! of a
 # background job is mpirun itself (env execs it).  Under AddressSanitizer
-# (scripts/ci-sanitize.sh) the ranks check memory errors but not leaks:
-# Open MPI does not free everything at MPI_Finalize, from plugins it has
-# unloaded by then (no stack to suppress them by); the single-process
-# runs here and in the other tests still check leaks.
-mpi=(env "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+# (scripts/ci-sanitize.sh) the ranks check memory errors but not leaks
+# (tests/tap.sh, asan_no_leaks); the single-process runs here and in the
+# other tests still check leaks.
+mpi=(env "ASAN_OPTIONS=$(asan_no_leaks)"
 	"$mpirun" --oversubscribe --bind-to none)
 # same_json ONE MPI P: the JSON of mpirun -n P is the same text, byte
 # for byte, as one process's apart from the lines of the timing keys

@@ -100,9 +100,9 @@ while IFS= read -r line; do
 		continue
 	fi
 	# under AddressSanitizer the MPI ranks check memory errors but not
-	# leaks: Open MPI does not free everything (as in cli/mpi.sh)
+	# leaks (tests/tap.sh, asan_no_leaks)
 	asan=${ASAN_OPTIONS:-}
-	[ "$1" = mpirun ] && asan="${asan:+$asan:}detect_leaks=0"
+	[ "$1" = mpirun ] && asan=$(asan_no_leaks)
 	(cd "$tmp/work" && ASAN_OPTIONS=$asan bash -c "$line") >"$tmp/out" 2>"$tmp/err" </dev/null
 	rc=$?
 	if [ $rc = 0 ]; then
