@@ -103,7 +103,8 @@
  * tried on walls that are not large (at most SWS_LARGE_IFACES
  * interfaces, sample_ws.h): on those of at most SLP_PHASE as the third
  * attempt, on larger ones after rule 8's root searches (a second
- * attempt's phase of m iterations comes first there; slp_round).  A squat running-bond wall that slides at lambda = mu on
+ * attempt's phase of m iterations comes first there; slp_round).  A
+ * squat running-bond wall that slides at lambda = mu on
  * every bed joint at once drifts at a constant residual (one bed
  * joint's normal force passing to its neighbour, 0.004 block weights an
  * iteration) for 576 iterations before its fixed point, past the
