@@ -277,6 +277,10 @@ fi
 # silence (it killed the process before)
 set -m	# job control: a background job does not ignore SIGINT
 for sig in TERM HUP INT; do
+	# the last run's stderr said it too: gone, so that the wait below
+	# is for this run's message, not for a file not yet truncated (a
+	# signal before the handler would kill the process)
+	rm -f "$tmp/fe"
 	"$bin" run $block -n 5 --threads 1 --samples "$tmp/nobody" >"$tmp/fo" 2>"$tmp/fe" &
 	pid=$!
 	pids="$pids $pid"
@@ -295,7 +299,9 @@ done
 set +m
 # ... but not one that was ignored when the run started (nohup): the
 # wait blocks the signals it ends on, and an ignored SIGHUP, blocked,
-# would stay pending and end it
+# would stay pending and end it (the last run's stderr removed, as
+# above: a SIGHUP before the subshell's trap would end it)
+rm -f "$tmp/fe"
 (trap '' HUP; exec "$bin" run $block -n 5 --threads 1 --samples "$tmp/nobody") \
 	>"$tmp/fo" 2>"$tmp/fe" &
 pid=$!
