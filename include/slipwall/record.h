@@ -26,8 +26,8 @@ struct record {
 	long index;		/* the sample's index in the run */
 	enum sample_status status;
 	int iterations, lps;	/* SLP iterations, LPs solved */
-	/* `no_equilibrium` or `unstable`: the block that most needs outside
-	 * help (sample_result.unheld), else -1; also no padding before
+	/* `no_equilibrium`, `unstable` or `hanging`: the block the sample
+	 * names (sample_result.unheld), else -1; also no padding before
 	 * the doubles */
 	int unheld;
 	double lambda_lpmax, lambda_max, lambda_min;

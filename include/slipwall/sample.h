@@ -158,7 +158,9 @@ struct sample_result {
 	double vw_residual;	/* relative virtual-work residual */
 	/* `no_equilibrium` or `unstable` (sample_run, sample_pattern): the
 	 * block that most needs the least outside help (sample_unheld), or
-	 * -1, and how many blocks need some (0: not found) */
+	 * -1, and how many blocks need some (0: not found); `hanging`
+	 * (sample_run): the lowest of the blocks that hang (docs/method.md,
+	 * "Which blocks cannot be held"), and how many hang */
 	int unheld, nunheld;
 	/* mechanism (accepted samples) */
 	int nblocks, nifaces;

@@ -43,9 +43,9 @@ struct tally {
 	double lam_sum;
 	long iterations, lps;	/* sums over all samples */
 	double compute_seconds;	/* sum of per-sample compute times */
-	/* 2 * nblocks, or NULL before the first: the `no_equilibrium`
-	 * samples, then the `unstable` ones, by the block that most needs
-	 * outside help (record.unheld) */
+	/* TALLY_NAMED rows of nblocks, or NULL before the first: the
+	 * samples of each status of tally_named, by the block they name
+	 * (record.unheld) */
 	long *unheld;
 	struct tally_mech *mech;/* distinct mechanisms, by first appearance */
 	int nmech, capmech;
@@ -59,16 +59,21 @@ void tally_add(struct tally *t, const struct record *it);
 /* The index in t->mech of mechanism joint (nifaces chars), or -1 when
  * the tally has not seen it: one hash of the string. */
 int tally_find(const struct tally *t, const char *joint);
-/* The blocks that the samples of status st (SAMPLE_NO_EQUILIBRIUM or
- * SAMPLE_UNSTABLE) could not hold (record.unheld), most samples first
- * (equal counts: in the wall's order): up to max block indices into
- * blocks[] and their counts into counts[]; returns how many blocks were
- * named at all (0 for another status). */
+/* The rejections whose samples name a block (record.unheld), in the
+ * order the summaries show them: no_equilibrium, unstable, hanging. */
+#define TALLY_NAMED 3
+extern const enum sample_status tally_named[TALLY_NAMED];
+/* The blocks that the samples of status st (one of tally_named) named
+ * (record.unheld), most samples first (equal counts: in the wall's
+ * order): up to max block indices into blocks[] and their counts into
+ * counts[]; returns how many blocks were named at all (0 for another
+ * status). */
 int tally_unheld(const struct tally *t, enum sample_status st, int *blocks,
 		 long *counts, int max);
 /* What the blocks of tally_unheld are, for people: "cannot be held"
  * (no_equilibrium: at any load), "stands only under load" (unstable:
- * they need the live load), NULL for another status. */
+ * they need the live load), "lowest hanging block" (hanging: where the
+ * clamp the SLP lost begins), NULL for another status. */
 const char *tally_unheld_text(enum sample_status st);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */

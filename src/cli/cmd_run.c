@@ -314,8 +314,9 @@ static void print_families(const struct wall *w, const struct tally *t)
 	family_set_free(&fs);
 }
 
-/* Under the `no_equilibrium` and `unstable` counts: the blocks their
- * samples could not hold (tally_unheld), the three named most often. */
+/* Under the `no_equilibrium`, `unstable` and `hanging` counts: the
+ * blocks their samples named (tally_unheld), the three named most
+ * often. */
 static void print_unheld(const struct wall *w, const struct tally *t,
 			 enum sample_status st)
 {
@@ -545,18 +546,16 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
-	/* the blocks the `no_equilibrium` and the `unstable` samples could
-	 * not hold (docs/run.md), most samples first */
+	/* the blocks the `no_equilibrium`, `unstable` and `hanging` samples
+	 * named (docs/run.md), most samples first */
 	json_key(&j, "unheld");
 	json_object_begin(&j);
-	const enum sample_status ust[2] = {SAMPLE_NO_EQUILIBRIUM,
-					   SAMPLE_UNSTABLE};
 	int *ub = sw_xmalloc(sizeof *ub * ((size_t)t->nblocks + 1));
 	long *uc = sw_xmalloc(sizeof *uc * ((size_t)t->nblocks + 1));
-	for (int s = 0; s < 2; s++) {
-		json_key(&j, sample_status_name(ust[s]));
+	for (int s = 0; s < TALLY_NAMED; s++) {
+		json_key(&j, sample_status_name(tally_named[s]));
 		json_array_begin(&j);
-		int nb = tally_unheld(t, ust[s], ub, uc, t->nblocks);
+		int nb = tally_unheld(t, tally_named[s], ub, uc, t->nblocks);
 		for (int i = 0; i < nb; i++) {
 			json_object_begin(&j);
 			json_key_string(&j, "block", r->w->blocks[ub[i]].id);

@@ -61,7 +61,7 @@ void record_set(struct record *r, long index, const struct sample_result *res,
 	r->status = res->status;
 	r->iterations = res->iterations;
 	r->lps = res->lps;
-	r->unheld = res->unheld;	/* -1 but after no_equilibrium, unstable */
+	r->unheld = res->unheld;	/* -1 but after tally_named's statuses */
 	r->lambda_lpmax = res->lambda_lpmax;
 	r->lambda_max = res->lambda_max;
 	r->lambda_min = res->lambda_min;

@@ -161,9 +161,9 @@ static void md_single(FILE *f, const struct rctx *c)
 }
 
 /* A row of the run's table: the blocks that the samples of status st
- * (no_equilibrium, unstable) could not hold, the three named most often
- * (docs/method.md, "Which blocks cannot be held"); none when no sample
- * named one. */
+ * (one of tally_named) named, the three named most often (docs/
+ * method.md, "Which blocks cannot be held"); none when no sample named
+ * one. */
 static void md_unheld(FILE *f, const struct rctx *c, enum sample_status st)
 {
 	const struct report_input *in = c->in;
@@ -223,8 +223,8 @@ static void md_run(FILE *f, const struct rctx *c, const struct md_text *t)
 				fprintf(f, "| rejected: %s | %ld |\n",
 					sample_status_text(k), r->rejected[k]);
 	}
-	md_unheld(f, c, SAMPLE_NO_EQUILIBRIUM);
-	md_unheld(f, c, SAMPLE_UNSTABLE);
+	for (int u = 0; u < TALLY_NAMED; u++)
+		md_unheld(f, c, tally_named[u]);
 	fprintf(f, "| accepted loads plotted | %zu |\n", c->n);
 	if (in->mech)
 		fprintf(f, "| distinct mechanisms | %d |\n", in->mech->nmech);

@@ -363,6 +363,7 @@ static struct sample_ws *ws_new(const struct wall *w,
 	ws->c = sw_xcalloc(m + 1, sizeof(double));
 	ws->c0 = sw_xcalloc(m + 1, sizeof(double));
 	ws->clost = sw_xcalloc(m + 1, sizeof(double));
+	ws->hang_blk = -1;
 	ws->cstar = sw_xcalloc(m + 1, sizeof(double));
 	ws->fallback = sw_xcalloc(m + 1, sizeof(double));
 	for (int i = 0; i <= SLP_MEMORY; i++) {
@@ -566,6 +567,12 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 			r->nunheld = n;
 		}
 		r->lps++;
+	}
+	/* the blocks that hang, from the verdict's own test (sws_slp): no
+	 * LP more */
+	if (st == SAMPLE_HANGING && ws->hang_blk >= 0) {
+		r->unheld = ws->hang_blk;
+		r->nunheld = ws->nhang;
 	}
 }
 

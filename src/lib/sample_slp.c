@@ -668,6 +668,30 @@ static enum lp_status lp1_weightless(struct sample_ws *ws, const char *blk,
 	return s;
 }
 
+/* The lowest of the blocks that blk[] marks, the one a `hanging`
+ * sample names (docs/method.md, "Which blocks cannot be held"): the
+ * least centroid height, then the least x, each to 1e-9 of the wall's
+ * length scale (blocks of one course tie in height), then the wall's
+ * order; -1 if none is marked.  How many are marked into *n. */
+static int slp_lowest(const struct sample_ws *ws, const char *blk, int *n)
+{
+	const struct wall *w = ws->w;
+	double tol = 1e-9 * ws->st.L;
+	int low = -1;
+	*n = 0;
+	for (int b = 0; b < w->nblocks; b++) {
+		if (!blk[b])
+			continue;
+		++*n;
+		const struct wall_block *p = &w->blocks[b];
+		const struct wall_block *q = low < 0 ? NULL : &w->blocks[low];
+		if (!q || p->cy < q->cy - tol ||
+		    (p->cy <= q->cy + tol && p->cx < q->cx - tol))
+			low = b;
+	}
+	return low;
+}
+
 /* A sample that the SLP leaves not converged because its last path
  * ended on an LP1 without equilibrium (path_end): is a clamp what it
  * lost?  The clamped blocks are those that no chain of joints carries
@@ -689,7 +713,8 @@ static enum lp_status lp1_weightless(struct sample_ws *ws, const char *blk,
  *   its weight: with the clamped blocks weightless, the wall stands at
  *     zero load (the path lost, far from the opening, a joint of the
  *     thrust that carries their weight, and not the clamped joints).
- * Any makes the sample `hanging`; otherwise it stays `not_converged`.
+ * Any makes the sample `hanging` (the lowest clamped block into
+ * ws->hang_blk, slp_lowest); otherwise it stays `not_converged`.
  * Each is a verdict of feasibility (an LP that fails is none), and
  * "infeasible" is sws_solve's fixed path: the status does not depend on
  * the start. */
@@ -717,6 +742,8 @@ static enum sample_status slp_clamp_lost(struct sample_ws *ws,
 			hanging = lp1_stands(s);
 		}
 	}
+	if (hanging)
+		ws->hang_blk = slp_lowest(ws, blk, &ws->nhang);
 	free(blk);
 	free(give);
 	return hanging ? SAMPLE_HANGING : SAMPLE_NOT_CONVERGED;
@@ -727,6 +754,8 @@ enum sample_status sws_slp(struct sample_ws *ws,
 			      struct sample_result *r)
 {
 	ws->slp_lost = 0;
+	ws->hang_blk = -1;
+	ws->nhang = 0;
 	enum sample_status st = slp_solve(ws, o, r);
 	if (st == SAMPLE_NOT_CONVERGED && ws->slp_lost)
 		st = slp_clamp_lost(ws, r);

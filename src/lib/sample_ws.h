@@ -96,6 +96,9 @@ struct sample_ws {
 	 * the capacities clost (m) */
 	int slp_lost;
 	double *clost;
+	/* after a `hanging` verdict (slp_clamp_lost): the lowest of the
+	 * blocks that hang, and how many hang; else -1 and 0 */
+	int hang_blk, nhang;
 	/* the workspace's LP solver, and one problem per LP role (see the
 	 * top), so that between two solves of a role only bounds change and
 	 * the solver keeps its basis */

@@ -118,10 +118,17 @@ int tally_find(const struct tally *t, const char *joint)
 	return t->hashcap == 0 ? -1 : probe(t, joint, &slot);
 }
 
+const enum sample_status tally_named[TALLY_NAMED] = {
+	SAMPLE_NO_EQUILIBRIUM, SAMPLE_UNSTABLE, SAMPLE_HANGING,
+};
+
 /* The row of t->unheld that a status counts in, or -1. */
 static int unheld_row(enum sample_status st)
 {
-	return st == SAMPLE_NO_EQUILIBRIUM ? 0 : st == SAMPLE_UNSTABLE ? 1 : -1;
+	for (int u = 0; u < TALLY_NAMED; u++)
+		if (tally_named[u] == st)
+			return u;
+	return -1;
 }
 
 void tally_add(struct tally *t, const struct record *it)
@@ -138,7 +145,8 @@ void tally_add(struct tally *t, const struct record *it)
 		int u = unheld_row(it->status);
 		if (u >= 0 && it->unheld >= 0 && it->unheld < t->nblocks) {
 			if (!t->unheld)
-				t->unheld = sw_xcalloc(2 * (size_t)t->nblocks,
+				t->unheld = sw_xcalloc(TALLY_NAMED *
+						       (size_t)t->nblocks,
 						       sizeof *t->unheld);
 			t->unheld[u * t->nblocks + it->unheld]++;
 		}
@@ -171,7 +179,8 @@ static int by_count(const void *a, const void *b)
 const char *tally_unheld_text(enum sample_status st)
 {
 	return st == SAMPLE_NO_EQUILIBRIUM ? "cannot be held" :
-	       st == SAMPLE_UNSTABLE ? "stands only under load" : NULL;
+	       st == SAMPLE_UNSTABLE ? "stands only under load" :
+	       st == SAMPLE_HANGING ? "lowest hanging block" : NULL;
 }
 
 int tally_unheld(const struct tally *t, enum sample_status st, int *blocks,

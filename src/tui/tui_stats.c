@@ -197,9 +197,9 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 	}
 }
 
-/* Under the rejections: the blocks that the samples of status st
- * (no_equilibrium, unstable) could not hold, the three named most often
- * (docs/workbench.md), when the tally is of this wall's blocks. */
+/* Under the rejections: the blocks that the samples of status st (one
+ * of tally_named) named, the three named most often (docs/
+ * workbench.md), when the tally is of this wall's blocks. */
 static void tui_stats_unheld(struct tui *t, struct tui_lines *p,
 			     enum sample_status st)
 {
@@ -253,8 +253,8 @@ static void tui_stats_counts(struct tui *t, struct tui_lines *p)
 			len += snprintf(line + len, sizeof line - (size_t)len, "%s", item);
 	}
 	tui_stats_text(p, line);
-	tui_stats_unheld(t, p, SAMPLE_NO_EQUILIBRIUM);
-	tui_stats_unheld(t, p, SAMPLE_UNSTABLE);
+	for (int u = 0; u < TALLY_NAMED; u++)
+		tui_stats_unheld(t, p, tally_named[u]);
 }
 
 /* The loads: order statistics, the characteristic value and its

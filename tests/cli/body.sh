@@ -312,6 +312,13 @@ check "the demo, seed 3, sample 1269: accepted from the starts auto, slack-prima
 check "a block over a gap (stack bond): 5 of 5 samples hanging, in the summary and the samples file" \
 	[ "$(json_field "$tmp/gap.json" '(d["rejected"]["hanging"], d["rejected"]["not_converged"], d["accepted"])')" = "(5, 0, 0)" -a \
 	  "$(cut -d, -f2 "$tmp/gap.csv" | sed 1d | sort | uniq -c | tr -s ' ')" = " 5 hanging" ]
+# Each names the lowest block that hangs (docs/method.md, "Which blocks
+# cannot be held"): c2b2, the block over the gap, not c3b2, which rests
+# on it; in the summary and its JSON.
+"$bin" run tests/data/stack-gap.yaml -n 5 --threads 1 >"$tmp/gap.txt" 2>/dev/null
+check "a block over a gap: each hanging sample names c2b2, the lowest block that hangs (summary, JSON)" \
+	[ "$(grep -cx '    lowest hanging block: block c2b2 (5)' "$tmp/gap.txt")" = 1 -a \
+	  "$(json_field "$tmp/gap.json" 'd["unheld"]["hanging"]')" = "[{'block': 'c2b2', 'count': 5}]" ]
 sed 's/bond: stack/bond: running/' tests/data/stack-gap.yaml >"$tmp/gap-running.yaml"
 "$bin" run "$tmp/gap-running.yaml" -n 5 --threads 1 --json >"$tmp/gapr.json" 2>/dev/null
 check "the same gap in running bond: nothing hangs, 5 of 5 accepted" \
@@ -320,21 +327,31 @@ check "the same gap in running bond: nothing hangs, 5 of 5 accepted" \
 # blocks): some samples keep the clamp and are accepted, the others are
 # `hanging`; nothing else, and the same statuses and loads from three
 # starts (the verdict is LP1's feasibility, by sws_solve's fixed path).
-# clamp_starts WALL NAME: 12 samples of WALL from the starts auto,
-# slack-primal and support; true when each is accepted or hanging, some
-# of each, and the three runs agree on every status and load.
+# clamp_starts WALL NAME [BLOCK...]: 12 samples of WALL from the starts
+# auto, slack-primal and support; true when each is accepted or hanging,
+# some of each, and the three runs agree on every status and load; with
+# BLOCKs, each hanging sample of the first run names one of them (its
+# JSON's unheld.hanging).
 clamp_starts() {
+	local wall=$1 name=$2
+	shift 2
 	for s in auto slack-primal support; do
-		SLIPWALL_LP_START=$s "$bin" run "$1" -n 12 --threads 2 \
-			--samples "$tmp/$2-$s.csv" >/dev/null 2>&1
+		SLIPWALL_LP_START=$s "$bin" run "$wall" -n 12 --threads 2 --json \
+			--samples "$tmp/$name-$s.csv" >"$tmp/$name-$s.json" 2>/dev/null
 	done
-	python3 - "$tmp/$2"-auto.csv "$tmp/$2"-slack-primal.csv "$tmp/$2"-support.csv <<'PY'
-import csv, sys
-runs = [[(r["status"], r["lambda_min"]) for r in csv.DictReader(open(f))] for f in sys.argv[1:]]
+	python3 - "$tmp/$name" "$@" <<'PY'
+import csv, json, sys
+pre, blocks = sys.argv[1], set(sys.argv[2:])
+runs = [[(r["status"], r["lambda_min"]) for r in csv.DictReader(open(pre + "-" + s + ".csv"))]
+        for s in ("auto", "slack-primal", "support")]
 st = [s for s, _ in runs[0]]
+named = json.load(open(pre + "-auto.json"))["unheld"]["hanging"]
 print("# statuses:", " ".join(st))
+print("# hanging samples name:", " ".join("%s (%d)" % (u["block"], u["count"]) for u in named))
 sys.exit(not (len(st) == 12 and set(st) == {"accepted", "hanging"}
-              and all(r == runs[0] for r in runs)))
+              and all(r == runs[0] for r in runs)
+              and (not blocks or ({u["block"] for u in named} <= blocks and
+                                  sum(u["count"] for u in named) == st.count("hanging")))))
 PY
 }
 check "an opening without a lintel: 12 samples accepted or hanging (some of each), the same statuses and loads from auto, slack-primal and support" \
@@ -344,9 +361,10 @@ check "an opening without a lintel: 12 samples accepted or hanging (some of each
 # blocks half over the void, their weight beyond the contact points they
 # rest on at depth 0.45; the samples whose SLP drops the clamp that
 # holds them were `not_converged` (3 of 12 at seed 1) and are `hanging`,
-# the same statuses and loads from three starts.
-check "jamb blocks over an opening with a lintel, depth 0.45: 12 samples accepted or hanging (some of each, none not_converged), the same statuses and loads from auto, slack-primal and support" \
-	clamp_starts tests/data/opening-overhang.yaml over
+# the same statuses and loads from three starts, and each names one of
+# the jamb blocks half over the void (c6b2, c8b2, c7b5: the wall file).
+check "jamb blocks over an opening with a lintel, depth 0.45: 12 samples accepted or hanging (some of each, none not_converged), the same statuses and loads from auto, slack-primal and support, each hanging sample naming a jamb block half over the void" \
+	clamp_starts tests/data/opening-overhang.yaml over c6b2 c8b2 c7b5
 # replay_starts WALL DRAWS NAME N: replays the N samples of DRAWS on
 # WALL from the starts auto and slack-primal; true when every one is
 # `hanging` in both runs.
@@ -433,12 +451,19 @@ j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rej
 echo "# json: $j"
 check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
 	grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
-	&& [ "$j" = "4 {'no_equilibrium': [], 'unstable': [{'block': 'over', 'count': 4}]}" ]
+	&& [ "$j" = "4 {'no_equilibrium': [], 'unstable': [{'block': 'over', 'count': 4}], 'hanging': []}" ]
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1
 check "report: a row 'cannot be held (no_equilibrium) | block c13b3 in 1 sample'" \
 	grep -qx '| cannot be held (no_equilibrium) | block c13b3 in 1 sample |' "$tmp/lj-report/report.md"
+# and one for a hanging sample: tests/data/opening-overhang.yaml's first
+# three samples (seed 1), the third hanging with jamb block c6b2 (a
+# report needs an accepted sample: stack-gap.yaml has none)
+"$bin" report tests/data/opening-overhang.yaml -n 3 --seed 1 --threads 2 \
+	--out "$tmp/over-report" >/dev/null 2>&1
+check "report: a row 'lowest hanging block (hanging) | block c6b2 in 1 sample'" \
+	grep -qx '| lowest hanging block (hanging) | block c6b2 in 1 sample |' "$tmp/over-report/report.md"
 
 # The piece jump on a wall of hundreds of interfaces (docs/method.md,
 # "The SLP's answer", rule 2): below a residual of 2e-4 the joints'

@@ -9,7 +9,8 @@
 # line's threads; c on a wall without a layout says so at once; n below
 # the samples done says "30 done (5 asked)"; a run that ended with no
 # sample accepted says so instead of waiting; a run whose samples are
-# all no_equilibrium names the block that cannot be held; samples
+# all no_equilibrium names the block that cannot be held, and one whose
+# samples are all hanging the lowest block that hangs; samples
 # finished behind a slow one (walls/facade.yaml) are counted as "M more
 # done".
 #
@@ -117,6 +118,19 @@ else
 	not_ok "every sample no_equilibrium: the pane names the block that cannot be held" "$(screen c)"
 fi
 T send-keys -t t:c q
+
+# a wall whose every sample is `hanging` (tests/data/stack-gap.yaml, a
+# stack-bond wall with the middle block of its first course left out):
+# the pane names the lowest block that hangs, c2b2 over the gap, not
+# c3b2 that rests on it (docs/method.md, "Which blocks cannot be held")
+start g LANG=C LC_ALL=C -- tests/data/stack-gap.yaml
+if wait_run g 1 done 60 && wait_for g 'lowest hanging block: c2b2 \(5\)' 5 &&
+   screen_has g 'hanging 5' && ! screen_has g 'c3b2 \('; then
+	ok "every sample hanging: the pane says 'lowest hanging block: c2b2 (5)'"
+else
+	not_ok "every sample hanging: the pane names the lowest block that hangs" "$(screen g)"
+fi
+T send-keys -t t:g q
 
 # samples finished behind a slow one are shown in order, later: the
 # samples line says how many more are done (walls/facade.yaml, seed 1:

@@ -185,8 +185,8 @@ static void test_many(void)
 
 /* The no_equilibrium samples by the block each could not hold
  * (tally_unheld): most samples first, equal counts in the wall's order;
- * the unstable ones apart; a sample of another status, or without a
- * block (-1), names none. */
+ * the unstable and the hanging ones apart; a sample of another status,
+ * or without a block (-1), names none. */
 static void test_unheld(void)
 {
 	struct tally t;
@@ -230,6 +230,25 @@ static void test_unheld(void)
 	n = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b, c, B);
 	tap_ok(n == 3 && b[1] == 0 && b[2] == 1 && c[1] == 2 && c[2] == 2,
 	       "equal counts in the wall's order: block 0 before block 1");
+	/* a hanging sample's block (the lowest that hangs) in a row of
+	 * its own, the others' rows unchanged */
+	item(&it, 10, SAMPLE_HANGING, NAN, NULL, 0);
+	it.unheld = 0;
+	tally_add(&t, &it);
+	n = tally_unheld(&t, SAMPLE_HANGING, b, c, B);
+	int ne = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b + 1, c + 1, B - 1);
+	int nu = tally_unheld(&t, SAMPLE_UNSTABLE, b + 2, c + 2, B - 2);
+	tap_ok(n == 1 && b[0] == 0 && c[0] == 1 && ne == 3 && nu == 1 &&
+	       b[1] == 2 && c[1] == 3 && b[2] == 1 && c[2] == 1 &&
+	       t.rejected[SAMPLE_HANGING] == 1,
+	       "the hanging sample's block counted apart (%d: %d %ld), the "
+	       "other rows unchanged", n, b[0], c[0]);
+	int named = 0;
+	for (int u = 0; u < TALLY_NAMED; u++)
+		named += tally_unheld_text(tally_named[u]) != NULL;
+	tap_ok(named == TALLY_NAMED &&
+	       !tally_unheld_text(SAMPLE_NO_MECHANISM),
+	       "each status of tally_named has its text, another none");
 	record_free(&it);
 	tally_free(&t);
 }
