@@ -26,7 +26,8 @@ struct record {
 	long index;		/* the sample's index in the run */
 	enum sample_status status;
 	int iterations, lps;	/* SLP iterations, LPs solved */
-	/* `no_equilibrium`, `unstable` or `hanging`: the block the sample
+	/* a status of tally_named (`no_equilibrium`, `nonpositive`,
+	 * `unstable`, `hanging`): the block the sample
 	 * names (sample_result.unheld), else -1; also no padding before
 	 * the doubles */
 	int unheld;

@@ -156,9 +156,10 @@ struct sample_result {
 	int converged;
 	int lps;		/* LPs solved for this sample */
 	double vw_residual;	/* relative virtual-work residual */
-	/* `no_equilibrium` or `unstable` (sample_run, sample_pattern): the
-	 * block that most needs the least outside help (sample_unheld), or
-	 * -1, and how many blocks need some (0: not found); `hanging`
+	/* `no_equilibrium`, `unstable` or LP-max's `nonpositive`
+	 * (sample_run, sample_pattern): the block that most needs the least
+	 * outside help (sample_unheld), or -1, and how many blocks need
+	 * some (0: not found); `hanging`
 	 * (sample_run): the lowest of the blocks that hang (docs/method.md,
 	 * "Which blocks cannot be held"), and how many hang */
 	int unheld, nunheld;
@@ -253,16 +254,27 @@ enum sample_status sample_standard(struct sample_ws *ws,
 				   const struct sample_draw *d,
 				   struct sample_result *r);
 
+/* The load factors at which sample_unheld asks the blocks to stand,
+ * by the verdict that asks (docs/method.md, "Which blocks cannot be
+ * held"). */
+enum sample_unheld_load {
+	SAMPLE_UNHELD_ANY,	/* any load factor: `no_equilibrium` */
+	SAMPLE_UNHELD_AT_REST,	/* 0, no live load: `unstable` */
+	SAMPLE_UNHELD_ALONG,	/* 0 or more: LP-max's `nonpositive` */
+};
+
 /* Which blocks no contact force can hold at the draw the workspace
- * last solved, after it was `no_equilibrium` (at any load factor), or,
- * with at_rest, `unstable` (at the load factor 0: the blocks that need
- * the live load to stand) (docs/method.md, "Which blocks cannot be
- * held"): the blocks on which the least outside help that lets every
- * block stand acts, by an elastic LP-max.  Writes up to max of them
- * (indices into w->blocks), the most helped first, into blocks[];
- * returns how many there are in all (0: the draw has an equilibrium),
- * or -1 if the LP failed or was stopped. */
-int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks, int max);
+ * last solved, at the load factors `load` allows (after `no_equilibrium`
+ * at any; after `unstable` at 0: the blocks that need the live load to
+ * stand; after LP-max's `nonpositive` at 0 or more: the blocks that
+ * need a load against the live load's direction): the blocks on which
+ * the least outside help that lets every block stand acts, by an
+ * elastic LP-max.  Writes up to max of them (indices into w->blocks),
+ * the most helped first, into blocks[]; returns how many there are in
+ * all (0: the draw has an equilibrium there), or -1 if the LP failed or
+ * was stopped. */
+int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
+		  int *blocks, int max);
 
 /* What the LPs of a workspace cost, by role, since it was made (its
  * canonical sample included): the six LP roles of docs/method.md (LP-max,

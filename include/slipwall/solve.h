@@ -82,7 +82,8 @@ struct solve_result {
 	int bounds_derived;		/* big-M from LPs, not a fallback */
 	double gap;			/* (lambda - lower_bound) / lambda */
 	double seconds;
-	/* `no_equilibrium`: the blocks that cannot be held (sample_unheld),
+	/* `no_equilibrium`, `unstable`, `nonpositive`: the blocks that
+	 * cannot be held (sample_unheld, at the load factors each allows),
 	 * the first SOLVE_UNHELD of them, and how many in all (0 when not
 	 * computed or none) */
 	int nunheld;

@@ -60,8 +60,9 @@ void tally_add(struct tally *t, const struct record *it);
  * the tally has not seen it: one hash of the string. */
 int tally_find(const struct tally *t, const char *joint);
 /* The rejections whose samples name a block (record.unheld), in the
- * order the summaries show them: no_equilibrium, unstable, hanging. */
-#define TALLY_NAMED 3
+ * order the summaries show them: no_equilibrium, nonpositive,
+ * unstable, hanging. */
+#define TALLY_NAMED 4
 extern const enum sample_status tally_named[TALLY_NAMED];
 /* The blocks that the samples of status st (one of tally_named) named
  * (record.unheld), most samples first (equal counts: in the wall's
@@ -71,9 +72,11 @@ extern const enum sample_status tally_named[TALLY_NAMED];
 int tally_unheld(const struct tally *t, enum sample_status st, int *blocks,
 		 long *counts, int max);
 /* What the blocks of tally_unheld are, for people: "cannot be held"
- * (no_equilibrium: at any load), "stands only under load" (unstable:
- * they need the live load), "lowest hanging block" (hanging: where the
- * clamp the SLP lost begins), NULL for another status. */
+ * (no_equilibrium: at any load), "falls under any load" (nonpositive:
+ * they stand only under a load against its direction), "stands only
+ * under load" (unstable: they need the live load), "lowest hanging
+ * block" (hanging: where the clamp the SLP lost begins), NULL for
+ * another status. */
 const char *tally_unheld_text(enum sample_status st);
 /* The mechanisms sorted by count, most frequent first: fills idx with up
  * to max indices into t->mech; returns how many. */

@@ -314,9 +314,8 @@ static void print_families(const struct wall *w, const struct tally *t)
 	family_set_free(&fs);
 }
 
-/* Under the `no_equilibrium`, `unstable` and `hanging` counts: the
- * blocks their samples named (tally_unheld), the three named most
- * often. */
+/* Under the counts of tally_named's statuses: the blocks their
+ * samples named (tally_unheld), the three named most often. */
 static void print_unheld(const struct wall *w, const struct tally *t,
 			 enum sample_status st)
 {
@@ -546,8 +545,8 @@ static void print_json(const struct run_info *r, const struct tally *t)
 	json_key(&j, "stopped");
 	json_string(&j, run_stop_name(r->stop));
 	tally_json(t, &j);
-	/* the blocks the `no_equilibrium`, `unstable` and `hanging` samples
-	 * named (docs/run.md), most samples first */
+	/* the blocks the samples of tally_named's statuses named
+	 * (docs/run.md), most samples first */
 	json_key(&j, "unheld");
 	json_object_begin(&j);
 	int *ub = sw_xmalloc(sizeof *ub * ((size_t)t->nblocks + 1));

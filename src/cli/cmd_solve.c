@@ -99,10 +99,11 @@ static void print_json(const struct wall *w, const struct solve_result *r,
 	}
 	json_key(&j, "seconds");
 	json_double(&j, r->seconds);
-	/* no_equilibrium: the blocks the least outside help acts on
-	 * (docs/run.md, "solve --json"), the first SOLVE_UNHELD of them */
+	/* no_equilibrium, unstable, nonpositive: the blocks the least
+	 * outside help acts on (docs/run.md, "solve --json"), the first
+	 * SOLVE_UNHELD of them */
 	json_key(&j, "unheld_blocks");
-	if (r->status != SAMPLE_NO_EQUILIBRIUM || !r->nunheld) {
+	if (!r->nunheld) {
 		json_null(&j);
 	} else {
 		json_array_begin(&j);

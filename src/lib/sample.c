@@ -34,9 +34,9 @@
  *   sample_slp.c     step 2b: the SLP (plain, Anderson, piece path)
  *   sample_onset.c   steps 2a, 3 and 5: LP-max, standing, the mechanism,
  *                    onset, LP-min, virtual work, the export
- *   sample_unheld.c  after `no_equilibrium` or `unstable`: which blocks
- *                    cannot be held (an elastic LP-max; on no sample's
- *                    path)
+ *   sample_unheld.c  after `no_equilibrium`, `unstable` or LP-max's
+ *                    `nonpositive`: which blocks cannot be held (an
+ *                    elastic LP-max; on no sample's path)
  */
 #include <math.h>
 #include <stdlib.h>
@@ -555,13 +555,27 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->lambda_max *= S;
 	r->lambda_min *= S;
 	r->status = st;
-	/* which blocks cannot be held (at any load, or without the live
-	 * load): one more LP, on these rejected samples only (docs/
-	 * method.md, "Which blocks cannot be held") */
+	/* which blocks cannot be held (at any load, without the live load,
+	 * or at any load along it): one more LP, on these rejected samples
+	 * only (docs/method.md, "Which blocks cannot be held").  A
+	 * `nonpositive` is LP-max's (lambda_max not reached, NaN) or the
+	 * SLP's; after the SLP's, LP-max held every block at a positive
+	 * load, so no block needs help and the LP is not solved. */
 	r->unheld = -1;
 	r->nunheld = 0;
-	if (st == SAMPLE_NO_EQUILIBRIUM || st == SAMPLE_UNSTABLE) {
-		int b, n = sample_unheld(ws, st == SAMPLE_UNSTABLE, &b, 1);
+	enum sample_unheld_load load = SAMPLE_UNHELD_ANY;
+	int ask = 1;
+	switch (st) {
+	case SAMPLE_NO_EQUILIBRIUM: load = SAMPLE_UNHELD_ANY; break;
+	case SAMPLE_UNSTABLE: load = SAMPLE_UNHELD_AT_REST; break;
+	case SAMPLE_NONPOSITIVE:
+		load = SAMPLE_UNHELD_ALONG;
+		ask = isnan(r->lambda_max);
+		break;
+	default: ask = 0; break;
+	}
+	if (ask) {
+		int b, n = sample_unheld(ws, load, &b, 1);
 		if (n > 0) {
 			r->unheld = b;
 			r->nunheld = n;

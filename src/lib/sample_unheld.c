@@ -1,8 +1,8 @@
 /*
  * sample_unheld.c - which blocks no contact force can hold, when LP-max
- * says that none holds them all, or the standing check that none holds
- * them without the live load (docs/method.md, "Which blocks cannot be
- * held").
+ * says that none holds them all, or none at a load in the live load's
+ * direction, or the standing check that none holds them without the
+ * live load (docs/method.md, "Which blocks cannot be held").
  *
  * LP-max is infeasible (`no_equilibrium`) when no stress field inside
  * the friction cones of the contact points balances the dead load at
@@ -17,7 +17,10 @@
  *
  * always feasible (alpha = 0, lambda = 0, s = -f_D).  After the standing
  * check's `unstable`, lambda is held at 0 instead: the blocks named then
- * need the live load to stand.  Its optimum is
+ * need the live load to stand.  After LP-max's `nonpositive` (its
+ * largest load factor is at or below 0), lambda >= 0: the blocks named
+ * then stand only under a load against the live load's direction, and
+ * fall under any load along it.  Its optimum is
  * the least help, in the operator's scaled units (forces over the mean
  * block weight, moments over that weight times the mean block size:
  * statics.h), that lets every block stand; the blocks whose rows take
@@ -60,7 +63,8 @@ static int by_help(const void *a, const void *b)
 	return (x->block > y->block) - (x->block < y->block);
 }
 
-int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks, int max)
+int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
+		  int *blocks, int max)
 {
 	const struct wall *w = ws->w;
 	int m = ws->m, R = ws->R;
@@ -83,10 +87,9 @@ int sample_unheld(struct sample_ws *ws, int at_rest, int *blocks, int max)
 			}
 	int nl = sws_live_load(ws);
 	lp_set_col(P, ACOL_LAMBDA(ws), nl, ws->ind, ws->val);
-	if (at_rest)
-		lp_set_col_bounds(P, ACOL_LAMBDA(ws), 0, 0);
-	else
-		lp_set_col_bounds(P, ACOL_LAMBDA(ws), -HUGE_VAL, HUGE_VAL);
+	lp_set_col_bounds(P, ACOL_LAMBDA(ws),
+			  load == SAMPLE_UNHELD_ANY ? -HUGE_VAL : 0,
+			  load == SAMPLE_UNHELD_AT_REST ? 0 : HUGE_VAL);
 	/* the help forces: columns 4m + 1 + 2i (s+) and + 1 (s-) */
 	for (int i = 0; i < R; i++)
 		for (int s = 0; s < 2; s++) {

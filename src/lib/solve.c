@@ -66,7 +66,8 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 			       "the wall carries no positive live load: its "
 			       "largest load factor is %.6g, so it collapses "
 			       "under any load in this direction (zero friction "
-			       "does this)", lam_max);
+			       "does this, or a slope steeper than the "
+			       "friction)", lam_max);
 	case SAMPLE_HANGING:
 		return sw_fail(err, SW_EANALYSIS,
 			       "the sequential LP lost the clamp that holds "
@@ -84,13 +85,19 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 	}
 }
 
-/* After `no_equilibrium`: the blocks that cannot be held into r, and
- * their names after err's message (docs/method.md, "Which blocks cannot
- * be held"). */
+/* After `no_equilibrium`, `unstable` or `nonpositive` (the standard
+ * solution's are LP-max's and the standing check's): the blocks that
+ * cannot be held into r, and their names after err's message
+ * (docs/method.md, "Which blocks cannot be held"). */
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
-			struct solve_result *r, char *err)
+			enum sample_status s, struct solve_result *r,
+			char *err)
 {
-	int n = sample_unheld(ws, 0, r->unheld, SOLVE_UNHELD);
+	enum sample_unheld_load load =
+		s == SAMPLE_UNSTABLE ? SAMPLE_UNHELD_AT_REST :
+		s == SAMPLE_NONPOSITIVE ? SAMPLE_UNHELD_ALONG :
+		SAMPLE_UNHELD_ANY;
+	int n = sample_unheld(ws, load, r->unheld, SOLVE_UNHELD);
 	if (n <= 0)
 		return;
 	r->nunheld = n;
@@ -98,7 +105,12 @@ static void name_unheld(const struct wall *w, struct sample_ws *ws,
 	const int shown = 3;
 	len += (size_t)snprintf(err + len, SW_ERRLEN - len,
 				"; the least outside help that lets every "
-				"block stand acts on block%s ", n > 1 ? "s" : "");
+				"block stand%s acts on block%s ",
+				load == SAMPLE_UNHELD_AT_REST ?
+				" without the live load" :
+				load == SAMPLE_UNHELD_ALONG ?
+				" under a load in this direction" : "",
+				n > 1 ? "s" : "");
 	for (int i = 0; i < n && i < shown && len < SW_ERRLEN; i++)
 		len += (size_t)snprintf(err + len, SW_ERRLEN - len, "%s%s",
 					i == 0 ? "" : i + 1 == n ? " and " : ", ",
@@ -162,8 +174,9 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
 		ret = failure(s, r->mech.lambda_lpmax, err);
-		if (s == SAMPLE_NO_EQUILIBRIUM)
-			name_unheld(w, ws, r, err);
+		if (s == SAMPLE_NO_EQUILIBRIUM || s == SAMPLE_UNSTABLE ||
+		    s == SAMPLE_NONPOSITIVE)
+			name_unheld(w, ws, s, r, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;

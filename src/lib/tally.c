@@ -119,7 +119,8 @@ int tally_find(const struct tally *t, const char *joint)
 }
 
 const enum sample_status tally_named[TALLY_NAMED] = {
-	SAMPLE_NO_EQUILIBRIUM, SAMPLE_UNSTABLE, SAMPLE_HANGING,
+	SAMPLE_NO_EQUILIBRIUM, SAMPLE_NONPOSITIVE, SAMPLE_UNSTABLE,
+	SAMPLE_HANGING,
 };
 
 /* The row of t->unheld that a status counts in, or -1. */
@@ -179,6 +180,7 @@ static int by_count(const void *a, const void *b)
 const char *tally_unheld_text(enum sample_status st)
 {
 	return st == SAMPLE_NO_EQUILIBRIUM ? "cannot be held" :
+	       st == SAMPLE_NONPOSITIVE ? "falls under any load" :
 	       st == SAMPLE_UNSTABLE ? "stands only under load" :
 	       st == SAMPLE_HANGING ? "lowest hanging block" : NULL;
 }

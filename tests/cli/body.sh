@@ -451,7 +451,22 @@ j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rej
 echo "# json: $j"
 check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
 	grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
-	&& [ "$j" = "4 {'no_equilibrium': [], 'unstable': [{'block': 'over', 'count': 4}], 'hanging': []}" ]
+	&& [ "$j" = "4 {'no_equilibrium': [], 'nonpositive': [], 'unstable': [{'block': 'over', 'count': 4}], 'hanging': []}" ]
+# and `solve` names it too, with what it needs
+"$bin" solve "$tmp/held-up.yaml" --method standard --json >"$tmp/held-up-solve.json" 2>/dev/null
+check "solve on the block held up by its own load: unstable, 'over' named, 'without the live load'" \
+	python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not (d["status"] == "unstable" and d["unheld_blocks"] == ["over"] and d["error"].endswith("stand without the live load acts on block over")))' "$tmp/held-up-solve.json"
+# A block on a slope steeper than its friction beside one on the flat
+# (tests/data/slope.yaml): LP-max's largest load factor is below 0 on
+# every sample, and `run` names the block that falls under any load in
+# the load's direction, never the one that stands
+"$bin" run tests/data/slope.yaml -n 4 --threads 2 >"$tmp/slope.txt" 2>/dev/null
+"$bin" run tests/data/slope.yaml -n 4 --threads 2 --json >"$tmp/slope.json" 2>/dev/null
+j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["nonpositive"], d["unheld"]["nonpositive"])' "$tmp/slope.json")
+echo "# json: $j"
+check "a block on a slope steeper than its friction: 4 nonpositive, 'falls under any load: block slope (4)' in text and JSON" \
+	grep -qx '    falls under any load: block slope (4)' "$tmp/slope.txt" \
+	&& [ "$j" = "4 [{'block': 'slope', 'count': 4}]" ]
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1

@@ -98,6 +98,17 @@ for v in "into unbounded unbounded.*support" "ice nonpositive no.positive.live.l
 	check "solve --json, $1: exit 1 ($rc), JSON with status $2, its error as on stderr, no load" \
 		eval "[ $rc = 1 ] && verdict_json $tmp/$1.json $tmp/$1.err $2 '$3'"
 done
+# the standard solution's nonpositive names the block that falls under
+# any load in the load's direction (tests/data/slope.yaml: LP-max's
+# closed form (0.6 - 0.8) / 1.48), never the one that stands; on ice
+# every block stands at load 0, and none is named
+"$bin" solve tests/data/slope.yaml --method standard --json >"$tmp/slope.json" 2>"$tmp/slope.err"
+rc=$?
+check "solve --json, a block on a slope steeper than its friction: exit 1 ($rc), nonpositive at -0.135135, block slope named in the error and unheld_blocks" \
+	eval "[ $rc = 1 ] && verdict_json $tmp/slope.json $tmp/slope.err nonpositive 'largest load factor is -0[.]135135,.*stand under a load in this direction acts on block slope\$'" \
+	"&& python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not (d[\"unheld_blocks\"] == [\"slope\"] and d[\"unheld_count\"] == 1))' $tmp/slope.json"
+check "solve --json on ice: no block named (unheld_blocks null, unheld_count 0)" \
+	python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(not (d["unheld_blocks"] is None and d["unheld_count"] == 0))' "$tmp/ice.json"
 # gilbert on a wall whose blocks hang on friction (tests/data/stack-gap.yaml):
 # the sequential LP loses the clamp, status hanging, no load (the last
 # LP1's 0.4545, nine times the standard value, was printed before)

@@ -185,8 +185,8 @@ static void test_many(void)
 
 /* The no_equilibrium samples by the block each could not hold
  * (tally_unheld): most samples first, equal counts in the wall's order;
- * the unstable and the hanging ones apart; a sample of another status,
- * or without a block (-1), names none. */
+ * the unstable, the hanging and the nonpositive ones apart; a sample of
+ * another status, or without a block (-1), names none. */
 static void test_unheld(void)
 {
 	struct tally t;
@@ -243,6 +243,19 @@ static void test_unheld(void)
 	       t.rejected[SAMPLE_HANGING] == 1,
 	       "the hanging sample's block counted apart (%d: %d %ld), the "
 	       "other rows unchanged", n, b[0], c[0]);
+	/* and a nonpositive sample's (the block that falls under any load
+	 * along the live load) likewise */
+	item(&it, 11, SAMPLE_NONPOSITIVE, NAN, NULL, 0);
+	it.unheld = 2;
+	tally_add(&t, &it);
+	n = tally_unheld(&t, SAMPLE_NONPOSITIVE, b, c, B);
+	int nh = tally_unheld(&t, SAMPLE_HANGING, b + 1, c + 1, B - 1);
+	ne = tally_unheld(&t, SAMPLE_NO_EQUILIBRIUM, b + 2, c + 2, B - 2);
+	tap_ok(n == 1 && b[0] == 2 && c[0] == 1 && nh == 1 && b[1] == 0 &&
+	       ne == 3 && b[2] == 2 && c[2] == 3 &&
+	       t.rejected[SAMPLE_NONPOSITIVE] == 1,
+	       "the nonpositive sample's block counted apart (%d: %d %ld), "
+	       "the other rows unchanged", n, b[0], c[0]);
 	int named = 0;
 	for (int u = 0; u < TALLY_NAMED; u++)
 		named += tally_unheld_text(tally_named[u]) != NULL;
