@@ -436,9 +436,10 @@ j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rej
 bed=$(sed -n 2p "$tmp/lj-bed-out.csv" | cut -d, -f2)
 other=$(sed -n 2p "$tmp/lj-other-out.csv" | cut -d, -f2)
 echo "# json: $j; c13b3's bed joint whole: $bed; the first joint whole: $other"
-check "a jamb that overhangs under a lintel: no_equilibrium names block c13b3, in text and JSON; its bed joint given whole contact restores equilibrium, another block's does not" \
-	[ "$made" = 0 ] && grep -qx '    cannot be held: block c13b3 (1)' "$tmp/lj.txt" \
+[ "$made" = 0 ] && grep -qx '    cannot be held: block c13b3 (1)' "$tmp/lj.txt" \
 	&& [ "$j" = "1 c13b3:1 0" ] && [ "$bed" = accepted ] && [ "$other" = no_equilibrium ]
+check "a jamb that overhangs under a lintel: no_equilibrium names block c13b3, in text and JSON; its bed joint given whole contact restores equilibrium, another block's does not" \
+	test $? = 0
 # A block beyond its pier held up by the live load itself (tests/data/
 # beyond-pier.yaml with an upward load on its far end): an equilibrium
 # at some load, none at rest, so every sample is `unstable`, and `run`
@@ -449,9 +450,10 @@ sed 's/^  - point: .*/  - point: {at: [0.7, 0.3], direction: [0, 1], magnitude: 
 "$bin" run "$tmp/held-up.yaml" -n 4 --threads 2 --json >"$tmp/held-up.json" 2>/dev/null
 j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["unstable"], d["unheld"])' "$tmp/held-up.json")
 echo "# json: $j"
-check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
-	grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
+grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
 	&& [ "$j" = "4 {'no_equilibrium': [], 'nonpositive': [], 'unstable': [{'block': 'over', 'count': 4}], 'hanging': []}" ]
+check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
+	test $? = 0
 # and `solve` names it too, with what it needs
 "$bin" solve "$tmp/held-up.yaml" --method standard --json >"$tmp/held-up-solve.json" 2>/dev/null
 check "solve on the block held up by its own load: unstable, 'over' named, 'without the live load'" \
@@ -464,9 +466,10 @@ check "solve on the block held up by its own load: unstable, 'over' named, 'with
 "$bin" run tests/data/slope.yaml -n 4 --threads 2 --json >"$tmp/slope.json" 2>/dev/null
 j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["nonpositive"], d["unheld"]["nonpositive"])' "$tmp/slope.json")
 echo "# json: $j"
-check "a block on a slope steeper than its friction: 4 nonpositive, 'falls under any load: block slope (4)' in text and JSON" \
-	grep -qx '    falls under any load: block slope (4)' "$tmp/slope.txt" \
+grep -qx '    falls under any load: block slope (4)' "$tmp/slope.txt" \
 	&& [ "$j" = "4 [{'block': 'slope', 'count': 4}]" ]
+check "a block on a slope steeper than its friction: 4 nonpositive, 'falls under any load: block slope (4)' in text and JSON" \
+	test $? = 0
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1
