@@ -278,7 +278,10 @@ static void print_table(const struct model *md, const struct stats_summary *ts,
 	printf("%-24s %-26.6g %.6g\n", "p95", ms->p95, ts->p95);
 	printf("%-24s %-26.6g %.6g\n", "max", ms->max, ts->max);
 	printf("%-24s %-26.6g %.6g\n", "mean", ms->mean, ts->mean);
-	printf("%-24s %-26.6g %.6g\n", "std", ms->std, ts->std);
+	/* the sample standard deviation of one value: "-" */
+	snprintf(a, sizeof a, isfinite(ms->std) ? "%.6g" : "-", ms->std);
+	snprintf(b, sizeof b, isfinite(ts->std) ? "%.6g" : "-", ts->std);
+	printf("%-24s %-26s %s\n", "std", a, b);
 	if (!ms->has_ci || !ts->has_ci)
 		printf("(no interval: needs at least 90 values)\n");
 }

@@ -376,7 +376,13 @@ static void print_text(const struct run_info *r, const struct tally *t)
 		printf("%-12s min %.6g  p05 %.6g  p50 %.6g  p95 %.6g  "
 		       "max %.6g\n", *t->q.unit ? "load" : "factor", s.min,
 		       s.p05, s.p50, s.p95, s.max);
-		printf("             mean %.6g  std %.6g\n", s.mean, s.std);
+		/* the sample standard deviation needs two values */
+		if (isfinite(s.std))
+			printf("             mean %.6g  std %.6g\n", s.mean,
+			       s.std);
+		else
+			printf("             mean %.6g  std - (one value)\n",
+			       s.mean);
 		printf("             in %s\n", t->q.what);
 		if (s.has_ci && s.ci_conf != 0.99)
 			printf("p05          %.6g, 99 %% interval [%.6g, %.6g] "

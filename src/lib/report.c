@@ -323,12 +323,18 @@ static void draw_frequencies(struct fig *f, const struct rctx *c)
 		 "Freedman-Diaconis width of the %s).", c->bw_class, c->unit,
 		 c->blo, c->unit, c->nb, c->m >= 2 ? "tests" : "model");
 	plot_caption(f, y, s);
-	snprintf(s, sizeof s, "Model: mean %.5g%s, std %.4g%s.", c->ms.mean,
-		 c->unit, c->ms.std, c->unit);
+	/* a standard deviation of one value is shown as "-" */
+	char sm[32] = "-", st[32] = "-";
+	if (isfinite(c->ms.std))
+		snprintf(sm, sizeof sm, "%.4g%s", c->ms.std, c->unit);
+	if (isfinite(c->ts.std))
+		snprintf(st, sizeof st, "%.4g%s", c->ts.std, c->unit);
+	snprintf(s, sizeof s, "Model: mean %.5g%s, std %s.", c->ms.mean,
+		 c->unit, sm);
 	if (c->m)
 		snprintf(s + strlen(s), sizeof s - strlen(s),
-			 "  Tests: mean %.5g%s, std %.4g%s.", c->ts.mean,
-			 c->unit, c->ts.std, c->unit);
+			 "  Tests: mean %.5g%s, std %s.", c->ts.mean, c->unit,
+			 st);
 	plot_caption(f, y + 13, s);
 }
 

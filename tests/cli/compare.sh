@@ -88,6 +88,13 @@ check "model = 5 accepted loads of the file, tests = 4 loads of the file" \
 	python3 -c 'import json,sys; d=json.load(open(sys.argv[1]))
 sys.exit(not (d["model"]["accepted"]==5 and d["tests"]["n"]==4 and d["tests"]["lambda"]["p50"]==3 and d["tests"]["p05_ci99"] is None))' "$tmp/ks.json"
 
+# one test load: its standard deviation is "-", never "nan"
+printf '3\n' >"$tmp/one-test.txt"
+"$bin" compare $one --samples "$tmp/model.csv" --tests "$tmp/one-test.txt" \
+	>"$tmp/one-test.out" 2>/dev/null
+grep -Eq '^std +[0-9.]+ +-$' "$tmp/one-test.out" && ! grep -qi nan "$tmp/one-test.out"
+check "compare with one test load: its std is '-' and no 'nan' is printed" test $? = 0
+
 # the same loads from the wall's tests: key
 { cat $one; printf 'tests:\n  loads: [2, 3, 3, 4]\n'; } >"$tmp/withtests.yaml"
 "$bin" compare "$tmp/withtests.yaml" --samples "$tmp/model.csv" --json \

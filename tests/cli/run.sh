@@ -170,6 +170,10 @@ check "--positions replays a samples file: the same file again" \
 	>/dev/null 2>&1
 check "--positions with -n 30: the first 30 rows" \
 	cmp -s "$tmp/r30.csv" <(head -n 31 "$tmp/t1.csv")
+# one accepted sample: its standard deviation is "-", never "nan"
+"$bin" run walls/single-block.yaml -n 1 >"$tmp/one.out" 2>/dev/null
+grep -Eq '^ +mean [0-9.]+  std - \(one value\)$' "$tmp/one.out" && ! grep -qi nan "$tmp/one.out"
+check "run with one accepted sample: 'std - (one value)' and no 'nan' in the summary" test $? = 0
 "$bin" run $demo --positions "$tmp/t1.csv" >"$tmp/out" 2>"$tmp/err"
 rc=$?
 [ $rc -eq 2 ] && grep -q "t1.csv:1:[0-9]*: .*interfaces" "$tmp/err"
