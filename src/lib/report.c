@@ -346,6 +346,18 @@ static double normal_pdf(double x, double mu, double sd)
 	return exp(-0.5 * z * z) / (sd * sqrt(2 * M_PI));
 }
 
+/* A legend's "WHO, normal (mean, sd)"; with no spread (one value, or
+ * every value equal) no normal is drawn, and the legend says why. */
+static void normal_label(char *buf, size_t len, const char *who, double mu,
+			 double sd)
+{
+	if (sd > 0)
+		snprintf(buf, len, "%s, normal (%.4g, %.3g)", who, mu, sd);
+	else
+		snprintf(buf, len, "%s, no normal (%s)", who,
+			 isfinite(sd) ? "every value equal" : "one value");
+}
+
 static void density_grid(const struct rctx *c, double x0, double x1, double *g,
 			 double *kde, double *nm, double *nt)
 {
@@ -406,11 +418,9 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 	char l1[96], l2[96];
 	snprintf(l1, sizeof l1, "model, Gaussian KDE (h = %.3g)", c->bw);
 	if (tests)
-		snprintf(l2, sizeof l2, "tests, normal (%.4g, %.3g)", c->tmu,
-			 c->tsd);
+		normal_label(l2, sizeof l2, "tests", c->tmu, c->tsd);
 	else
-		snprintf(l2, sizeof l2, "model, normal (%.4g, %.3g)", c->mmu,
-			 c->msd);
+		normal_label(l2, sizeof l2, "model", c->mmu, c->msd);
 	struct lg_item it[2] = {{LG_LINE, C_MODEL, l1},
 				{tests ? LG_LINE : LG_DASH,
 				 tests ? C_TESTS : C_MODEL, l2}};
@@ -460,8 +470,8 @@ static void draw_densities(struct fig *f, const struct rctx *c)
 		 k, tests ? " (the number of tests)" : "");
 	plot_axes(f, &b, c->axis, "probability per class", title, 0);
 	char l3[96], l4[96];
-	snprintf(l3, sizeof l3, "model, normal (%.4g, %.3g)", c->mmu, c->msd);
-	snprintf(l4, sizeof l4, "tests, normal (%.4g, %.3g)", c->tmu, c->tsd);
+	normal_label(l3, sizeof l3, "model", c->mmu, c->msd);
+	normal_label(l4, sizeof l4, "tests", c->tmu, c->tsd);
 	struct lg_item it2[2] = {{LG_BAR, C_MODEL, l3}, {LG_BAR, C_TESTS, l4}};
 	plot_legend(f, &b, it2, tests ? 2 : 1, c->ms.p50 > (c->x0 + c->x1) / 2);
 	free(pm);

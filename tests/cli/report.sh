@@ -118,4 +118,12 @@ timeout 120 "$bin" report "$tmp/slab.yaml" -n 300 --out "$tmp/slab" >/dev/null 2
 check "equal loads (a sliding slab): the report is written" \
 	bash -c "test -s '$tmp/slab/report.md' && test -s '$tmp/slab/convergence.png'"
 
+# One accepted sample: no spread, so no normal is drawn and no figure or
+# table prints "nan" (the legends once said "normal (113.8, nan)")
+"$bin" report walls/single-block.yaml -n 1 --out "$tmp/one" >/dev/null 2>&1
+grep -q ">model, no normal (one value)<" "$tmp/one/densities.svg" \
+	&& ! grep -qiw nan "$tmp/one"/*.svg "$tmp/one/report.md"
+check "one accepted sample: 'no normal (one value)' in the densities' legend, no 'nan' in any figure or the report" \
+	test $? = 0
+
 tap_end
