@@ -391,9 +391,15 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 			       p->at[1]);
 		else
 			printf("%-10.4g", p->value);
-		printf(" %-9ld %-11.5g %-25s %-11.5g %-11.5g %-10d %d\n",
-		       p->accepted, p->s.p05, ci, p->s.p50, p->s.p95,
-		       p->mechanisms, p->families);
+		/* a value with no accepted sample has no load: "-" */
+		char q[3][32];
+		const double v[3] = { p->s.p05, p->s.p50, p->s.p95 };
+		for (int i = 0; i < 3; i++)
+			snprintf(q[i], sizeof q[i], isfinite(v[i]) ? "%.5g" : "-",
+				 v[i]);
+		printf(" %-9ld %-11s %-25s %-11s %-11s %-10d %d\n",
+		       p->accepted, q[0], ci, q[1], q[2], p->mechanisms,
+		       p->families);
 	}
 }
 

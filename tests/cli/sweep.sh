@@ -168,4 +168,13 @@ else
 		"$(cat "$tmp/one.csv")"
 fi
 
+# a value with no accepted sample (friction 0: nonpositive) has no load:
+# the table shows "-", never "nan"; the CSV keeps nan (docs/run.md)
+"$bin" sweep $block --friction 0:0.6:0.3 -n 2 --csv "$tmp/zero.csv" \
+	>"$tmp/zero.out" 2>/dev/null
+grep -Eq '^0 +0 +- +- \(n < 90\) +- +- +0 +0$' "$tmp/zero.out" \
+	&& ! grep -qiw nan "$tmp/zero.out" && grep -q '^0,2,0,nan,' "$tmp/zero.csv"
+check "a value with no accepted sample: '-' for p05, p50 and p95 in the table, nan in the CSV" \
+	test $? = 0
+
 tap_end
