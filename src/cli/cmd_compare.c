@@ -261,6 +261,16 @@ done:
 
 /* ---- output ------------------------------------------------------------- */
 
+/* One row of the table: the model's value and the tests', "-" where a
+ * side has none (no accepted sample; a standard deviation of one value). */
+static void print_row(const char *name, double model, double tests)
+{
+	char a[32], b[32];
+	snprintf(a, sizeof a, isfinite(model) ? "%.6g" : "-", model);
+	snprintf(b, sizeof b, isfinite(tests) ? "%.6g" : "-", tests);
+	printf("%-24s %-26s %s\n", name, a, b);
+}
+
 static void print_table(const struct model *md, const struct stats_summary *ts,
 			long ntests)
 {
@@ -269,19 +279,16 @@ static void print_table(const struct model *md, const struct stats_summary *ts,
 	printf("%-24s %-26s %s\n", "", "model", "tests");
 	snprintf(a, sizeof a, "%ld", md->accepted);
 	printf("%-24s %-26s %ld\n", "values", a, ntests);
-	printf("%-24s %-26.6g %.6g\n", "min", ms->min, ts->min);
-	printf("%-24s %-26.6g %.6g\n", "p05 (characteristic)", ms->p05, ts->p05);
+	print_row("min", ms->min, ts->min);
+	print_row("p05 (characteristic)", ms->p05, ts->p05);
 	compare_fmt_ci(a, sizeof a, ms);
 	compare_fmt_ci(b, sizeof b, ts);
 	printf("%-24s %-26s %s\n", "  99 % interval", a, b);
-	printf("%-24s %-26.6g %.6g\n", "p50", ms->p50, ts->p50);
-	printf("%-24s %-26.6g %.6g\n", "p95", ms->p95, ts->p95);
-	printf("%-24s %-26.6g %.6g\n", "max", ms->max, ts->max);
-	printf("%-24s %-26.6g %.6g\n", "mean", ms->mean, ts->mean);
-	/* the sample standard deviation of one value: "-" */
-	snprintf(a, sizeof a, isfinite(ms->std) ? "%.6g" : "-", ms->std);
-	snprintf(b, sizeof b, isfinite(ts->std) ? "%.6g" : "-", ts->std);
-	printf("%-24s %-26s %s\n", "std", a, b);
+	print_row("p50", ms->p50, ts->p50);
+	print_row("p95", ms->p95, ts->p95);
+	print_row("max", ms->max, ts->max);
+	print_row("mean", ms->mean, ts->mean);
+	print_row("std", ms->std, ts->std);
 	if (!ms->has_ci || !ts->has_ci)
 		printf("(no interval: needs at least 90 values)\n");
 }

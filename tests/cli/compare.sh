@@ -94,6 +94,12 @@ printf '3\n' >"$tmp/one-test.txt"
 	>"$tmp/one-test.out" 2>/dev/null
 grep -Eq '^std +[0-9.]+ +-$' "$tmp/one-test.out" && ! grep -qi nan "$tmp/one-test.out"
 check "compare with one test load: its std is '-' and no 'nan' is printed" test $? = 0
+# no accepted model sample (friction 0): the model's column is "-"
+printf '100\n120\n' >"$tmp/two-tests.txt"
+"$bin" compare $one --friction 0 -n 3 --tests "$tmp/two-tests.txt" \
+	>"$tmp/none.out" 2>/dev/null
+grep -Eq '^p05 \(characteristic\) +- +101$' "$tmp/none.out" && ! grep -qiw nan "$tmp/none.out"
+check "compare with no accepted model sample: '-' in the model's column, no 'nan'" test $? = 0
 
 # the same loads from the wall's tests: key
 { cat $one; printf 'tests:\n  loads: [2, 3, 3, 4]\n'; } >"$tmp/withtests.yaml"
