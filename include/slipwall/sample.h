@@ -263,6 +263,12 @@ enum sample_unheld_load {
 	SAMPLE_UNHELD_ALONG,	/* 0 or more: LP-max's `nonpositive` */
 };
 
+/* Whether the verdict s asks which blocks cannot be held, and if so at
+ * which load factors (into *load): `no_equilibrium` at any, `unstable`
+ * at 0, `nonpositive` at 0 or more; every other verdict asks nothing
+ * (returns 0). */
+int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load);
+
 /* Which blocks no contact force can hold at the draw the workspace
  * last solved, at the load factors `load` allows (after `no_equilibrium`
  * at any; after `unstable` at 0: the blocks that need the live load to

@@ -563,18 +563,9 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	 * load, so no block needs help and the LP is not solved. */
 	r->unheld = -1;
 	r->nunheld = 0;
-	enum sample_unheld_load load = SAMPLE_UNHELD_ANY;
-	int ask = 1;
-	switch (st) {
-	case SAMPLE_NO_EQUILIBRIUM: load = SAMPLE_UNHELD_ANY; break;
-	case SAMPLE_UNSTABLE: load = SAMPLE_UNHELD_AT_REST; break;
-	case SAMPLE_NONPOSITIVE:
-		load = SAMPLE_UNHELD_ALONG;
-		ask = isnan(r->lambda_max);
-		break;
-	default: ask = 0; break;
-	}
-	if (ask) {
+	enum sample_unheld_load load;
+	if (sample_unheld_asks(st, &load) &&
+	    (st != SAMPLE_NONPOSITIVE || isnan(r->lambda_max))) {
 		int b, n = sample_unheld(ws, load, &b, 1);
 		if (n > 0) {
 			r->unheld = b;

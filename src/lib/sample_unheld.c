@@ -63,6 +63,16 @@ static int by_help(const void *a, const void *b)
 	return (x->block > y->block) - (x->block < y->block);
 }
 
+int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load)
+{
+	switch (s) {
+	case SAMPLE_NO_EQUILIBRIUM: *load = SAMPLE_UNHELD_ANY; return 1;
+	case SAMPLE_UNSTABLE: *load = SAMPLE_UNHELD_AT_REST; return 1;
+	case SAMPLE_NONPOSITIVE: *load = SAMPLE_UNHELD_ALONG; return 1;
+	default: return 0;
+	}
+}
+
 int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 		  int *blocks, int max)
 {

@@ -86,17 +86,16 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 }
 
 /* After `no_equilibrium`, `unstable` or `nonpositive` (the standard
- * solution's are LP-max's and the standing check's): the blocks that
- * cannot be held into r, and their names after err's message
- * (docs/method.md, "Which blocks cannot be held"). */
+ * solution's are LP-max's and the standing check's; any other verdict
+ * names none): the blocks that cannot be held into r, and their names
+ * after err's message (docs/method.md, "Which blocks cannot be held"). */
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
 			enum sample_status s, struct solve_result *r,
 			char *err)
 {
-	enum sample_unheld_load load =
-		s == SAMPLE_UNSTABLE ? SAMPLE_UNHELD_AT_REST :
-		s == SAMPLE_NONPOSITIVE ? SAMPLE_UNHELD_ALONG :
-		SAMPLE_UNHELD_ANY;
+	enum sample_unheld_load load;
+	if (!sample_unheld_asks(s, &load))
+		return;
 	int n = sample_unheld(ws, load, r->unheld, SOLVE_UNHELD);
 	if (n <= 0)
 		return;
@@ -174,9 +173,7 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
 		ret = failure(s, r->mech.lambda_lpmax, err);
-		if (s == SAMPLE_NO_EQUILIBRIUM || s == SAMPLE_UNSTABLE ||
-		    s == SAMPLE_NONPOSITIVE)
-			name_unheld(w, ws, s, r, err);
+		name_unheld(w, ws, s, r, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;
