@@ -14,7 +14,8 @@
  * Markdown and JSON text: every control character (C0, DEL and the C1
  * range U+0080..U+009F) and every byte that is not part of valid UTF-8
  * becomes a visible escape, \e, \a, \n, \t, \r or \xNN; valid UTF-8
- * text is kept as it is.
+ * text is kept as it is.  text_num() prints a statistic, or "-" where
+ * it has no value.
  */
 #ifndef SLIPWALL_TEXT_H
 #define SLIPWALL_TEXT_H
@@ -44,6 +45,13 @@ char *text_clean(const char *s);
 int text_is_clean(const char *s);
 /* Length of the valid UTF-8 sequence at s (1..4), 0 if there is none. */
 int text_utf8_len(const unsigned char *s);
+
+/* v with prec significant digits ("%.*g") into buf, or "-" where v
+ * is not a number or not finite (a statistic without its values: no
+ * accepted sample, the standard deviation of one value); returns buf,
+ * for use inside a printf.  The tables and panes for people use it;
+ * the CSV and JSON files write nan and null instead. */
+char *text_num(char *buf, size_t len, double v, int prec);
 
 /* Parse a whole number in [lo, hi] / a finite double: the whole of s,
  * decimal as people write it (text_is_decimal: no spaces, no

@@ -40,6 +40,7 @@
 #include "slipwall/runlog.h"
 #include "slipwall/stats.h"
 #include "slipwall/tally.h"
+#include "slipwall/text.h"
 
 #define CMD "compare"
 #define GRID_STEP 0.05		/* first pass: 0, 0.05, ..., 0.5 */
@@ -266,9 +267,8 @@ done:
 static void print_row(const char *name, double model, double tests)
 {
 	char a[32], b[32];
-	snprintf(a, sizeof a, isfinite(model) ? "%.6g" : "-", model);
-	snprintf(b, sizeof b, isfinite(tests) ? "%.6g" : "-", tests);
-	printf("%-24s %-26s %s\n", name, a, b);
+	printf("%-24s %-26s %s\n", name, text_num(a, sizeof a, model, 6),
+	       text_num(b, sizeof b, tests, 6));
 }
 
 static void print_table(const struct model *md, const struct stats_summary *ts,

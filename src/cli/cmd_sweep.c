@@ -46,6 +46,7 @@
 #include "slipwall/run.h"
 #include "slipwall/family.h"
 #include "slipwall/tally.h"
+#include "slipwall/text.h"
 
 #define CMD "sweep"
 #define MAX_VALUES 1000
@@ -395,8 +396,7 @@ static void print_table(const struct sweep_args *a, const struct wall *w,
 		char q[3][32];
 		const double v[3] = { p->s.p05, p->s.p50, p->s.p95 };
 		for (int i = 0; i < 3; i++)
-			snprintf(q[i], sizeof q[i], isfinite(v[i]) ? "%.5g" : "-",
-				 v[i]);
+			text_num(q[i], sizeof q[i], v[i], 5);
 		printf(" %-9ld %-11s %-25s %-11s %-11s %-10d %d\n",
 		       p->accepted, q[0], ci, q[1], q[2], p->mechanisms,
 		       p->families);

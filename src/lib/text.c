@@ -139,6 +139,15 @@ size_t text_bom(const char *s, size_t len)
 	return len >= 3 && !memcmp(s, "\xef\xbb\xbf", 3) ? 3 : 0;
 }
 
+char *text_num(char *buf, size_t len, double v, int prec)
+{
+	if (isfinite(v))
+		snprintf(buf, len, "%.*g", prec, v);
+	else
+		snprintf(buf, len, "-");
+	return buf;
+}
+
 int text_is_decimal(const char *s)
 {
 	int digits = 0;

@@ -34,6 +34,7 @@
 
 #include "slipwall/runlog.h"
 #include "slipwall/stats.h"
+#include "slipwall/text.h"
 #include "slipwall/wallfile.h"
 #include "tui.h"
 
@@ -172,15 +173,6 @@ void tui_compare_update(struct tui *t, const struct history_row *const *h,
 			     &c->ks) == 0;
 }
 
-static const char *tui_compare_num(char *buf, size_t len, double v)
-{
-	if (isnan(v))
-		snprintf(buf, len, "-");
-	else
-		snprintf(buf, len, "%.4g", v);
-	return buf;
-}
-
 /* "Δp05 +2.94 (+8.3 %)" */
 static int tui_compare_delta(const struct tui *t, char *buf, size_t len,
 			     const char *name, double a, double b)
@@ -309,8 +301,8 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 	}
 	snprintf(buf, sizeof buf, "bars B (%ld accepted), %s A (%ld): p05 A %s "
 		 "B %s", c->nb, t->utf8 ? "═" : "=", c->na,
-		 tui_compare_num(pa, sizeof pa, sa.p05),
-		 tui_compare_num(pb, sizeof pb, sb.p05));
+		 text_num(pa, sizeof pa, sa.p05, 4),
+		 text_num(pb, sizeof pb, sb.p05, 4));
 	tui_text_cut(t, y++, 0, C, buf);
 	int n = tui_compare_delta(t, buf, sizeof buf, "p05", sa.p05, sb.p05);
 	n += snprintf(buf + n, sizeof buf - (size_t)n, "  ");
@@ -325,7 +317,7 @@ void tui_compare_draw(struct tui *t, const struct history_row *const *h,
 		tui_pct(p2, sizeof p2, c->ks.p_two_sided);
 		tui_pct(pg, sizeof pg, c->ks.p_greater);
 		snprintf(buf, sizeof buf, "KS B vs A: D %s  p %s  p B < A %s%s",
-			 tui_compare_num(d, sizeof d, c->ks.d), p2, pg,
+			 text_num(d, sizeof d, c->ks.d, 4), p2, pg,
 			 c->ks.exact ? "" : " (asymptotic)");
 	} else {
 		snprintf(buf, sizeof buf, "KS B vs A: -");

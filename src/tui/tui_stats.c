@@ -27,15 +27,8 @@
 #include "slipwall/collapse.h"
 #include "slipwall/mc.h"
 #include "slipwall/stats.h"
+#include "slipwall/text.h"
 #include "tui.h"
-
-static void tui_stats_num(char *buf, size_t len, double v, int prec)
-{
-	if (isnan(v))
-		snprintf(buf, len, "-");
-	else
-		snprintf(buf, len, "%.*g", prec, v);
-}
 
 /* opt: the level of the lines written now (0: always shown; the
  * highest levels go first when the pane is short: tui_stats_draw);
@@ -92,7 +85,7 @@ static void tui_stats_probs(struct tui_lines *p, const char *fmt, int pad,
 			if (probs & (1u << i))	/* a probability: a percentage */
 				tui_pct(s[i], sizeof s[i], i < nv ? v[i] : NAN);
 			else
-				tui_stats_num(s[i], sizeof s[i],
+				text_num(s[i], sizeof s[i],
 					      i < nv ? v[i] : NAN, prec);
 		if (pad > 0) {
 			char tmp[32];
@@ -133,7 +126,7 @@ static void tui_stats_speed(struct tui *t, struct tui_lines *p)
 			 th, tui_s(th));
 		tui_stats_nums(p, line, 0, 1, v);
 	} else if (ta->samples > 0 || pg.oldest < 1) {
-		tui_stats_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
+		text_num(a, sizeof a, rate, rate >= 1e4 ? 6 : 4);
 		snprintf(line, sizeof line, "speed    %s /s on %d thread%s", a,
 			 th, tui_s(th));
 		tui_stats_text(p, line);
@@ -311,7 +304,7 @@ static void tui_stats_loads(struct tui *t, struct tui_lines *p,
 		/* the counts go when even two digits do not fit with them
 		 * (a line cut at "601 of" says something else) */
 		char l2[512], a2[32], b2[32];
-		tui_stats_num(a2, sizeof a2, c.load, 2);
+		text_num(a2, sizeof a2, c.load, 2);
 		tui_pct(b2, sizeof b2, c.p);
 		snprintf(l2, sizeof l2, line, a2, b2);
 		if (tui_cols(l2) > p->w)

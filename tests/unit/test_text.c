@@ -2,7 +2,8 @@
  * test_text.c - numbers as people write them (text_parse_long,
  * text_parse_double, text_is_decimal: the options' and the wall file's
  * rule), text_bom (the wall, tests and samples files' readers) and
- * text_clean (what reaches a terminal).
+ * text_clean (what reaches a terminal) and text_num (a statistic in a
+ * table, or "-" where it has no value).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -69,11 +70,29 @@ static void test_clean(void)
 	free(c);
 }
 
+static void test_num(void)
+{
+	char b[32];
+	tap_ok(!strcmp(text_num(b, sizeof b, 283.375049, 6), "283.375"),
+	       "6 significant digits (%s)", b);
+	tap_ok(!strcmp(text_num(b, sizeof b, 0.000123456, 3), "0.000123"),
+	       "3 of a small value (%s)", b);
+	tap_ok(!strcmp(text_num(b, sizeof b, NAN, 6), "-"),
+	       "no value (NaN: no accepted sample) is '-' (%s)", b);
+	tap_ok(!strcmp(text_num(b, sizeof b, INFINITY, 6), "-") &&
+	       !strcmp(text_num(b, sizeof b, -INFINITY, 6), "-"),
+	       "an infinite value is '-' too, never 'inf'");
+	char tiny[4];
+	tap_ok(!strcmp(text_num(tiny, sizeof tiny, 123456, 6), "123"),
+	       "a short buffer is cut, not overrun (%s)", tiny);
+}
+
 int main(void)
 {
 	test_decimal();
 	test_parse();
 	test_bom();
 	test_clean();
+	test_num();
 	return tap_done();
 }
