@@ -446,14 +446,29 @@ check "a jamb that overhangs under a lintel: no_equilibrium names block c13b3, i
 # names the block that needs the load, never the pier.
 sed 's/^  - point: .*/  - point: {at: [0.7, 0.3], direction: [0, 1], magnitude: 1}/' \
 	tests/data/beyond-pier.yaml >"$tmp/held-up.yaml"
-"$bin" run "$tmp/held-up.yaml" -n 4 --threads 2 >"$tmp/held-up.txt" 2>/dev/null
-"$bin" run "$tmp/held-up.yaml" -n 4 --threads 2 --json >"$tmp/held-up.json" 2>/dev/null
-j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["unstable"], d["unheld"])' "$tmp/held-up.json")
-echo "# json: $j"
-grep -qx '    stands only under load: block over (4)' "$tmp/held-up.txt" \
-	&& [ "$j" = "4 {'no_equilibrium': [], 'nonpositive': [], 'unstable': [{'block': 'over', 'count': 4}], 'hanging': []}" ]
+# named_run NAME WALL STATUS LINE BLOCK: 4 samples of WALL, in text and
+# in JSON ($tmp/NAME.txt, .json); true when all 4 are STATUS, the text
+# has the line LINE, and the JSON's `unheld` names BLOCK on all 4 under
+# STATUS and nothing under each other verdict that names blocks.
+named_run() {
+	"$bin" run "$2" -n 4 --threads 2 >"$tmp/$1.txt" 2>/dev/null
+	"$bin" run "$2" -n 4 --threads 2 --json >"$tmp/$1.json" 2>/dev/null
+	grep -qx "    $4" "$tmp/$1.txt" || return 1
+	python3 - "$tmp/$1.json" "$3" "$5" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+st, blk = sys.argv[2], sys.argv[3]
+want = {k: [] for k in ("no_equilibrium", "nonpositive", "unstable",
+                        "hanging")}
+want[st] = [{"block": blk, "count": 4}]
+print("# json: rejected %s %s, unheld %s" % (st, d["rejected"][st],
+                                             d["unheld"]))
+sys.exit(not (d["rejected"][st] == 4 and d["unheld"] == want))
+PY
+}
 check "a block held up by its own load: 4 unstable, 'stands only under load: block over (4)' in text and JSON" \
-	test $? = 0
+	named_run held-up "$tmp/held-up.yaml" unstable \
+	'stands only under load: block over (4)' over
 # and `solve` names it too, with what it needs
 "$bin" solve "$tmp/held-up.yaml" --method standard --json >"$tmp/held-up-solve.json" 2>/dev/null
 check "solve on the block held up by its own load: unstable, 'over' named, 'without the live load'" \
@@ -462,14 +477,9 @@ check "solve on the block held up by its own load: unstable, 'over' named, 'with
 # (tests/data/slope.yaml): LP-max's largest load factor is below 0 on
 # every sample, and `run` names the block that falls under any load in
 # the load's direction, never the one that stands
-"$bin" run tests/data/slope.yaml -n 4 --threads 2 >"$tmp/slope.txt" 2>/dev/null
-"$bin" run tests/data/slope.yaml -n 4 --threads 2 --json >"$tmp/slope.json" 2>/dev/null
-j=$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(d["rejected"]["nonpositive"], d["unheld"]["nonpositive"])' "$tmp/slope.json")
-echo "# json: $j"
-grep -qx '    falls under any load: block slope (4)' "$tmp/slope.txt" \
-	&& [ "$j" = "4 [{'block': 'slope', 'count': 4}]" ]
 check "a block on a slope steeper than its friction: 4 nonpositive, 'falls under any load: block slope (4)' in text and JSON" \
-	test $? = 0
+	named_run slope tests/data/slope.yaml nonpositive \
+	'falls under any load: block slope (4)' slope
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1

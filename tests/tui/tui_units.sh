@@ -9,8 +9,9 @@
 # line's threads; c on a wall without a layout says so at once; n below
 # the samples done says "30 done (5 asked)"; a run that ended with no
 # sample accepted says so instead of waiting; a run whose samples are
-# all no_equilibrium names the block that cannot be held, and one whose
-# samples are all hanging the lowest block that hangs; samples
+# all no_equilibrium names the block that cannot be held, one whose
+# samples are all hanging the lowest block that hangs, and one whose
+# samples are all nonpositive the block that falls; samples
 # finished behind a slow one (walls/facade.yaml) are counted as "M more
 # done".
 #
@@ -105,32 +106,38 @@ else
 fi
 T send-keys -t t:y q
 
-# a wall whose every sample is no_equilibrium (tests/data/
-# beyond-pier.yaml, a block whose centroid is beyond its pier): the
-# statistics pane names the block that cannot be held (docs/
-# workbench.md; docs/method.md, "Which blocks cannot be held"), and not
-# the pier it rests on
-start c LANG=C LC_ALL=C -- tests/data/beyond-pier.yaml
-if wait_run c 1 done 60 && wait_for c 'cannot be held: over \(10\)' 5 &&
-   screen_has c 'no_equilibrium 10' && ! screen_has c 'held: pier'; then
-	ok "every sample no_equilibrium: the pane says 'cannot be held: over (10)'"
-else
-	not_ok "every sample no_equilibrium: the pane names the block that cannot be held" "$(screen c)"
-fi
-T send-keys -t t:c q
-
-# a wall whose every sample is `hanging` (tests/data/stack-gap.yaml, a
-# stack-bond wall with the middle block of its first course left out):
-# the pane names the lowest block that hangs, c2b2 over the gap, not
-# c3b2 that rests on it (docs/method.md, "Which blocks cannot be held")
-start g LANG=C LC_ALL=C -- tests/data/stack-gap.yaml
-if wait_run g 1 done 60 && wait_for g 'lowest hanging block: c2b2 \(5\)' 5 &&
-   screen_has g 'hanging 5' && ! screen_has g 'c3b2 \('; then
-	ok "every sample hanging: the pane says 'lowest hanging block: c2b2 (5)'"
-else
-	not_ok "every sample hanging: the pane names the lowest block that hangs" "$(screen g)"
-fi
-T send-keys -t t:g q
+# pane_names WIN WALL REJECTED NAMED NOT TEXT: the workbench on WALL
+# (in window WIN) ends its run, and its statistics pane shows REJECTED
+# (the tally's line) and NAMED (the block named, docs/workbench.md;
+# docs/method.md, "Which blocks cannot be held"), never NOT (a block
+# that stands); one check, TEXT, and the window is left
+pane_names() {
+	start "$1" LANG=C LC_ALL=C -- "$2"
+	if wait_run "$1" 1 done 60 && wait_for "$1" "$4" 5 &&
+	   screen_has "$1" "$3" && ! screen_has "$1" "$5"; then
+		ok "$6"
+	else
+		not_ok "$6" "$(screen "$1")"
+	fi
+	T send-keys -t "t:$1" q
+}
+# every sample no_equilibrium (tests/data/beyond-pier.yaml, a block
+# whose centroid is beyond its pier): the block, not the pier
+pane_names c tests/data/beyond-pier.yaml 'no_equilibrium 10' \
+	'cannot be held: over \(10\)' 'held: pier' \
+	"every sample no_equilibrium: the pane says 'cannot be held: over (10)'"
+# every sample `hanging` (tests/data/stack-gap.yaml, a stack-bond wall
+# with the middle block of its first course left out): the lowest block
+# that hangs, c2b2 over the gap, not c3b2 that rests on it
+pane_names g tests/data/stack-gap.yaml 'hanging 5' \
+	'lowest hanging block: c2b2 \(5\)' 'c3b2 \(' \
+	"every sample hanging: the pane says 'lowest hanging block: c2b2 (5)'"
+# every sample `nonpositive` (tests/data/slope.yaml, a block on a slope
+# steeper than its friction beside one on the flat): the block on the
+# slope, never the one on the flat
+pane_names s tests/data/slope.yaml 'nonpositive 4' \
+	'falls under any load: slope \(4\)' 'flat \(' \
+	"every sample nonpositive: the pane says 'falls under any load: slope (4)'"
 
 # samples finished behind a slow one are shown in order, later: the
 # samples line says how many more are done (walls/facade.yaml, seed 1:
