@@ -480,6 +480,36 @@ check "solve on the block held up by its own load: unstable, 'over' named, 'with
 check "a block on a slope steeper than its friction: 4 nonpositive, 'falls under any load: block slope (4)' in text and JSON" \
 	named_run slope tests/data/slope.yaml nonpositive \
 	'falls under any load: block slope (4)' slope
+# The same block alone at friction 0.9: it stands, and slides down the
+# slope at (mu - t) / (1 + mu t) = 0.0581395 under the load along +x,
+# up it at (mu + t) / (1 - mu t) = 6.07143 along -x; at depth 0.25 its
+# contact points move along its joint, and a sliding block's load does
+# not move with them: every sample has it, to 1e-9 (tests/unit/
+# test_solve.c has the single solutions, tipping among them)
+sed -e '/id: flat/d' -e 's/friction: 0.6/friction: 0.9/' tests/data/slope.yaml \
+	>"$tmp/slope-down.yaml"
+sed 's/direction: \[1, 0\]/direction: [-1, 0]/' "$tmp/slope-down.yaml" \
+	>"$tmp/slope-up.yaml"
+# slides_at WALL LOAD: 6 samples of WALL, each accepted at LOAD to 1e-9,
+# its joint sliding
+slides_at() {
+	"$bin" run "$1" -n 6 --threads 2 --samples "$1.csv" >/dev/null 2>&1 ||
+		return 1
+	python3 - "$1.csv" "$2" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+want = float(sys.argv[2])
+got = [(r["status"], float(r["lambda_min"] or "nan")) for r in rows]
+print("# %s: %s" % (sys.argv[1].rsplit("/", 1)[-1], got))
+sys.exit(not (len(rows) == 6 and
+              all(st == "accepted" and abs(v - want) <= 1e-9 * max(1, want)
+                  for st, v in got)))
+PY
+}
+check "a block on a slope, friction 0.9 > tan 0.8: every sample slides down it at (mu - t)/(1 + mu t) = 0.0581395" \
+	slides_at "$tmp/slope-down.yaml" 0.058139534883720916
+check "... and up it, the load reversed, at (mu + t)/(1 - mu t) = 6.07143" \
+	slides_at "$tmp/slope-up.yaml" 6.0714285714285712
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1

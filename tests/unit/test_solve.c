@@ -1,7 +1,8 @@
 /*
  * test_solve.c - the single-solution methods: closed forms for a block
  * and a two-block stack (every method must agree where the collapse
- * involves one joint), the published Ferris & Tin-Loi values, and on
+ * involves one joint; a block on a slope, sliding or tipping, down it
+ * and up it), the published Ferris & Tin-Loi values, and on
  * random small walls the global method's load (an onset of collapse
  * checked by exact LPs) and bound (below every onset load found
  * otherwise).  And the stop flag: a solve stopped returns SW_EINTR.
@@ -508,11 +509,99 @@ static void stops(void)
 	wall_free(big);
 }
 
+/* A block on an inclined face (a fixed wedge whose face falls along +x
+ * at tan theta = t), len along the face and h thick, under a horizontal
+ * body load along +x (down the slope) or -x (up it).  It slides where
+ * the load's component along the face overcomes friction on the normal
+ * force:
+ *     down:  lambda = (mu - t) / (1 + mu t)
+ *     up:    lambda = (mu + t) / (1 - mu t)     (mu t < 1)
+ * and tips about the base corner it leans over where the resultant of
+ * weight and load passes it: lambda = -rx / ry about the lower corner
+ * (down), rx / ry about the upper one (up), with (rx, ry) the centroid
+ * from that corner (no tipping where that is negative).  The collapse
+ * load is the least of them, for every method. */
+struct incline {
+	double mu, t;
+	int up;
+	double len, h;	/* the block: along the face, out of it */
+};
+
+static void inclines(void)
+{
+	static const struct incline cases[] = {
+		{0.9, 0.8, 0, 0.4, 0.1}, {0.9, 0.8, 1, 0.4, 0.1},
+		{0.7, 0.3, 0, 0.4, 0.1}, {0.7, 0.3, 1, 0.4, 0.1},
+		{0.45, 0.4, 0, 0.4, 0.1},
+		/* a slender block: it tips down the slope first */
+		{0.9, 0.1, 0, 0.1, 0.4},
+	};
+	for (size_t c = 0; c < sizeof cases / sizeof *cases; c++) {
+		const struct incline *q = &cases[c];
+		double th = atan(q->t), L = 1.0;
+		double ux = cos(th), uy = -sin(th);	/* down the face */
+		double nx = sin(th), ny = cos(th);	/* out of it */
+		double a = 0.3, len = q->len, h = q->h;
+		double p0x = a * ux, p0y = L * q->t + a * uy;
+		double xy[8] = {p0x, p0y, p0x + len * ux, p0y + len * uy,
+				p0x + len * ux + h * nx, p0y + len * uy + h * ny,
+				p0x + h * nx, p0y + h * ny};
+		double wedge[6] = {0, 0, L, 0, 0, L * q->t};
+		struct wall_mark mk = {0, 0};
+		struct wall *w = wall_new();
+		wall_add_block(w, "block", xy, 4, 0, mk);
+		wall_add_block(w, "wedge", wedge, 3, 1, mk);
+		w->mu_bed = w->mu_head = q->mu;
+		struct wall_load ld = {0};
+		ld.kind = LOAD_BODY;
+		ld.dir[0] = q->up ? -1 : 1;
+		ld.magnitude = 1;
+		wall_add_load(w, &ld);
+		tw_finish(w);
+		double gx = 0, gy = 0;
+		for (int i = 0; i < 4; i++) {
+			gx += xy[2 * i] / 4;
+			gy += xy[2 * i + 1] / 4;
+		}
+		double slide, rx, ry, tip;
+		if (q->up) {
+			slide = (q->mu + q->t) / (1 - q->mu * q->t);
+			rx = gx - xy[0];	/* from the upper corner */
+			ry = gy - xy[1];
+			tip = rx / ry;
+		} else {
+			slide = (q->mu - q->t) / (1 + q->mu * q->t);
+			rx = gx - xy[2];	/* from the lower corner */
+			ry = gy - xy[3];
+			tip = -rx / ry;
+		}
+		double want = tip > 0 ? fmin(slide, tip) : slide;
+		for (int m = 0; m < 3; m++) {
+			struct solve_result r;
+			double lam = run(w, (enum solve_method)m, &r);
+			tap_near(lam, want, 1e-9, "a block on a slope, tan %g, "
+				 "friction %g, load %s it, %s: %.10g (want "
+				 "%.10g)", q->t, q->mu, q->up ? "up" : "down",
+				 solve_method_name((enum solve_method)m), lam,
+				 want);
+			if (m != SOLVE_STANDARD && r.has_mechanism)
+				tap_ok(r.mech.joint[0] == (slide < tip || tip <= 0 ?
+							   JOINT_SLIDES :
+							   JOINT_HINGES),
+				       "... and its joint '%c'",
+				       r.mech.joint[0]);
+			solve_result_free(&r);
+		}
+		wall_free(w);
+	}
+}
+
 int main(void)
 {
 	stops();
 	scale();
 	stacks();
+	inclines();
 	published();
 	global_walls();
 	failures();
