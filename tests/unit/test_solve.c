@@ -2,10 +2,11 @@
  * test_solve.c - the single-solution methods: closed forms for a block
  * and a two-block stack (every method must agree where the collapse
  * involves one joint; a block on a slope, sliding or tipping, down it
- * and up it), the published Ferris & Tin-Loi values, and on
- * random small walls the global method's load (an onset of collapse
- * checked by exact LPs) and bound (below every onset load found
- * otherwise).  And the stop flag: a solve stopped returns SW_EINTR.
+ * and up it; a trapezoid that tips about its area's centroid), the
+ * published Ferris & Tin-Loi values, and on random small walls the
+ * global method's load (an onset of collapse checked by exact LPs) and
+ * bound (below every onset load found otherwise).  And the stop flag: a
+ * solve stopped returns SW_EINTR.
  */
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -596,12 +597,52 @@ static void inclines(void)
 	}
 }
 
+/* A trapezoid on the ground, (0, 0) (0.6, 0) (0.2, 0.6) (0, 0.6), under
+ * a horizontal body load, friction 2 (it tips before it slides): the
+ * weight and the load act at its area's centroid (13/60, 1/4), not at
+ * the mean of its vertices (0.2, 0.3), so it tips about its left corner
+ * at lambda = x_c / y_c = 13/15 under the load along -x (0.667 at the
+ * vertices' mean) and about its right one at (0.6 - x_c) / y_c = 23/15
+ * along +x, every method, its joint hinging. */
+static void trapezoid(void)
+{
+	static const double xy[8] = {0, 0, 0.6, 0, 0.2, 0.6, 0, 0.6};
+	for (int up = 0; up < 2; up++) {
+		struct wall_mark mk = {0, 0};
+		struct wall *w = wall_new();
+		wall_add_block(w, "trapezoid", xy, 4, 0, mk);
+		w->has_ground = 1;
+		w->mu_bed = w->mu_head = 2;
+		struct wall_load ld = {0};
+		ld.kind = LOAD_BODY;
+		ld.dir[0] = up ? -1 : 1;
+		ld.magnitude = 1;
+		wall_add_load(w, &ld);
+		tw_finish(w);
+		double want = up ? 13.0 / 15 : 23.0 / 15;
+		for (int m = 0; m < 3; m++) {
+			struct solve_result r;
+			double lam = run(w, (enum solve_method)m, &r);
+			tap_near(lam, want, 1e-9, "a trapezoid, the load along "
+				 "%s, %s: %.10g (want %.10g)", up ? "-x" : "+x",
+				 solve_method_name((enum solve_method)m), lam,
+				 want);
+			if (m != SOLVE_STANDARD && r.has_mechanism)
+				tap_ok(r.mech.joint[0] == JOINT_HINGES,
+				       "... and its joint '%c'", r.mech.joint[0]);
+			solve_result_free(&r);
+		}
+		wall_free(w);
+	}
+}
+
 int main(void)
 {
 	stops();
 	scale();
 	stacks();
 	inclines();
+	trapezoid();
 	published();
 	global_walls();
 	failures();
