@@ -490,26 +490,32 @@ sed -e '/id: flat/d' -e 's/friction: 0.6/friction: 0.9/' tests/data/slope.yaml \
 	>"$tmp/slope-down.yaml"
 sed 's/direction: \[1, 0\]/direction: [-1, 0]/' "$tmp/slope-down.yaml" \
 	>"$tmp/slope-up.yaml"
-# slides_at WALL LOAD: 6 samples of WALL, each accepted at LOAD to 1e-9,
-# its joint sliding
+# slides_at WALL MU T UP: 6 samples of WALL, each accepted at the closed
+# form (UP 0: down the slope; 1: up it) to 1e-9, its one joint sliding
+# in every sample (the JSON's one mechanism, "s")
 slides_at() {
-	"$bin" run "$1" -n 6 --threads 2 --samples "$1.csv" >/dev/null 2>&1 ||
-		return 1
-	python3 - "$1.csv" "$2" <<'PY'
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-want = float(sys.argv[2])
+	"$bin" run "$1" -n 6 --threads 2 --samples "$1.csv" --json \
+		>"$1.json" 2>/dev/null || return 1
+	python3 - "$1" "$2" "$3" "$4" <<'PY'
+import csv, json, sys
+wall, mu, t, up = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), \
+    sys.argv[4] == "1"
+want = (mu + t) / (1 - mu * t) if up else (mu - t) / (1 + mu * t)
+rows = list(csv.DictReader(open(wall + ".csv")))
 got = [(r["status"], float(r["lambda_min"] or "nan")) for r in rows]
-print("# %s: %s" % (sys.argv[1].rsplit("/", 1)[-1], got))
-sys.exit(not (len(rows) == 6 and
+mech = [(m["joints"], m["count"])
+        for m in json.load(open(wall + ".json"))["mechanisms"]]
+print("# %s: want %.15g, got %s, mechanisms %s"
+      % (wall.rsplit("/", 1)[-1], want, got, mech))
+sys.exit(not (len(rows) == 6 and mech == [("s", 6)] and
               all(st == "accepted" and abs(v - want) <= 1e-9 * max(1, want)
                   for st, v in got)))
 PY
 }
 check "a block on a slope, friction 0.9 > tan 0.8: every sample slides down it at (mu - t)/(1 + mu t) = 0.0581395" \
-	slides_at "$tmp/slope-down.yaml" 0.058139534883720916
+	slides_at "$tmp/slope-down.yaml" 0.9 0.8 0
 check "... and up it, the load reversed, at (mu + t)/(1 - mu t) = 6.07143" \
-	slides_at "$tmp/slope-up.yaml" 6.0714285714285712
+	slides_at "$tmp/slope-up.yaml" 0.9 0.8 1
 # and `report`'s table has a row for it (its first two samples, seed 1)
 "$bin" report tests/data/lintel-jamb.yaml -n 2 --seed 1 --threads 2 \
 	--out "$tmp/lj-report" >/dev/null 2>&1
