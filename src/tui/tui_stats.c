@@ -86,7 +86,7 @@ static void tui_stats_probs(struct tui_lines *p, const char *fmt, int pad,
 				tui_pct(s[i], sizeof s[i], i < nv ? v[i] : NAN);
 			else
 				text_num(s[i], sizeof s[i],
-					      i < nv ? v[i] : NAN, prec);
+					 i < nv ? v[i] : NAN, prec);
 		if (pad > 0) {
 			char tmp[32];
 			snprintf(tmp, sizeof tmp, "%-*s", pad, s[0]);

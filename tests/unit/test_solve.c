@@ -510,6 +510,26 @@ static void stops(void)
 	wall_free(big);
 }
 
+/* Every method on w (one joint): its load want to 1e-9, and the joint's
+ * state in the mechanism of the methods that give one (the standard
+ * method's associative mechanism is not the onset's).  what names the
+ * case. */
+static void one_joint(const struct wall *w, double want, char joint,
+		      const char *what)
+{
+	for (int m = 0; m < 3; m++) {
+		struct solve_result r;
+		double lam = run(w, (enum solve_method)m, &r);
+		tap_near(lam, want, 1e-9, "%s, %s: %.10g (want %.10g)", what,
+			 solve_method_name((enum solve_method)m), lam, want);
+		if (m != SOLVE_STANDARD && r.has_mechanism)
+			tap_ok(r.mech.joint[0] == joint,
+			       "... and its joint '%c' (want '%c')",
+			       r.mech.joint[0], joint);
+		solve_result_free(&r);
+	}
+}
+
 /* A block on an inclined face (a fixed wedge whose face falls along +x
  * at tan theta = t), len along the face and h thick, under a horizontal
  * body load along +x (down the slope) or -x (up it).  It slides where
@@ -553,11 +573,7 @@ static void inclines(void)
 		wall_add_block(w, "block", xy, 4, 0, mk);
 		wall_add_block(w, "wedge", wedge, 3, 1, mk);
 		w->mu_bed = w->mu_head = q->mu;
-		struct wall_load ld = {0};
-		ld.kind = LOAD_BODY;
-		ld.dir[0] = q->up ? -1 : 1;
-		ld.magnitude = 1;
-		wall_add_load(w, &ld);
+		tw_body_load_x(w, q->up ? -1 : 1);
 		tw_finish(w);
 		double gx = 0, gy = 0;
 		for (int i = 0; i < 4; i++) {
@@ -576,23 +592,13 @@ static void inclines(void)
 			ry = gy - xy[3];
 			tip = -rx / ry;
 		}
-		double want = tip > 0 ? fmin(slide, tip) : slide;
-		for (int m = 0; m < 3; m++) {
-			struct solve_result r;
-			double lam = run(w, (enum solve_method)m, &r);
-			tap_near(lam, want, 1e-9, "a block on a slope, tan %g, "
-				 "friction %g, load %s it, %s: %.10g (want "
-				 "%.10g)", q->t, q->mu, q->up ? "up" : "down",
-				 solve_method_name((enum solve_method)m), lam,
-				 want);
-			if (m != SOLVE_STANDARD && r.has_mechanism)
-				tap_ok(r.mech.joint[0] == (slide < tip || tip <= 0 ?
-							   JOINT_SLIDES :
-							   JOINT_HINGES),
-				       "... and its joint '%c'",
-				       r.mech.joint[0]);
-			solve_result_free(&r);
-		}
+		int slides = tip <= 0 || slide < tip;
+		char what[96];
+		snprintf(what, sizeof what, "a block on a slope, tan %g, "
+			 "friction %g, load %s it", q->t, q->mu,
+			 q->up ? "up" : "down");
+		one_joint(w, slides ? slide : tip,
+			  slides ? JOINT_SLIDES : JOINT_HINGES, what);
 		wall_free(w);
 	}
 }
@@ -613,25 +619,11 @@ static void trapezoid(void)
 		wall_add_block(w, "trapezoid", xy, 4, 0, mk);
 		w->has_ground = 1;
 		w->mu_bed = w->mu_head = 2;
-		struct wall_load ld = {0};
-		ld.kind = LOAD_BODY;
-		ld.dir[0] = up ? -1 : 1;
-		ld.magnitude = 1;
-		wall_add_load(w, &ld);
+		tw_body_load_x(w, up ? -1 : 1);
 		tw_finish(w);
-		double want = up ? 13.0 / 15 : 23.0 / 15;
-		for (int m = 0; m < 3; m++) {
-			struct solve_result r;
-			double lam = run(w, (enum solve_method)m, &r);
-			tap_near(lam, want, 1e-9, "a trapezoid, the load along "
-				 "%s, %s: %.10g (want %.10g)", up ? "-x" : "+x",
-				 solve_method_name((enum solve_method)m), lam,
-				 want);
-			if (m != SOLVE_STANDARD && r.has_mechanism)
-				tap_ok(r.mech.joint[0] == JOINT_HINGES,
-				       "... and its joint '%c'", r.mech.joint[0]);
-			solve_result_free(&r);
-		}
+		one_joint(w, up ? 13.0 / 15 : 23.0 / 15, JOINT_HINGES,
+			  up ? "a trapezoid, the load along -x" :
+			       "a trapezoid, the load along +x");
 		wall_free(w);
 	}
 }

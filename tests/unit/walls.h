@@ -55,13 +55,19 @@ static inline struct wall *tw_block(double y)
 	return w;
 }
 
-static inline void tw_body_load(struct wall *w)
+/* A horizontal body load of magnitude 1 along dx (+1 or -1). */
+static inline void tw_body_load_x(struct wall *w, double dx)
 {
 	struct wall_load ld = {0};
 	ld.kind = LOAD_BODY;
-	ld.dir[0] = 1;
+	ld.dir[0] = dx;
 	ld.magnitude = 1;
 	wall_add_load(w, &ld);
+}
+
+static inline void tw_body_load(struct wall *w)
+{
+	tw_body_load_x(w, 1);
 }
 
 /* A generated running or stack bond wall on the ground (not finished). */
