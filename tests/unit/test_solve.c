@@ -42,6 +42,39 @@ static double run(const struct wall *w, enum solve_method m,
 	return run_limit(w, m, 300, r);
 }
 
+/* Every method on w: its load want to 1e-9, and the states of joints
+ * k[0..n-1] (n at most 7; state[i] each) in the mechanism of the
+ * methods that give one (the standard method's associative mechanism is
+ * not the onset's).  what names the case. */
+static void every_method(const struct wall *w, double want, int n,
+			 const int *k, const char *state, const char *what)
+{
+	for (int m = 0; m < 3; m++) {
+		struct solve_result r;
+		double lam = run(w, (enum solve_method)m, &r);
+		tap_near(lam, want, 1e-9, "%s, %s: %.10g (want %.10g)", what,
+			 solve_method_name((enum solve_method)m), lam, want);
+		if (m != SOLVE_STANDARD && r.has_mechanism) {
+			char got[8] = "";
+			int ok = 1;
+			for (int i = 0; i < n; i++) {
+				got[i] = r.mech.joint[k[i]];
+				ok = ok && got[i] == state[i];
+			}
+			tap_ok(ok, "... and its joints '%s' (want '%.*s')", got,
+			       n, state);
+		}
+		solve_result_free(&r);
+	}
+}
+
+/* ... on a wall of one joint (joint 0) */
+static void one_joint(const struct wall *w, double want, char joint,
+		      const char *what)
+{
+	every_method(w, want, 1, (const int[]){0}, &joint, what);
+}
+
 /* Two blocks, bottom b1 x h1 and top b2 x h2 (flush left), under a point
  * load pushing +x on the left face at height a.  Candidate collapses:
  *  load on the top block (a > h1):
@@ -95,20 +128,11 @@ static void stacks(void)
 			else
 				kt = k;
 		}
-		for (int m = 0; m < 3; m++) {
-			struct solve_result r;
-			double lam = run(w, (enum solve_method)m, &r);
-			tap_near(lam, want, 1e-9, "stack case");
-			tap_diag("case %zu %s: %.10g (want %.10g)", c,
-				 solve_method_name((enum solve_method)m), lam, want);
-			if (m != SOLVE_STANDARD && r.has_mechanism)
-				tap_ok(r.mech.joint[kt] == s->top_joint &&
-				       r.mech.joint[kg] == s->ground_joint,
-				       "case %zu %s mechanism: ground '%c' top '%c'",
-				       c, solve_method_name((enum solve_method)m),
-				       r.mech.joint[kg], r.mech.joint[kt]);
-			solve_result_free(&r);
-		}
+		char what[32];
+		snprintf(what, sizeof what, "stack case %zu", c);
+		every_method(w, want, 2, (const int[]){kg, kt},
+			     (const char[]){s->ground_joint, s->top_joint},
+			     what);
 		wall_free(w);
 	}
 }
@@ -508,26 +532,6 @@ static void stops(void)
 	       err);
 	solve_result_free(&r);
 	wall_free(big);
-}
-
-/* Every method on w (one joint): its load want to 1e-9, and the joint's
- * state in the mechanism of the methods that give one (the standard
- * method's associative mechanism is not the onset's).  what names the
- * case. */
-static void one_joint(const struct wall *w, double want, char joint,
-		      const char *what)
-{
-	for (int m = 0; m < 3; m++) {
-		struct solve_result r;
-		double lam = run(w, (enum solve_method)m, &r);
-		tap_near(lam, want, 1e-9, "%s, %s: %.10g (want %.10g)", what,
-			 solve_method_name((enum solve_method)m), lam, want);
-		if (m != SOLVE_STANDARD && r.has_mechanism)
-			tap_ok(r.mech.joint[0] == joint,
-			       "... and its joint '%c' (want '%c')",
-			       r.mech.joint[0], joint);
-		solve_result_free(&r);
-	}
 }
 
 /* A block on an inclined face (a fixed wedge whose face falls along +x
