@@ -156,7 +156,7 @@ struct sample_result {
 	int converged;
 	int lps;		/* LPs solved for this sample */
 	double vw_residual;	/* relative virtual-work residual */
-	/* `no_equilibrium`, `unstable` or LP-max's `nonpositive`
+	/* `no_equilibrium`, `unstable` or `nonpositive`
 	 * (sample_run, sample_pattern): the block that most needs the least
 	 * outside help (sample_unheld), or -1, and how many blocks need
 	 * some (0: not found); `hanging`
@@ -261,19 +261,26 @@ enum sample_unheld_load {
 	SAMPLE_UNHELD_ANY,	/* any load factor: `no_equilibrium` */
 	SAMPLE_UNHELD_AT_REST,	/* 0, no live load: `unstable` */
 	SAMPLE_UNHELD_ALONG,	/* 0 or more: LP-max's `nonpositive` */
+	SAMPLE_UNHELD_FIXED,	/* 0 or more, with the SLP's friction
+				 * capacities fixed: the SLP's
+				 * `nonpositive` */
 };
 
 /* Whether the verdict s asks which blocks cannot be held, and if so at
  * which load factors (into *load): `no_equilibrium` at any, `unstable`
  * at 0, `nonpositive` at 0 or more; every other verdict asks nothing
- * (returns 0). */
+ * (returns 0).  A `nonpositive` of the SLP (its fixed point's load at
+ * or below 0, where LP-max's was above) is asked with
+ * SAMPLE_UNHELD_FIXED instead: the caller knows which it was. */
 int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load);
 
 /* Which blocks no contact force can hold at the draw the workspace
  * last solved, at the load factors `load` allows (after `no_equilibrium`
  * at any; after `unstable` at 0: the blocks that need the live load to
  * stand; after LP-max's `nonpositive` at 0 or more: the blocks that
- * need a load against the live load's direction): the blocks on which
+ * need a load against the live load's direction; after the SLP's, the
+ * same with each joint's shear bounded by its friction times the SLP's
+ * last capacity, friction that does not dilate): the blocks on which
  * the least outside help that lets every block stand acts, by an
  * elastic LP-max.  Writes up to max of them (indices into w->blocks),
  * the most helped first, into blocks[]; returns how many there are in

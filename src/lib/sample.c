@@ -34,9 +34,10 @@
  *   sample_slp.c     step 2b: the SLP (plain, Anderson, piece path)
  *   sample_onset.c   steps 2a, 3 and 5: LP-max, standing, the mechanism,
  *                    onset, LP-min, virtual work, the export
- *   sample_unheld.c  after `no_equilibrium`, `unstable` or LP-max's
+ *   sample_unheld.c  after `no_equilibrium`, `unstable` or
  *                    `nonpositive`: which blocks cannot be held (an
- *                    elastic LP-max; on no sample's path)
+ *                    elastic LP-max, or LP1 after the SLP's; on no
+ *                    sample's path)
  */
 #include <math.h>
 #include <stdlib.h>
@@ -560,12 +561,14 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	 * only (docs/method.md, "Which blocks cannot be held").  A
 	 * `nonpositive` is LP-max's (lambda_max not reached, NaN) or the
 	 * SLP's; after the SLP's, LP-max held every block at a positive
-	 * load, so no block needs help and the LP is not solved. */
+	 * load, and the blocks are asked with the SLP's capacities, friction
+	 * that does not dilate (ws->c is still the SLP's last). */
 	r->unheld = -1;
 	r->nunheld = 0;
 	enum sample_unheld_load load;
-	if (sample_unheld_asks(st, &load) &&
-	    (st != SAMPLE_NONPOSITIVE || isnan(r->lambda_max))) {
+	if (sample_unheld_asks(st, &load)) {
+		if (st == SAMPLE_NONPOSITIVE && !isnan(r->lambda_max))
+			load = SAMPLE_UNHELD_FIXED;
 		int b, n = sample_unheld(ws, load, &b, 1);
 		if (n > 0) {
 			r->unheld = b;

@@ -20,7 +20,11 @@
  * need the live load to stand.  After LP-max's `nonpositive` (its
  * largest load factor is at or below 0), lambda >= 0: the blocks named
  * then stand only under a load against the live load's direction, and
- * fall under any load along it.  Its optimum is
+ * fall under any load along it.  After the SLP's `nonpositive` (LP-max
+ * held every block at a positive load, the SLP's fixed point is at or
+ * below 0), the cones give way to LP1's columns at the SLP's last
+ * capacities, N >= 0 and |T_k| <= mu_k c_k, with lambda >= 0: the
+ * blocks named fall once friction does not dilate.  Its optimum is
  * the least help, in the operator's scaled units (forces over the mean
  * block weight, moments over that weight times the mean block size:
  * statics.h), that lets every block stand; the blocks whose rows take
@@ -78,32 +82,54 @@ int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 {
 	const struct wall *w = ws->w;
 	int m = ws->m, R = ws->R;
-	int nc = 4 * m + 1 + 2 * R;
+	/* the contact forces' columns: LP-max's cone edges (4 an
+	 * interface), or after the SLP's `nonpositive` its own N_a, N_b, T
+	 * (3 an interface, the layout of LP1); then lambda, then the help */
+	int fixed = load == SAMPLE_UNHELD_FIXED;
+	int nf = fixed ? 3 * m : 4 * m, lam = nf;
+	int nc = nf + 1 + 2 * R;
 	struct lp *P = lp_new(ws->solver, R, nc);
 	if (!P)
 		return -1;
 	sws_put_dead_load(ws, P);
-	/* the cone edges of every contact point, as LP-max has them */
-	for (int k = 0; k < m; k++)
-		for (int e = 0; e < 2; e++)
-			for (int sgn = 0; sgn < 2; sgn++) {
-				int rows[6];
-				double vals[6];
-				int n = statics_edge_column(&ws->st, k, e, sgn,
-							    rows, vals);
-				int col = sgn ? ACOL_BETA(k, e) : ACOL_ALPHA(k, e);
-				lp_set_col(P, col, n, rows, vals);
-				lp_set_col_bounds(P, col, 0, HUGE_VAL);
-			}
+	if (fixed) {
+		/* LP1's columns at the SLP's last capacities ws->c: N >= 0,
+		 * |T_k| <= mu_k c_k (sample_slp.c, lp1_solve) */
+		for (int j = 0; j < 3 * m; j++) {
+			int rows[6];
+			double vals[6];
+			int n = statics_column(&ws->st, j, rows, vals);
+			double cap = sws_capacity(ws, j / 3);
+			lp_set_col(P, j, n, rows, vals);
+			if (j % 3 == 2)
+				lp_set_col_bounds(P, j, -cap, cap);
+			else
+				lp_set_col_bounds(P, j, 0, HUGE_VAL);
+		}
+	} else {
+		/* the cone edges of every contact point, as LP-max has them */
+		for (int k = 0; k < m; k++)
+			for (int e = 0; e < 2; e++)
+				for (int sgn = 0; sgn < 2; sgn++) {
+					int rows[6];
+					double vals[6];
+					int n = statics_edge_column(&ws->st, k, e,
+								    sgn, rows,
+								    vals);
+					int col = sgn ? ACOL_BETA(k, e) :
+							ACOL_ALPHA(k, e);
+					lp_set_col(P, col, n, rows, vals);
+					lp_set_col_bounds(P, col, 0, HUGE_VAL);
+				}
+	}
 	int nl = sws_live_load(ws);
-	lp_set_col(P, ACOL_LAMBDA(ws), nl, ws->ind, ws->val);
-	lp_set_col_bounds(P, ACOL_LAMBDA(ws),
-			  load == SAMPLE_UNHELD_ANY ? -HUGE_VAL : 0,
+	lp_set_col(P, lam, nl, ws->ind, ws->val);
+	lp_set_col_bounds(P, lam, load == SAMPLE_UNHELD_ANY ? -HUGE_VAL : 0,
 			  load == SAMPLE_UNHELD_AT_REST ? 0 : HUGE_VAL);
-	/* the help forces: columns 4m + 1 + 2i (s+) and + 1 (s-) */
+	/* the help forces: columns nf + 1 + 2i (s+) and + 1 (s-) */
 	for (int i = 0; i < R; i++)
 		for (int s = 0; s < 2; s++) {
-			int col = 4 * m + 1 + 2 * i + s;
+			int col = nf + 1 + 2 * i + s;
 			double v = s ? -1 : 1;
 			lp_set_col(P, col, 1, &i, &v);
 			lp_set_col_bounds(P, col, 0, HUGE_VAL);
@@ -112,10 +138,12 @@ int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 	lp_set_maximize(P, 0);
 	/* start from the basis of the help alone, s = -f_D (s+ or s- basic
 	 * in each row by the sign of its dead load): primal feasible, so
-	 * the primal simplex goes straight to its second phase */
+	 * the primal simplex goes straight to its second phase (not after
+	 * the SLP's: its shears are non-basic at -mu c, and a first phase
+	 * runs) */
 	unsigned char *basic = sw_xcalloc((size_t)nc, 1);
 	for (int i = 0; i < R; i++)
-		basic[4 * m + 1 + 2 * i + (ws->st.fD[i] > 0)] = 1;
+		basic[nf + 1 + 2 * i + (ws->st.fD[i] > 0)] = 1;
 	lp_set_basis(P, basic);
 	free(basic);
 	enum lp_status st = lp_solve(P, LP_PRIMAL);
@@ -132,8 +160,8 @@ int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 			continue;
 		double h = 0;
 		for (int r = 3 * q; r < 3 * q + 3; r++)
-			h += lp_col(P, 4 * m + 1 + 2 * r) +
-			     lp_col(P, 4 * m + 2 + 2 * r);
+			h += lp_col(P, nf + 1 + 2 * r) +
+			     lp_col(P, nf + 2 + 2 * r);
 		if (h > UNHELD_TOL) {
 			u[n].block = b;
 			u[n++].help = h;

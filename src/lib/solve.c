@@ -47,9 +47,11 @@ void solve_result_free(struct solve_result *r)
 	sample_result_free(&r->mech);
 }
 
-/* A message for a status that leaves no load factor. */
+/* A message for a status that leaves no load factor.  lam_max is
+ * LP-max's load factor, or for the SLP's `nonpositive` (slp 1) the
+ * SLP's. */
 static enum sw_status failure(enum sample_status s, double lam_max,
-			      char *err)
+			      int slp, char *err)
 {
 	switch (s) {
 	case SAMPLE_UNBOUNDED:
@@ -62,6 +64,13 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall cannot stand under its own weight");
 	case SAMPLE_NONPOSITIVE:
+		if (slp)
+			return sw_fail(err, SW_EANALYSIS,
+				       "the wall carries no positive live load "
+				       "once friction does not dilate: the "
+				       "sequential LP's load factor is %.6g "
+				       "(the associative one is above 0)",
+				       lam_max);
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall carries no positive live load: its "
 			       "largest load factor is %.6g, so it collapses "
@@ -90,12 +99,14 @@ static enum sw_status failure(enum sample_status s, double lam_max,
  * names none): the blocks that cannot be held into r, and their names
  * after err's message (docs/method.md, "Which blocks cannot be held"). */
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
-			enum sample_status s, struct solve_result *r,
-			char *err)
+			enum sample_status s, int slp,
+			struct solve_result *r, char *err)
 {
 	enum sample_unheld_load load;
 	if (!sample_unheld_asks(s, &load))
 		return;
+	if (slp && s == SAMPLE_NONPOSITIVE)
+		load = SAMPLE_UNHELD_FIXED;
 	int n = sample_unheld(ws, load, r->unheld, SOLVE_UNHELD);
 	if (n <= 0)
 		return;
@@ -108,7 +119,10 @@ static void name_unheld(const struct wall *w, struct sample_ws *ws,
 				load == SAMPLE_UNHELD_AT_REST ?
 				" without the live load" :
 				load == SAMPLE_UNHELD_ALONG ?
-				" under a load in this direction" : "",
+				" under a load in this direction" :
+				load == SAMPLE_UNHELD_FIXED ?
+				" under a load in this direction, with "
+				"friction that does not dilate" : "",
 				n > 1 ? "s" : "");
 	for (int i = 0; i < n && i < shown && len < SW_ERRLEN; i++)
 		len += (size_t)snprintf(err + len, SW_ERRLEN - len, "%s%s",
@@ -172,8 +186,8 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	enum sample_status s = sample_standard(ws, &d, &r->mech);
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
-		ret = failure(s, r->mech.lambda_lpmax, err);
-		name_unheld(w, ws, s, r, err);
+		ret = failure(s, r->mech.lambda_lpmax, 0, err);
+		name_unheld(w, ws, s, 0, r, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;
@@ -194,8 +208,14 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 		if (r->status != SAMPLE_ACCEPTED &&
 		    r->status != SAMPLE_NO_MECHANISM &&
 		    r->status != SAMPLE_NOT_CONVERGED) {
-			/* no load: the last LP1's is not an answer */
-			ret = failure(r->status, r->mech.lambda_lpmax, err);
+			/* no load: the last LP1's is not an answer (the
+			 * SLP's `nonpositive` has one, at or below 0: its
+			 * blocks are named as sample_run named them) */
+			int slp = r->status == SAMPLE_NONPOSITIVE &&
+				  !isnan(r->mech.lambda_max);
+			ret = failure(r->status, slp ? r->mech.lambda_max :
+					  r->mech.lambda_lpmax, slp, err);
+			name_unheld(w, ws, r->status, slp, r, err);
 			r->lambda = r->lambda_onset = NAN;
 		}
 		break;

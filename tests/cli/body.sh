@@ -169,6 +169,21 @@ YAML
 read -r st lmax <<<"$(awk -F, 'NR == 2 { print $2, $3 }' "$tmp/any.csv")"
 check "contact points anywhere, seed 3, sample 2: nonpositive ($st), lambda_max $lmax = -0.0356" \
 	awk -v s="$st" -v l="$lmax" 'BEGIN { exit !(s == "nonpositive" && l > -0.03557 && l < -0.03555) }'
+# Which block falls: the least help that lets every block stand with
+# the SLP's capacities (friction that does not dilate) acts on c7b9, the
+# half block at the right end of course 7 (x 1.5-1.6).  Its one bed
+# joint (interface 150, from x = 1.6 towards 1.5) has its two contact
+# points drawn within 0.0003 m of each other, both left of its centroid
+# (x = 1.55): its weight acts beyond the point it rests on, and only its
+# neighbours' friction holds it (docs/method.md, "Which blocks cannot be
+# held").  The test reads the positions from the draw.
+"$bin" run "$tmp/anywhere.yaml" --replay tests/data/anywhere-8c-seed3-s2.csv \
+	--threads 1 >"$tmp/any.out" 2>&1
+read -r xa xb <<<"$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "xa_150") a = i; if ($i == "xb_150") b = i } }
+	NR == 2 { print $a, $b }' "$tmp/any.csv")"
+check "the same sample names c7b9, whose bed joint's points ($xa, $xb of the joint from x = 1.6) lie left of its centroid" \
+	awk -v a="$xa" -v b="$xb" -v named="$(grep -c 'falls under any load: block c7b9 (1)' "$tmp/any.out")" \
+	'BEGIN { exit !(named == 1 && 1.6 - 0.1 * a < 1.55 && 1.6 - 0.1 * b < 1.55) }'
 
 # Friction that associative friction turns into a lock (docs/method.md,
 # "What the method cannot answer"): a 0.1 m block on the ground beside a

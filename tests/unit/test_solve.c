@@ -402,6 +402,18 @@ static void unheld(void)
 	       sample_unheld(ws, 1, b, 4) == 0,
 	       "sample_unheld on a wall that stands: 0 blocks, at any load "
 	       "and at rest");
+	/* and after an SLP that ends above 0, its capacities hold every
+	 * block at a load along the live load's (the question asked after
+	 * the SLP's `nonpositive`; tests/cli/body.sh has one that names a
+	 * block) */
+	struct sample_opts so;
+	sample_opts_default(&so);
+	sample_run(ws, &d, &so, &sr);
+	int nf = sample_unheld(ws, SAMPLE_UNHELD_FIXED, b, 4);
+	tap_ok(sr.status == SAMPLE_ACCEPTED && sr.lambda_max > 0 && nf == 0,
+	       "sample_unheld with the SLP's capacities on a wall that "
+	       "stands (%s, lambda_max %g): %d blocks",
+	       sample_status_name(sr.status), sr.lambda_max, nf);
 	sample_result_free(&sr);
 	draw_free(&d);
 	sample_ws_free(ws);
@@ -424,8 +436,6 @@ static void unheld(void)
 	draw_init(&d, w);
 	draw_mean(&d, w);
 	sample_result_init(&sr, w);
-	struct sample_opts so;
-	sample_opts_default(&so);
 	sample_run(ws, &d, &so, &sr);
 	int n0 = sample_unheld(ws, 0, b, 4);
 	tap_ok(sr.status == SAMPLE_UNSTABLE && sr.nunheld == 1 &&
