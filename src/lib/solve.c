@@ -121,8 +121,8 @@ static void name_unheld(const struct wall *w, struct sample_ws *ws,
 				load == SAMPLE_UNHELD_ALONG ?
 				" under a load in this direction" :
 				load == SAMPLE_UNHELD_FIXED ?
-				" under a load in this direction, with "
-				"friction that does not dilate" : "",
+				" under a load in this direction (friction "
+				"that does not dilate)" : "",
 				n > 1 ? "s" : "");
 	for (int i = 0; i < n && i < shown && len < SW_ERRLEN; i++)
 		len += (size_t)snprintf(err + len, SW_ERRLEN - len, "%s%s",

@@ -185,6 +185,32 @@ check "the same sample names c7b9, whose bed joint's points ($xa, $xb of the joi
 	awk -v a="$xa" -v b="$xb" -v named="$(grep -c 'falls under any load: block c7b9 (1)' "$tmp/any.out")" \
 	'BEGIN { exit !(named == 1 && 1.6 - 0.1 * a < 1.55 && 1.6 - 0.1 * b < 1.55) }'
 
+# The same verdict from `solve --method gilbert`, at the classical
+# contact (tests/data/nolintel-s45w9.yaml: an opening without a lintel,
+# course 8's blocks over it on no joint below).  LP-max carries the wall
+# at a positive load; the SLP's fixed point is below 0.  The message
+# gives the SLP's load factor, not LP-max's, and names a block that
+# rests on no joint (found here from `check --json`: no bed joint has it
+# above), which falls once friction does not dilate.
+"$bin" solve tests/data/nolintel-s45w9.yaml --method standard --json \
+	>"$tmp/nl-std.json" 2>/dev/null
+"$bin" solve tests/data/nolintel-s45w9.yaml --method gilbert --json \
+	>"$tmp/nl.json" 2>/dev/null
+rc=$?
+"$bin" check tests/data/nolintel-s45w9.yaml --json >"$tmp/nl-check.json" 2>/dev/null
+check "solve gilbert on an opening without a lintel: exit 1 ($rc), nonpositive, the SLP's load factor below 0 in the message, LP-max's above 0, a block on no joint named" \
+	python3 - "$tmp/nl.json" "$tmp/nl-std.json" "$tmp/nl-check.json" "$rc" <<'PY'
+import json, re, sys
+g, s, c = (json.load(open(f)) for f in sys.argv[1:4])
+lam = float(re.search(r"sequential LP's load factor is (\S+) ", g['error']).group(1))
+carried = {f['b'] for f in c['interfaces'] if f['kind'] == 'bed'}
+named = g['unheld_blocks']
+print('#', g['status'], lam, s['load_factor'], named, file=sys.stderr)
+sys.exit(not (sys.argv[4] == '1' and g['status'] == 'nonpositive' and
+              lam < 0 and s['load_factor'] > 0 and named and
+              all(b not in carried for b in named)))
+PY
+
 # Friction that associative friction turns into a lock (docs/method.md,
 # "What the method cannot answer"): a 0.1 m block on the ground beside a
 # support, the load away from the support.  It tips at lambda = b/h = 1;
