@@ -95,9 +95,11 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 }
 
 /* After `no_equilibrium`, `unstable` or `nonpositive` (the standard
- * solution's are LP-max's and the standing check's; any other verdict
- * names none): the blocks that cannot be held into r, and their names
- * after err's message (docs/method.md, "Which blocks cannot be held"). */
+ * solution's are LP-max's and the standing check's; slp 1: gilbert's
+ * `nonpositive`, its SLP's, asked with the SLP's capacities; any other
+ * verdict names none): the blocks that cannot be held into r, and their
+ * names after err's message (docs/method.md, "Which blocks cannot be
+ * held"). */
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
 			enum sample_status s, int slp,
 			struct solve_result *r, char *err)
