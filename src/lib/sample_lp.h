@@ -11,5 +11,9 @@
 #include "slipwall/sample.h"
 
 struct lp_solver *sample_ws_solver(struct sample_ws *ws);
+/* For tests: sample_unheld's pivot limit for its primal simplex, after
+ * which it goes on by the dual simplex from the slack basis
+ * (sample_unheld.c); 0 restores the default, 10 pivots a row. */
+void sample_ws_unheld_limit(struct sample_ws *ws, int pivots);
 
 #endif

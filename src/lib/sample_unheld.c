@@ -40,12 +40,15 @@
  * and freed: it runs once, on a rejected sample or a `solve` that
  * failed, never on a sample's path, so no status or load moves with it.
  * Its cost is about an LP-max from a poor start: 0.5 s on walls/
- * body-300.yaml, 10 s on walls/body-1000.yaml (a sample there: 50 s).
+ * body-300.yaml, 10 s on walls/body-1000.yaml (a sample there: 50 s),
+ * where no block needs help; where many do, up to its pivot limit
+ * (UNHELD_PIVOTS_PER_ROW) and a dual simplex after it.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "sample_lp.h"
 #include "sample_ws.h"
 
 /* Help below this, in the scaled units (a fraction of the mean block
@@ -53,6 +56,17 @@
  * simplex's round-off, not a block that cannot be held: 100 times the
  * primal simplex's feasibility tolerance (lp_feasibility_tol, 1e-8). */
 #define UNHELD_TOL 1e-6
+
+/* The primal simplex from the help's basis usually ends within a few
+ * pivots a row (8,608 for 1,959 rows on a 654-block wall with an
+ * opening without a lintel), but on a sample of that wall it took 644 s.
+ * So it may take at most this many pivots a row; a solve cut there goes
+ * again by the dual simplex from the slack basis (the rows' auxiliary
+ * variables basic, every column at 0), which is dual feasible here (no
+ * column has a negative cost) and took 13,366-13,640 pivots, 7.5-8.5 s,
+ * on that wall's samples (docs/method.md, "Which blocks cannot be
+ * held"). */
+#define UNHELD_PIVOTS_PER_ROW 10
 
 struct unheld_entry {
 	int block;
@@ -75,6 +89,11 @@ int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load)
 	case SAMPLE_NONPOSITIVE: *load = SAMPLE_UNHELD_ALONG; return 1;
 	default: return 0;
 	}
+}
+
+void sample_ws_unheld_limit(struct sample_ws *ws, int pivots)
+{
+	ws->unheld_limit = pivots > 0 ? pivots : 0;
 }
 
 int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
@@ -146,7 +165,17 @@ int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 		basic[nf + 1 + 2 * i + (ws->st.fD[i] > 0)] = 1;
 	lp_set_basis(P, basic);
 	free(basic);
+	/* at most UNHELD_PIVOTS_PER_ROW pivots a row from there; beyond,
+	 * the dual simplex from the slack basis (see the top) */
+	int was = lp_solver_iteration_limit(ws->solver, ws->unheld_limit > 0 ?
+					    ws->unheld_limit :
+					    UNHELD_PIVOTS_PER_ROW * R);
 	enum lp_status st = lp_solve(P, LP_PRIMAL);
+	lp_solver_iteration_limit(ws->solver, was);
+	if (st == LP_FAILED && lp_alive(P)) {
+		lp_reset_basis(P);
+		st = lp_solve(P, LP_DUAL);
+	}
 	if (st != LP_OPTIMAL) {
 		lp_free(P);
 		return -1;

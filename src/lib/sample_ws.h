@@ -99,6 +99,9 @@ struct sample_ws {
 	/* after a `hanging` verdict (slp_clamp_lost): the lowest of the
 	 * blocks that hang, and how many hang; else -1 and 0 */
 	int hang_blk, nhang;
+	/* sample_unheld's primal pivot limit (sample_ws_unheld_limit; 0:
+	 * its default) */
+	int unheld_limit;
 	/* the workspace's LP solver, and one problem per LP role (see the
 	 * top), so that between two solves of a role only bounds change and
 	 * the solver keeps its basis */

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "lp.h"
+#include "sample_lp.h"
 #include "slipwall/mc.h"
 #include "slipwall/solve.h"
 #include "tap.h"
@@ -362,6 +363,36 @@ static void unheld(void)
 	       "both end blocks overhang: both named, the further first: %s",
 	       err);
 	solve_result_free(&r);
+	/* the same least help when the primal simplex is cut at its pivot
+	 * limit and the dual simplex from the slack basis goes on: one LP
+	 * more, the same blocks in the same order */
+	{
+		struct sample_ws *ws = sample_ws_new(w);
+		struct sample_draw d;
+		struct sample_result sr;
+		draw_init(&d, w);
+		draw_mean(&d, w);
+		sample_result_init(&sr, w);
+		enum sample_status ss = sample_standard(ws, &d, &sr);
+		struct lp_counters c0, c1, c2;
+		int b1[4], b2[4];
+		lp_solver_counters(sample_ws_solver(ws), &c0);
+		int n1 = sample_unheld(ws, SAMPLE_UNHELD_ANY, b1, 4);
+		lp_solver_counters(sample_ws_solver(ws), &c1);
+		sample_ws_unheld_limit(ws, 1);
+		int n2 = sample_unheld(ws, SAMPLE_UNHELD_ANY, b2, 4);
+		lp_solver_counters(sample_ws_solver(ws), &c2);
+		sample_ws_unheld_limit(ws, 0);
+		tap_ok(ss == SAMPLE_NO_EQUILIBRIUM && n1 == 2 && n2 == 2 &&
+		       b1[0] == b2[0] && b1[1] == b2[1] &&
+		       c1.solves - c0.solves == 1 && c2.solves - c1.solves == 2,
+		       "the primal cut after 1 pivot: the dual simplex names "
+		       "the same %d blocks (%d), in %ld LPs (%ld uncut)", n2, n1,
+		       c2.solves - c1.solves, c1.solves - c0.solves);
+		sample_result_free(&sr);
+		draw_free(&d);
+		sample_ws_free(ws);
+	}
 	wall_free(w);
 	/* hold end_r (a support) and only end_l is left to name */
 	w = piers(0.3, 0.25, "end_r");
