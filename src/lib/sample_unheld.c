@@ -165,14 +165,16 @@ int sample_unheld(struct sample_ws *ws, enum sample_unheld_load load,
 		basic[nf + 1 + 2 * i + (ws->st.fD[i] > 0)] = 1;
 	lp_set_basis(P, basic);
 	free(basic);
-	/* at most UNHELD_PIVOTS_PER_ROW pivots a row from there; beyond,
-	 * the dual simplex from the slack basis (see the top) */
-	int was = lp_solver_iteration_limit(ws->solver, ws->unheld_limit > 0 ?
-					    ws->unheld_limit :
-					    UNHELD_PIVOTS_PER_ROW * R);
+	/* at most UNHELD_PIVOTS_PER_ROW pivots a row from there; a solve
+	 * cut at that limit (not one that failed otherwise: an injected
+	 * fault, SLIPWALL_LP_FAULT, makes none) goes on by the dual simplex
+	 * from the slack basis */
+	int limit = ws->unheld_limit > 0 ? ws->unheld_limit :
+					   UNHELD_PIVOTS_PER_ROW * R;
+	int was = lp_solver_iteration_limit(ws->solver, limit);
 	enum lp_status st = lp_solve(P, LP_PRIMAL);
 	lp_solver_iteration_limit(ws->solver, was);
-	if (st == LP_FAILED && lp_alive(P)) {
+	if (st == LP_FAILED && lp_alive(P) && lp_last_iterations(P) >= limit) {
 		lp_reset_basis(P);
 		st = lp_solve(P, LP_DUAL);
 	}
