@@ -328,6 +328,30 @@ static struct wall *piers(double over_l, double over_r, const char *fixed)
 	return w;
 }
 
+/* A wall's workspace, its classical draw (the interface ends, the mean
+ * friction) and a result, as solve_run makes them: unheld() solves on
+ * it directly. */
+struct classical {
+	struct sample_ws *ws;
+	struct sample_draw d;
+	struct sample_result r;
+};
+
+static void classical_open(struct classical *c, const struct wall *w)
+{
+	c->ws = sample_ws_new(w);
+	draw_init(&c->d, w);
+	draw_mean(&c->d, w);
+	sample_result_init(&c->r, w);
+}
+
+static void classical_close(struct classical *c)
+{
+	sample_result_free(&c->r);
+	draw_free(&c->d);
+	sample_ws_free(c->ws);
+}
+
 /* `no_equilibrium` names the blocks that cannot be held (sample_unheld,
  * docs/method.md "Which blocks cannot be held"): an elastic LP-max
  * whose help acts on exactly the blocks that overhang their bearing, a
@@ -366,33 +390,25 @@ static void unheld(void)
 	/* the same least help when the primal simplex is cut at its pivot
 	 * limit and the dual simplex from the slack basis goes on: one LP
 	 * more, the same blocks in the same order */
-	{
-		struct sample_ws *ws = sample_ws_new(w);
-		struct sample_draw d;
-		struct sample_result sr;
-		draw_init(&d, w);
-		draw_mean(&d, w);
-		sample_result_init(&sr, w);
-		enum sample_status ss = sample_standard(ws, &d, &sr);
-		struct lp_counters c0, c1, c2;
-		int b1[4], b2[4];
-		lp_solver_counters(sample_ws_solver(ws), &c0);
-		int n1 = sample_unheld(ws, SAMPLE_UNHELD_ANY, b1, 4);
-		lp_solver_counters(sample_ws_solver(ws), &c1);
-		sample_ws_unheld_limit(ws, 1);
-		int n2 = sample_unheld(ws, SAMPLE_UNHELD_ANY, b2, 4);
-		lp_solver_counters(sample_ws_solver(ws), &c2);
-		sample_ws_unheld_limit(ws, 0);
-		tap_ok(ss == SAMPLE_NO_EQUILIBRIUM && n1 == 2 && n2 == 2 &&
-		       b1[0] == b2[0] && b1[1] == b2[1] &&
-		       c1.solves - c0.solves == 1 && c2.solves - c1.solves == 2,
-		       "the primal cut after 1 pivot: the dual simplex names "
-		       "the same %d blocks (%d), in %ld LPs (%ld uncut)", n2, n1,
-		       c2.solves - c1.solves, c1.solves - c0.solves);
-		sample_result_free(&sr);
-		draw_free(&d);
-		sample_ws_free(ws);
-	}
+	struct classical c;
+	classical_open(&c, w);
+	enum sample_status ss = sample_standard(c.ws, &c.d, &c.r);
+	struct lp_counters c0, c1, c2;
+	int b1[4], b2[4];
+	lp_solver_counters(sample_ws_solver(c.ws), &c0);
+	int n1 = sample_unheld(c.ws, SAMPLE_UNHELD_ANY, b1, 4);
+	lp_solver_counters(sample_ws_solver(c.ws), &c1);
+	sample_ws_unheld_limit(c.ws, 1);
+	int n2 = sample_unheld(c.ws, SAMPLE_UNHELD_ANY, b2, 4);
+	lp_solver_counters(sample_ws_solver(c.ws), &c2);
+	sample_ws_unheld_limit(c.ws, 0);
+	tap_ok(ss == SAMPLE_NO_EQUILIBRIUM && n1 == 2 && n2 == 2 &&
+	       b1[0] == b2[0] && b1[1] == b2[1] &&
+	       c1.solves - c0.solves == 1 && c2.solves - c1.solves == 2,
+	       "the primal cut after 1 pivot: the dual simplex names the "
+	       "same %d blocks (%d), in %ld LPs (%ld uncut)", n2, n1,
+	       c2.solves - c1.solves, c1.solves - c0.solves);
+	classical_close(&c);
 	wall_free(w);
 	/* hold end_r (a support) and only end_l is left to name */
 	w = piers(0.3, 0.25, "end_r");
@@ -421,16 +437,11 @@ static void unheld(void)
 	wall_free(w);
 	/* on a wall that stands, the elastic LP needs no help */
 	w = piers(0.1, 0.1, NULL);
-	struct sample_ws *ws = sample_ws_new(w);
-	struct sample_draw d;
-	struct sample_result sr;
-	draw_init(&d, w);
-	draw_mean(&d, w);
-	sample_result_init(&sr, w);
-	enum sample_status ss = sample_standard(ws, &d, &sr);
+	classical_open(&c, w);
+	ss = sample_standard(c.ws, &c.d, &c.r);
 	int b[4];
-	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(ws, 0, b, 4) == 0 &&
-	       sample_unheld(ws, 1, b, 4) == 0,
+	tap_ok(ss == SAMPLE_ACCEPTED && sample_unheld(c.ws, 0, b, 4) == 0 &&
+	       sample_unheld(c.ws, 1, b, 4) == 0,
 	       "sample_unheld on a wall that stands: 0 blocks, at any load "
 	       "and at rest");
 	/* and after an SLP that ends above 0, its capacities hold every
@@ -439,15 +450,13 @@ static void unheld(void)
 	 * block) */
 	struct sample_opts so;
 	sample_opts_default(&so);
-	sample_run(ws, &d, &so, &sr);
-	int nf = sample_unheld(ws, SAMPLE_UNHELD_FIXED, b, 4);
-	tap_ok(sr.status == SAMPLE_ACCEPTED && sr.lambda_max > 0 && nf == 0,
+	sample_run(c.ws, &c.d, &so, &c.r);
+	int nf = sample_unheld(c.ws, SAMPLE_UNHELD_FIXED, b, 4);
+	tap_ok(c.r.status == SAMPLE_ACCEPTED && c.r.lambda_max > 0 && nf == 0,
 	       "sample_unheld with the SLP's capacities on a wall that "
 	       "stands (%s, lambda_max %g): %d blocks",
-	       sample_status_name(sr.status), sr.lambda_max, nf);
-	sample_result_free(&sr);
-	draw_free(&d);
-	sample_ws_free(ws);
+	       sample_status_name(c.r.status), c.r.lambda_max, nf);
+	classical_close(&c);
 	wall_free(w);
 
 	/* a block beyond its pier held up by the live load itself (an
@@ -463,20 +472,15 @@ static void unheld(void)
 	w->has_ground = 1;
 	tw_point_load(w, 0.7, 0.3, 0, 1);
 	tw_finish(w);
-	ws = sample_ws_new(w);
-	draw_init(&d, w);
-	draw_mean(&d, w);
-	sample_result_init(&sr, w);
-	sample_run(ws, &d, &so, &sr);
-	int n0 = sample_unheld(ws, 0, b, 4);
-	tap_ok(sr.status == SAMPLE_UNSTABLE && sr.nunheld == 1 &&
-	       sr.unheld == block_of(w, "over") && n0 == 0,
+	classical_open(&c, w);
+	sample_run(c.ws, &c.d, &so, &c.r);
+	int n0 = sample_unheld(c.ws, 0, b, 4);
+	tap_ok(c.r.status == SAMPLE_UNSTABLE && c.r.nunheld == 1 &&
+	       c.r.unheld == block_of(w, "over") && n0 == 0,
 	       "held up by its own load: unstable (%s), 'over' needs the load "
 	       "(%d, %d blocks), nothing at some load (%d)",
-	       sample_status_name(sr.status), sr.unheld, sr.nunheld, n0);
-	sample_result_free(&sr);
-	draw_free(&d);
-	sample_ws_free(ws);
+	       sample_status_name(c.r.status), c.r.unheld, c.r.nunheld, n0);
+	classical_close(&c);
 	wall_free(w);
 }
 
