@@ -266,13 +266,14 @@ enum sample_unheld_load {
 				 * `nonpositive` */
 };
 
-/* Whether the verdict s asks which blocks cannot be held, and if so at
+/* Whether r's verdict asks which blocks cannot be held, and if so at
  * which load factors (into *load): `no_equilibrium` at any, `unstable`
- * at 0, `nonpositive` at 0 or more; every other verdict asks nothing
- * (returns 0).  A `nonpositive` of the SLP (its fixed point's load at
- * or below 0, where LP-max's was above) is asked with
- * SAMPLE_UNHELD_FIXED instead: the caller knows which it was. */
-int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load);
+ * at 0, `nonpositive` at 0 or more, LP-max's (r->lambda_max NaN) with
+ * the cones, the SLP's (its fixed point's load at or below 0) with the
+ * SLP's capacities, SAMPLE_UNHELD_FIXED; every other verdict asks
+ * nothing (returns 0). */
+int sample_unheld_asks(const struct sample_result *r,
+		       enum sample_unheld_load *load);
 
 /* Which blocks no contact force can hold at the draw the workspace
  * last solved, at the load factors `load` allows (after `no_equilibrium`

@@ -566,9 +566,7 @@ static void finish(struct sample_ws *ws, enum sample_status st,
 	r->unheld = -1;
 	r->nunheld = 0;
 	enum sample_unheld_load load;
-	if (sample_unheld_asks(st, &load)) {
-		if (st == SAMPLE_NONPOSITIVE && !isnan(r->lambda_max))
-			load = SAMPLE_UNHELD_FIXED;
+	if (sample_unheld_asks(r, &load)) {
 		int b, n = sample_unheld(ws, load, &b, 1);
 		if (n > 0) {
 			r->unheld = b;

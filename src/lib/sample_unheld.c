@@ -81,12 +81,18 @@ static int by_help(const void *a, const void *b)
 	return (x->block > y->block) - (x->block < y->block);
 }
 
-int sample_unheld_asks(enum sample_status s, enum sample_unheld_load *load)
+int sample_unheld_asks(const struct sample_result *r,
+		       enum sample_unheld_load *load)
 {
-	switch (s) {
+	switch (r->status) {
 	case SAMPLE_NO_EQUILIBRIUM: *load = SAMPLE_UNHELD_ANY; return 1;
 	case SAMPLE_UNSTABLE: *load = SAMPLE_UNHELD_AT_REST; return 1;
-	case SAMPLE_NONPOSITIVE: *load = SAMPLE_UNHELD_ALONG; return 1;
+	case SAMPLE_NONPOSITIVE:
+		/* LP-max's leaves no SLP load (NaN), the SLP's one at or
+		 * below 0 */
+		*load = isnan(r->lambda_max) ? SAMPLE_UNHELD_ALONG :
+					       SAMPLE_UNHELD_FIXED;
+		return 1;
 	default: return 0;
 	}
 }

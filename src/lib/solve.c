@@ -47,12 +47,12 @@ void solve_result_free(struct solve_result *r)
 	sample_result_free(&r->mech);
 }
 
-/* A message for a status that leaves no load factor.  lam_max is
- * LP-max's load factor, or for the SLP's `nonpositive` (slp 1) the
- * SLP's. */
-static enum sw_status failure(enum sample_status s, double lam_max,
-			      int slp, char *err)
+/* A message for m's verdict, one that leaves no load factor: for
+ * `nonpositive`, LP-max's load factor, or the SLP's where it reached
+ * one (m->lambda_max not NaN). */
+static enum sw_status failure(const struct sample_result *m, char *err)
 {
+	enum sample_status s = m->status;
 	switch (s) {
 	case SAMPLE_UNBOUNDED:
 		return sw_fail(err, SW_EANALYSIS,
@@ -64,19 +64,19 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall cannot stand under its own weight");
 	case SAMPLE_NONPOSITIVE:
-		if (slp)
+		if (!isnan(m->lambda_max))
 			return sw_fail(err, SW_EANALYSIS,
 				       "the wall carries no positive live load "
 				       "once friction does not dilate: the "
 				       "sequential LP's load factor is %.6g "
 				       "(the associative one is above 0)",
-				       lam_max);
+				       m->lambda_max);
 		return sw_fail(err, SW_EANALYSIS,
 			       "the wall carries no positive live load: its "
 			       "largest load factor is %.6g, so it collapses "
 			       "under any load in this direction (zero friction "
 			       "does this, or a slope steeper than the "
-			       "friction)", lam_max);
+			       "friction)", m->lambda_lpmax);
 	case SAMPLE_HANGING:
 		return sw_fail(err, SW_EANALYSIS,
 			       "the sequential LP lost the clamp that holds "
@@ -94,21 +94,17 @@ static enum sw_status failure(enum sample_status s, double lam_max,
 	}
 }
 
-/* After `no_equilibrium`, `unstable` or `nonpositive` (the standard
- * solution's are LP-max's and the standing check's; slp 1: gilbert's
- * `nonpositive`, its SLP's, asked with the SLP's capacities; any other
- * verdict names none): the blocks that cannot be held into r, and their
- * names after err's message (docs/method.md, "Which blocks cannot be
- * held"). */
+/* After `no_equilibrium`, `unstable` or `nonpositive` (r->mech's: the
+ * standard solution's are LP-max's and the standing check's, gilbert's
+ * `nonpositive` its SLP's; any other verdict names none): the blocks
+ * that cannot be held into r, and their names after err's message
+ * (docs/method.md, "Which blocks cannot be held"). */
 static void name_unheld(const struct wall *w, struct sample_ws *ws,
-			enum sample_status s, int slp,
 			struct solve_result *r, char *err)
 {
 	enum sample_unheld_load load;
-	if (!sample_unheld_asks(s, &load))
+	if (!sample_unheld_asks(&r->mech, &load))
 		return;
-	if (slp && s == SAMPLE_NONPOSITIVE)
-		load = SAMPLE_UNHELD_FIXED;
 	int n = sample_unheld(ws, load, r->unheld, SOLVE_UNHELD);
 	if (n <= 0)
 		return;
@@ -188,8 +184,8 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 	enum sample_status s = sample_standard(ws, &d, &r->mech);
 	r->status = s;
 	if (s != SAMPLE_ACCEPTED) {
-		ret = failure(s, r->mech.lambda_lpmax, 0, err);
-		name_unheld(w, ws, s, 0, r, err);
+		ret = failure(&r->mech, err);
+		name_unheld(w, ws, r, err);
 		goto out;
 	}
 	double lam_std = r->mech.lambda_max;
@@ -213,11 +209,8 @@ enum sw_status solve_run(const struct wall *w, const struct solve_opts *o,
 			/* no load: the last LP1's is not an answer (the
 			 * SLP's `nonpositive` has one, at or below 0: its
 			 * blocks are named as sample_run named them) */
-			int slp = r->status == SAMPLE_NONPOSITIVE &&
-				  !isnan(r->mech.lambda_max);
-			ret = failure(r->status, slp ? r->mech.lambda_max :
-					  r->mech.lambda_lpmax, slp, err);
-			name_unheld(w, ws, r->status, slp, r, err);
+			ret = failure(&r->mech, err);
+			name_unheld(w, ws, r, err);
 			r->lambda = r->lambda_onset = NAN;
 		}
 		break;
